@@ -1,0 +1,124 @@
+// The sphere of the slides: a regular tetrahedron whose triangles are subdivided `level` times,
+// every new vertex pushed out to the unit sphere (Angel & Shreiner 6.6). Written straight into one
+// Float32Array of x,y,z triples: no per-vertex objects, no flatten. Unit sphere at the origin, so
+// a vertex position p is also its normal n (slide "Exercise (WP04P1)": n_xyz = p_xyz).
+//
+// Winding: every triangle is counter-clockwise seen from outside, so gl.CULL_FACE with the
+// default gl.frontFace(gl.CCW) removes the far side (the book's own face order is clockwise).
+
+/** The largest level the exercises offer: 12·4^8 = 786,432 vertices, 9.4 MB of positions. */
+export const MAX_LEVEL = 8;
+
+/** Vertices of a sphere at a subdivision level: 4 faces · 4^level triangles · 3 vertices. */
+export function vertexCount(level) {
+  return 12 * 4 ** level;
+}
+
+/** Bytes of vertex data (3 float32 per vertex) at a level. */
+export function vertexBytes(level) {
+  return vertexCount(level) * 3 * Float32Array.BYTES_PER_ELEMENT;
+}
+
+// The regular tetrahedron inscribed in the unit sphere.
+const S2 = Math.SQRT2, S6 = Math.sqrt(6);
+const A = [0, 0, -1];
+const B = [0, (2 * S2) / 3, 1 / 3];
+const C = [-S6 / 3, -S2 / 3, 1 / 3];
+const D = [S6 / 3, -S2 / 3, 1 / 3];
+// Its four faces, each listed counter-clockwise seen from outside.
+const FACES = [[A, C, B], [D, B, C], [A, B, D], [A, D, C]];
+
+let out = null; // the array being filled, and the next free float in it
+let at = 0;
+
+function emit(ax, ay, az, bx, by, bz, cx, cy, cz) {
+  out[at] = ax; out[at + 1] = ay; out[at + 2] = az;
+  out[at + 3] = bx; out[at + 4] = by; out[at + 5] = bz;
+  out[at + 6] = cx; out[at + 7] = cy; out[at + 8] = cz;
+  at += 9;
+}
+
+// Splits triangle abc into four (a ab ac, ab b bc, ac bc c, ab bc ac: the same winding as abc),
+// with each edge midpoint normalised onto the unit sphere; scalars only, so nothing is allocated.
+function divideTriangle(ax, ay, az, bx, by, bz, cx, cy, cz, level) {
+  if (level === 0) {
+    emit(ax, ay, az, bx, by, bz, cx, cy, cz);
+    return;
+  }
+  // (Math.sqrt of the sum, not Math.hypot: hypot guards against overflow and is several times slower)
+  let x = ax + bx, y = ay + by, z = az + bz, k = 1 / Math.sqrt(x * x + y * y + z * z);
+  const abx = x * k, aby = y * k, abz = z * k;
+  x = ax + cx; y = ay + cy; z = az + cz; k = 1 / Math.sqrt(x * x + y * y + z * z);
+  const acx = x * k, acy = y * k, acz = z * k;
+  x = bx + cx; y = by + cy; z = bz + cz; k = 1 / Math.sqrt(x * x + y * y + z * z);
+  const bcx = x * k, bcy = y * k, bcz = z * k;
+  const n = level - 1;
+  divideTriangle(ax, ay, az, abx, aby, abz, acx, acy, acz, n);
+  divideTriangle(abx, aby, abz, bx, by, bz, bcx, bcy, bcz, n);
+  divideTriangle(acx, acy, acz, bcx, bcy, bcz, cx, cy, cz, n);
+  divideTriangle(abx, aby, abz, bcx, bcy, bcz, acx, acy, acz, n);
+}
+
+/**
+ * Writes the sphere at `level` into `positions` (x,y,z per vertex, from index 0).
+ * @param {number} level 0..MAX_LEVEL
+ * @param {Float32Array} positions at least 3·vertexCount(level) floats
+ * @returns {number} the vertex count
+ */
+export function tetrahedronSphere(level, positions) {
+  if (!Number.isInteger(level) || level < 0 || level > MAX_LEVEL) {
+    throw new RangeError(`sphere level must be an integer from 0 to ${MAX_LEVEL}, not ${level}`);
+  }
+  const count = vertexCount(level);
+  if (positions.length < 3 * count) {
+    throw new RangeError(`sphere level ${level} needs ${3 * count} floats, the array has ${positions.length}`);
+  }
+  out = positions;
+  at = 0;
+  for (const [a, b, c] of FACES) {
+    divideTriangle(a[0], a[1], a[2], b[0], b[1], b[2], c[0], c[1], c[2], level);
+  }
+  out = null;
+  return count;
+}
+
+let store = new Float32Array(0);
+
+/**
+ * The sphere at `level` in one reused Float32Array, grown only when a higher level than ever
+ * before is asked for. The returned view is valid until the next call.
+ * @returns {Float32Array} 3·vertexCount(level) floats
+ */
+export function sphereMesh(level) {
+  const floats = 3 * vertexCount(level);
+  if (store.length < floats) store = new Float32Array(floats);
+  tetrahedronSphere(level, store);
+  return store.subarray(0, floats);
+}
+
+/**
+ * How far the mesh at each level falls inside the unit sphere at worst: 1 − the least distance
+ * from the origin to a triangle's plane (measured from the mesh; a unit test re-measures it).
+ */
+export const MAX_DEVIATION = [6.6667e-1, 4.2265e-1, 1.8350e-1, 5.7191e-2, 1.5268e-2, 3.8835e-3,
+  9.7513e-4, 2.4408e-4, 6.1035e-5];
+
+/**
+ * Model no more than the scene needs: the least level whose silhouette is within `tolerance`
+ * pixels of the true sphere's, for a unit sphere `distance` from the eye seen with a vertical
+ * field of view `fovy` (degrees) on a canvas `height` pixels high.
+ * The silhouette's radius on screen is R = f·tan(asin(r/d)) with f = (height/2)/tan(fovy/2);
+ * a mesh that falls δ inside the sphere moves it by about δ·dR/dr = δ·f·d²/(d²−1)^(3/2) pixels.
+ * @returns {{level: number, errorPx: number, radiusPx: number}}
+ */
+export function chooseLevel(height, fovy, distance, tolerance = 0.5) {
+  const f = height / 2 / Math.tan((fovy * Math.PI) / 360);
+  const d2 = distance * distance;
+  const radiusPx = f * Math.tan(Math.asin(Math.min(1, 1 / distance)));
+  const pxPerUnit = d2 > 1 ? (f * d2) / Math.pow(d2 - 1, 1.5) : Infinity;
+  for (let level = 0; level <= MAX_LEVEL; level++) {
+    const errorPx = MAX_DEVIATION[level] * pxPerUnit;
+    if (errorPx < tolerance) return { level, errorPx, radiusPx };
+  }
+  return { level: MAX_LEVEL, errorPx: MAX_DEVIATION[MAX_LEVEL] * pxPerUnit, radiusPx };
+}

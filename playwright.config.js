@@ -1,0 +1,32 @@
+// Browser tests: Debian's Chromium (never a downloaded browser), small canvases, one server.
+// Every test runs twice: project "webgl2" and project "webgl1" (the page's ?api= is set from it).
+import { defineConfig } from '@playwright/test';
+import { CHROMIUM, CHROMIUM_ARGS } from './tools/browser.js';
+
+const PORT = Number(process.env.TEST_PORT || 4173);
+
+export default defineConfig({
+  testDir: 'tests/browser',
+  snapshotPathTemplate: 'tests/screenshots/{projectName}/{arg}{ext}',
+  timeout: 60_000,
+  expect: { timeout: 10_000, toHaveScreenshot: { maxDiffPixelRatio: 0.001, threshold: 0.02 } },
+  workers: 2,
+  fullyParallel: true,
+  forbidOnly: !!process.env.CI,
+  reporter: process.env.CI ? 'list' : [['list'], ['html', { open: 'never' }]],
+  use: {
+    baseURL: `http://127.0.0.1:${PORT}`,
+    deviceScaleFactor: 1,
+    viewport: { width: 800, height: 700 },
+    launchOptions: { executablePath: CHROMIUM, args: CHROMIUM_ARGS },
+  },
+  projects: [
+    { name: 'webgl2', use: { api: 'webgl2' } },
+    { name: 'webgl1', use: { api: 'webgl' } },
+  ],
+  webServer: {
+    command: `node tools/serve.js --port ${PORT}`,
+    url: `http://127.0.0.1:${PORT}/`,
+    reuseExistingServer: !process.env.CI,
+  },
+});

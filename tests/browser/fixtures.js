@@ -1,0 +1,106 @@
+// Shared browser-test fixtures. Every test:
+// - runs with the project's API (webgl2 / webgl1): open() adds ?api= to the page's URL;
+// - counts WebGL calls (createBuffer, bufferData, createProgram, ...) through wrappers installed
+//   on the context prototypes before any page script runs;
+// - fails on any page error, console error or gl.getError() other than NO_ERROR, unless the test
+//   says which errors it expects (page.expectProblems(/regex/)).
+import { test as base, expect } from '@playwright/test';
+import { PNG } from 'pngjs';
+import { PIN_CANVAS_PATH, canvasScreenshot } from '../../tools/browser.js';
+
+function instrument() {
+  const counts = {};
+  const contexts = [];
+  const wrap = (proto, names) => {
+    if (!proto) return;
+    for (const name of names) {
+      const original = proto[name];
+      proto[name] = function (...args) {
+        counts[name] = (counts[name] || 0) + 1;
+        return original.apply(this, args);
+      };
+    }
+  };
+  const names = ['createBuffer', 'deleteBuffer', 'bufferData', 'bufferSubData', 'createProgram', 'createShader',
+    'createTexture', 'drawArrays', 'drawElements', 'getUniformLocation', 'getAttribLocation', 'useProgram'];
+  wrap(window.WebGLRenderingContext && WebGLRenderingContext.prototype, names);
+  wrap(window.WebGL2RenderingContext && WebGL2RenderingContext.prototype, names);
+  const getContext = HTMLCanvasElement.prototype.getContext;
+  HTMLCanvasElement.prototype.getContext = function (type, ...rest) {
+    const ctx = getContext.call(this, type, ...rest);
+    if (ctx && /webgl/.test(type) && !contexts.includes(ctx)) contexts.push(ctx);
+    return ctx;
+  };
+  window.__gl = {
+    counts,
+    contexts,
+    errors: () => contexts.map((gl) => gl.getError()).filter((e) => e !== 0),
+  };
+}
+
+export const test = base.extend({
+  api: ['webgl2', { option: true }],
+  page: async ({ page, api }, use) => {
+    const problems = [];
+    let expected = null;
+    page.on('pageerror', (e) => problems.push(`page error: ${e.message}`));
+    page.on('console', (m) => {
+      if (m.type() === 'error') problems.push(`console error: ${m.text()}`);
+    });
+    await page.addInitScript(instrument);
+    page.expectProblems = (pattern) => { expected = pattern; };
+    page.problems = problems;
+    page.api = api;
+    await use(page);
+    if (!page.isClosed()) {
+      const glErrors = await page.evaluate(() => (window.__gl ? window.__gl.errors() : [])).catch(() => []);
+      for (const e of glErrors) problems.push(`gl.getError() = 0x${e.toString(16)}`);
+    }
+    const unexpected = expected ? problems.filter((p) => !expected.test(p)) : problems;
+    expect(unexpected, 'page, console and GL errors').toEqual([]);
+  },
+});
+export { expect };
+
+/** Opens an exercise with ?api= from the project and small-canvas defaults, waits for a frame. */
+export async function open(page, path, params = {}) {
+  const query = new URLSearchParams({ api: page.api, size: '128', ...params });
+  await page.goto(`${path}?${query}`);
+  await waitForFrame(page, 1);
+  return scene(page);
+}
+
+/** Waits until the page has drawn at least `n` frames (window.scene.frame). */
+export async function waitForFrame(page, n) {
+  await page.waitForFunction((k) => window.scene && window.scene.frame >= k, n);
+}
+
+/** The page's window.scene now. */
+export function scene(page) {
+  return page.evaluate(() => window.scene);
+}
+
+/** Does something and waits for the frame it causes. */
+export async function andDraw(page, action) {
+  const before = (await scene(page)).frame;
+  await action();
+  await waitForFrame(page, before + 1);
+  return scene(page);
+}
+
+/** Asserts the canvas matches a baseline PNG (tests/screenshots/<project>/<name>). */
+export async function expectCanvasScreenshot(page, name) {
+  const size = await page.locator('canvas').evaluate((c) => ({ width: c.width, height: c.height }));
+  await expect(page).toHaveScreenshot(name, { stylePath: PIN_CANVAS_PATH, clip: { x: 0, y: 0, ...size } });
+}
+
+/** A screenshot of the canvas, decoded: { width, height, data (RGBA, row 0 at the top) }. */
+export async function canvasPixels(page) {
+  const png = PNG.sync.read(await canvasScreenshot(page));
+  return { width: png.width, height: png.height, data: png.data };
+}
+
+/** The text of the page's message area. */
+export function messages(page) {
+  return page.locator('#messages').innerText();
+}

@@ -1,0 +1,248 @@
+// The foundation: the front page, WP04P1 and WP04P2 (issue 5). Run under WebGL 2 and WebGL 1.
+import { test, expect, open, scene, andDraw, canvasPixels, expectCanvasScreenshot, messages } from './fixtures.js';
+
+// Where the ray through pixel (i, j)'s centre meets the unit sphere: [near point, far point] or null.
+function sphereHits(camera, width, height, i, j) {
+  const sub = (a, b) => a.map((v, k) => v - b[k]);
+  const dot = (a, b) => a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+  const norm = (a) => a.map((v) => v / Math.hypot(...a));
+  const cross = (a, b) => [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]];
+  const f = norm(sub(camera.at, camera.eye));
+  const r = norm(cross(f, camera.up));
+  const u = cross(r, f);
+  const t = Math.tan((camera.fovy * Math.PI) / 360);
+  const x = ((2 * (i + 0.5)) / width - 1) * t * camera.aspect;
+  const y = (1 - (2 * (j + 0.5)) / height) * t;
+  const d = norm([0, 1, 2].map((k) => f[k] + x * r[k] + y * u[k]));
+  const b = dot(camera.eye, d);
+  const c = dot(camera.eye, camera.eye) - 1;
+  const disc = b * b - c;
+  if (disc <= 0) return null;
+  const at = (s) => camera.eye.map((e, k) => e + s * d[k]);
+  const near = at(-b - Math.sqrt(disc));
+  return { near, far: at(-b + Math.sqrt(disc)), cosine: Math.sqrt(disc) };
+}
+
+const normalColour = (p) => p.map((v) => Math.round(255 * (0.5 * v + 0.5)));
+const BACKGROUND = [100, 149, 237];
+
+// Compares sampled pixels with c = 0.5 p + 0.5 of the near (and, if allowed, the far) sphere point.
+function checkNormalColours(img, camera, { allowFar = false, useFar = false, tolerance = 3 } = {}) {
+  let checked = 0;
+  const bad = [];
+  for (let j = 2; j < img.height; j += 5) {
+    for (let i = 2; i < img.width; i += 5) {
+      const o = 4 * (j * img.width + i);
+      const got = [img.data[o], img.data[o + 1], img.data[o + 2]];
+      const hit = sphereHits(camera, img.width, img.height, i, j);
+      if (!hit) {
+        expect(got, `background at ${i},${j}`).toEqual(BACKGROUND);
+        continue;
+      }
+      if (hit.cosine < 0.25) continue; // near the silhouette the mesh's chords differ from the sphere
+      const candidates = useFar ? [hit.far] : allowFar ? [hit.near, hit.far] : [hit.near];
+      const ok = candidates.some((p) => normalColour(p).every((v, k) => Math.abs(v - got[k]) <= tolerance));
+      checked++;
+      if (!ok) bad.push(`${i},${j}: got ${got}, want ${candidates.map(normalColour).join(' or ')}`);
+    }
+  }
+  expect(checked).toBeGreaterThan(200);
+  expect(bad.slice(0, 5)).toEqual([]);
+}
+
+test('the front page lists the steps in order and every link works', async ({ page }) => {
+  await page.goto('/');
+  const links = page.locator('ol.steps a');
+  const hrefs = await links.evaluateAll((as) => as.map((a) => a.getAttribute('href')));
+  expect(hrefs.length).toBeGreaterThanOrEqual(2);
+  expect(hrefs).toEqual([...hrefs].sort());
+  for (const href of hrefs) {
+    const response = await page.request.get(new URL(href, page.url()).href);
+    expect(response.status(), href).toBe(200);
+  }
+  await links.first().click();
+  await expect(page).toHaveURL(/WP04P1/);
+});
+
+test.describe('WP04P1', () => {
+  for (const level of [0, 2, 5]) {
+    test(`screenshot at level ${level}`, async ({ page }) => {
+      const s = await open(page, '/WP04P1/', { level });
+      expect(s.level).toBe(level);
+      expect(s.vertices).toBe(12 * 4 ** level);
+      await expectCanvasScreenshot(page, `WP04P1-level${level}.png`);
+    });
+  }
+
+  test('each pixel shows c = 0.5 p + 0.5 of a sphere point under it', async ({ page }) => {
+    const s = await open(page, '/WP04P1/', { level: 5 });
+    expect(s.shading).toBe('normals');
+    // no depth test yet: the last triangle drawn wins, which may be the far side
+    checkNormalColours(await canvasPixels(page), s.camera, { allowFar: true });
+  });
+
+  test('Subdivide and Coarsen step the level, stop at the ends, and show the count', async ({ page }) => {
+    await open(page, '/WP04P1/', { level: 1 });
+    const subdivide = page.getByRole('button', { name: 'Subdivide' });
+    const coarsen = page.getByRole('button', { name: 'Coarsen' });
+    let s = await andDraw(page, () => subdivide.click());
+    expect(s.level).toBe(2);
+    await expect(page.locator('#info')).toHaveText('level 2 · 192 vertices');
+    await andDraw(page, () => coarsen.click());
+    s = await andDraw(page, () => coarsen.click());
+    expect(s.level).toBe(0);
+    await expect(coarsen).toBeDisabled();
+    await expect(subdivide).toBeEnabled();
+    await expect(page).toHaveURL(/level=0/);
+  });
+
+  test('1,000 level changes recycle the one buffer and the one program', async ({ page }) => {
+    await open(page, '/WP04P1/', { level: 0 });
+    const before = await page.evaluate(() => ({ ...window.__gl.counts }));
+    expect(before.createBuffer).toBe(1);
+    expect(before.createProgram).toBe(1);
+    // Up to level 6 and back, again and again: 1,000 clicks in all
+    const result = await page.evaluate(() => {
+      const up = document.getElementById('subdivide');
+      const down = document.getElementById('coarsen');
+      let goingUp = true;
+      for (let k = 0; k < 1000; k++) {
+        if (goingUp && window.scene.level >= 6) goingUp = false;
+        if (!goingUp && window.scene.level <= 0) goingUp = true;
+        (goingUp ? up : down).click();
+      }
+      return { level: window.scene.level, frame: window.scene.frame };
+    });
+    expect(result.frame).toBe(1001);
+    const after = await page.evaluate(() => ({ ...window.__gl.counts }));
+    expect(after.createBuffer, 'buffers created').toBe(1);
+    expect(after.createProgram, 'programs created').toBe(1);
+    expect(after.createShader, 'shaders created').toBe(2);
+    expect(after.bufferData - before.bufferData, 'bufferData per level change').toBe(1000);
+    expect(after.getUniformLocation, 'uniform look-ups happen once').toBe(before.getUniformLocation);
+    expect(await page.evaluate(() => window.__gl.errors())).toEqual([]);
+  });
+});
+
+test.describe('WP04P2', () => {
+  const views = {
+    default: {},
+    'no-depth-no-cull': { depth: 0, cull: 0 },
+    'depth-only': { depth: 1, cull: 0 },
+    'cull-only': { depth: 0, cull: 1 },
+    clockwise: { cw: 1 },
+  };
+  for (const [name, params] of Object.entries(views)) {
+    test(`screenshot: ${name}`, async ({ page }) => {
+      await open(page, '/WP04P2/', { level: 4, ...params });
+      await expectCanvasScreenshot(page, `WP04P2-${name}.png`);
+    });
+  }
+
+  test('defaults are as the slides end up: depth test and culling on, counter-clockwise', async ({ page }) => {
+    const s = await open(page, '/WP04P2/');
+    expect([s.depthTest, s.cullFace, s.frontFace]).toEqual([true, true, 'ccw']);
+    await expect(page.getByRole('checkbox', { name: 'Depth test' })).toBeChecked();
+    await expect(page.getByRole('checkbox', { name: 'Cull faces' })).toBeChecked();
+    await expect(page.getByRole('checkbox', { name: 'Clockwise front faces' })).not.toBeChecked();
+  });
+
+  test('with the depth test each pixel shows the near sphere point; culling changes nothing', async ({ page }) => {
+    let s = await open(page, '/WP04P2/', { level: 5 });
+    const culled = await canvasPixels(page);
+    checkNormalColours(culled, s.camera);
+    s = await andDraw(page, () => page.getByRole('checkbox', { name: 'Cull faces' }).uncheck());
+    expect(s.cullFace).toBe(false);
+    const unculled = await canvasPixels(page);
+    expect(Buffer.compare(Buffer.from(culled.data), Buffer.from(unculled.data)), 'culling has no visible effect').toBe(0);
+  });
+
+  test('clockwise front faces show the inside of the far side', async ({ page }) => {
+    await open(page, '/WP04P2/', { level: 5 });
+    const s = await andDraw(page, () => page.getByRole('checkbox', { name: 'Clockwise front faces' }).check());
+    expect(s.frontFace).toBe('cw');
+    checkNormalColours(await canvasPixels(page), s.camera, { useFar: true });
+    await expect(page).toHaveURL(/cw=1/);
+  });
+});
+
+test.describe('bad input and failures', () => {
+  const cases = [
+    ['level=999', { level: '999' }, 8, /level=999 is above the largest value 8/],
+    ['level=-2', { level: '-2' }, 0, /level=-2 is below the least value 0/],
+    ['level=abc', { level: 'abc' }, 5, /level=abc is not a number/],
+    ['api=foo', { api: 'foo' }, 5, /api=foo is not one of webgl2, webgl/],
+  ];
+  for (const [name, params, level, notice] of cases) {
+    test(`${name} draws a valid sphere and says what was fixed`, async ({ page }) => {
+      const s = await open(page, '/WP04P1/', params);
+      expect(s.level).toBe(level);
+      expect(s.vertices).toBe(12 * 4 ** level);
+      await expect(page.locator('#messages .notice')).toContainText(notice);
+      const img = await canvasPixels(page);
+      const centre = 4 * (64 * 128 + 64);
+      expect([...img.data.slice(centre, centre + 3)]).not.toEqual([100, 149, 237]);
+    });
+  }
+
+  test('a broken shader is reported with its file and line, on the page', async ({ page }) => {
+    await page.route('**/WP04P1/shader.frag', (route) => route.fulfill({
+      contentType: 'text/plain',
+      body: 'precision mediump float;\nvarying vec4 vColor;\nvoid main() {\n  gl_FragColor = vColour;\n}\n',
+    }));
+    await page.goto(`/WP04P1/?api=${page.api}&size=64`);
+    const error = page.locator('#messages .error');
+    await expect(error).toContainText('shader.frag, line 4');
+    await expect(error.locator('pre')).toContainText('>> 4');
+  });
+
+  test('a missing shader file is reported on the page', async ({ page }) => {
+    await page.route('**/WP04P2/shader.vert', (route) => route.fulfill({ status: 404, body: 'not found' }));
+    page.expectProblems(/404/); // the browser itself logs the failed request
+    await page.goto(`/WP04P2/?api=${page.api}&size=64`);
+    await expect(page.locator('#messages .error')).toContainText('Could not load the shader shader.vert: the server answered 404');
+  });
+
+  test('no WebGL at all: a clear message instead of a blank canvas', async ({ page }) => {
+    await page.addInitScript(() => { HTMLCanvasElement.prototype.getContext = () => null; });
+    await page.goto(`/WP04P1/?api=${page.api}&size=64`);
+    await expect(page.locator('#messages .error')).toContainText('cannot create a WebGL context');
+  });
+
+  test('no WebGL 2: falls back to WebGL 1 and says so', async ({ page }) => {
+    await page.addInitScript(() => {
+      const original = HTMLCanvasElement.prototype.getContext;
+      HTMLCanvasElement.prototype.getContext = function (type, ...rest) {
+        return type === 'webgl2' ? null : original.call(this, type, ...rest);
+      };
+    });
+    await page.goto('/WP04P2/?api=webgl2&size=64');
+    await page.waitForFunction(() => window.scene && window.scene.frame >= 1);
+    expect((await scene(page)).api).toBe('webgl');
+    await expect(page.locator('#messages .notice')).toContainText('WebGL 2 is not available');
+  });
+
+  test('opened from file:// the page says how to serve it', async ({ page }) => {
+    page.expectProblems(/CORS|file:|Failed to load|ERR_/i);
+    await page.goto(new URL('../../WP04P1/index.html', import.meta.url).href);
+    await expect(page.locator('#messages .error')).toContainText('npm start');
+    expect(await messages(page)).toContain('file://');
+  });
+
+  test('the address follows the controls and reloads to the same view', async ({ page }) => {
+    await open(page, '/WP04P2/', { level: 2 });
+    await andDraw(page, () => page.getByRole('button', { name: 'Subdivide' }).click());
+    await andDraw(page, () => page.getByRole('checkbox', { name: 'Depth test' }).uncheck());
+    const before = await canvasPixels(page);
+    // the address is written at most every 100 ms: wait for it
+    await expect.poll(() => new URL(page.url()).searchParams.get('depth')).toBe('0');
+    expect(new URL(page.url()).searchParams.get('level')).toBe('3');
+    const url = page.url();
+    await page.goto(url);
+    await page.waitForFunction(() => window.scene && window.scene.frame >= 1);
+    const s = await scene(page);
+    expect([s.level, s.depthTest]).toEqual([3, false]);
+    const after = await canvasPixels(page);
+    expect(Buffer.compare(Buffer.from(before.data), Buffer.from(after.data))).toBe(0);
+  });
+});

@@ -1,0 +1,54 @@
+// The development server (tools/serve.js), tested as it runs: loopback only, nothing outside the site.
+import { test, before, after } from 'node:test';
+import assert from 'node:assert/strict';
+import http from 'node:http';
+import os from 'node:os';
+import { startServer } from '../../tools/browser.js';
+
+let server;
+before(async () => { server = await startServer(); });
+after(() => server.stop());
+
+// A raw request: the path goes on the wire as written (fetch would resolve the dots first).
+function get(path, host = '127.0.0.1') {
+  const { port } = new URL(server.url);
+  return new Promise((resolve, reject) => {
+    const req = http.request({ host, port, path, method: 'GET' }, (res) => {
+      let body = '';
+      res.on('data', (c) => { body += c; });
+      res.on('end', () => resolve({ status: res.statusCode, body }));
+    });
+    req.on('error', reject);
+    req.end();
+  });
+}
+
+test('serves the site', async () => {
+  const page = await get('/');
+  assert.equal(page.status, 200);
+  assert.match(page.body, /Lighting and shading in WebGL/);
+  assert.equal((await get('/WP04P1/shader.vert')).status, 200);
+});
+
+test('a path outside the site is refused, however it is spelled', async () => {
+  for (const path of ['/../package.json', '/../../etc/passwd', '/%2e%2e/%2e%2e/etc/passwd', '/..%2f..%2fetc%2fpasswd',
+    '/WP04P1/../../../etc/passwd', '/%2e%2e%5c%2e%2e%5cetc%5cpasswd', '/....//....//etc/passwd', '//etc/passwd']) {
+    const res = await get(path);
+    assert.notEqual(res.status, 200, `${path} answered 200`);
+    assert.doesNotMatch(res.body, /root:/, path);
+  }
+  // dot-files (.git, .ci) are not served either
+  assert.equal((await get('/.git/config')).status, 404);
+});
+
+test('it listens on the loopback address only', async () => {
+  const { port } = new URL(server.url);
+  const external = Object.values(os.networkInterfaces()).flat()
+    .filter((a) => a && a.family === 'IPv4' && !a.internal).map((a) => a.address);
+  for (const address of external) {
+    await assert.rejects(get('/', address).then(() => { throw new Error(`answered on ${address}:${port}`); }).catch((e) => {
+      if (/answered/.test(e.message)) throw e;
+      throw new Error('refused'); // ECONNREFUSED: nothing listens there
+    }), /refused/);
+  }
+});

@@ -1,0 +1,100 @@
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { tetrahedronSphere, sphereMesh, vertexCount, vertexBytes, chooseLevel, MAX_DEVIATION, MAX_LEVEL } from '../../common/sphere.js';
+
+test('vertex count is 4·4^n·3 at every level', () => {
+  for (let n = 0; n <= MAX_LEVEL; n++) {
+    assert.equal(vertexCount(n), 4 * 4 ** n * 3);
+    assert.equal(vertexBytes(n), vertexCount(n) * 12);
+    const p = new Float32Array(3 * vertexCount(n));
+    assert.equal(tetrahedronSphere(n, p), vertexCount(n));
+  }
+});
+
+test('every vertex is on the unit sphere; every triangle is non-degenerate and counter-clockwise seen from outside', () => {
+  for (let n = 0; n <= MAX_LEVEL; n++) {
+    const p = sphereMesh(n);
+    assert.equal(p.length, 3 * vertexCount(n));
+    let worstRadius = 0, minArea = Infinity, clockwise = 0;
+    for (let i = 0; i < p.length; i += 9) {
+      for (let v = 0; v < 9; v += 3) {
+        worstRadius = Math.max(worstRadius, Math.abs(Math.hypot(p[i + v], p[i + v + 1], p[i + v + 2]) - 1));
+      }
+      const ux = p[i + 3] - p[i], uy = p[i + 4] - p[i + 1], uz = p[i + 5] - p[i + 2];
+      const vx = p[i + 6] - p[i], vy = p[i + 7] - p[i + 1], vz = p[i + 8] - p[i + 2];
+      const nx = uy * vz - uz * vy, ny = uz * vx - ux * vz, nz = ux * vy - uy * vx;
+      minArea = Math.min(minArea, Math.hypot(nx, ny, nz) / 2);
+      // (b-a)×(c-a) points outward (along the centroid) for a counter-clockwise triangle
+      const cx = p[i] + p[i + 3] + p[i + 6], cy = p[i + 1] + p[i + 4] + p[i + 7], cz = p[i + 2] + p[i + 5] + p[i + 8];
+      if (nx * cx + ny * cy + nz * cz <= 0) clockwise++;
+    }
+    assert.ok(worstRadius < 1e-6, `level ${n}: a vertex is ${worstRadius} off the unit sphere`);
+    assert.equal(clockwise, 0, `level ${n}: ${clockwise} triangles wind clockwise seen from outside`);
+    // a level-n triangle has roughly 1/4^n of the tetrahedron face's area (0.41); far from zero
+    assert.ok(minArea > 0.05 / 4 ** n, `level ${n}: a triangle has area ${minArea}`);
+  }
+});
+
+test('the mesh is closed: every edge is shared by exactly two triangles, in opposite directions', () => {
+  for (let n = 0; n <= 4; n++) {
+    const p = sphereMesh(n);
+    const key = (i) => `${p[i].toFixed(5)},${p[i + 1].toFixed(5)},${p[i + 2].toFixed(5)}`;
+    const edges = new Map();
+    for (let t = 0; t < p.length; t += 9) {
+      for (let e = 0; e < 3; e++) {
+        const a = key(t + 3 * e), b = key(t + 3 * ((e + 1) % 3));
+        edges.set(`${a}|${b}`, (edges.get(`${a}|${b}`) || 0) + 1);
+      }
+    }
+    for (const [edge, count] of edges) {
+      const [a, b] = edge.split('|');
+      assert.equal(count, 1, `level ${n}: directed edge ${edge} used ${count} times`);
+      assert.equal(edges.get(`${b}|${a}`), 1, `level ${n}: edge ${edge} has no twin`);
+    }
+  }
+});
+
+test('bad levels and short arrays throw a clear RangeError', () => {
+  assert.throws(() => tetrahedronSphere(-1, new Float32Array(100)), /integer from 0 to 8/);
+  assert.throws(() => tetrahedronSphere(1.5, new Float32Array(1000)), RangeError);
+  assert.throws(() => tetrahedronSphere(MAX_LEVEL + 1, new Float32Array(1)), RangeError);
+  assert.throws(() => tetrahedronSphere(2, new Float32Array(10)), /needs 576 floats/);
+});
+
+test('sphereMesh reuses one array and grows it only for a higher level', () => {
+  const a = sphereMesh(3);
+  const b = sphereMesh(2);
+  assert.equal(a.buffer, b.buffer, 'a lower level reuses the same storage');
+  const c = sphereMesh(5);
+  const d = sphereMesh(4);
+  assert.equal(c.buffer, d.buffer);
+});
+
+test('MAX_DEVIATION is what the mesh measures: 1 − the least distance to a triangle plane', () => {
+  for (let n = 0; n <= MAX_LEVEL; n++) {
+    const p = sphereMesh(n);
+    let least = 1;
+    for (let i = 0; i < p.length; i += 9) {
+      const ux = p[i + 3] - p[i], uy = p[i + 4] - p[i + 1], uz = p[i + 5] - p[i + 2];
+      const vx = p[i + 6] - p[i], vy = p[i + 7] - p[i + 1], vz = p[i + 8] - p[i + 2];
+      const nx = uy * vz - uz * vy, ny = uz * vx - ux * vz, nz = ux * vy - uy * vx;
+      least = Math.min(least, (nx * p[i] + ny * p[i + 1] + nz * p[i + 2]) / Math.hypot(nx, ny, nz));
+    }
+    assert.ok(Math.abs(1 - least - MAX_DEVIATION[n]) / MAX_DEVIATION[n] < 2e-3, `level ${n}: ${1 - least} vs ${MAX_DEVIATION[n]}`);
+  }
+});
+
+test('chooseLevel: the least level with a silhouette error under half a pixel', () => {
+  // eye 3 from the centre, fovy 45°: 512 px needs level 6, 128 px level 5, 32 px level 4
+  assert.equal(chooseLevel(512, 45, 3).level, 6);
+  assert.equal(chooseLevel(128, 45, 3).level, 5);
+  assert.equal(chooseLevel(32, 45, 3).level, 4);
+  for (const h of [16, 64, 128, 256, 512, 1024, 2048]) {
+    const { level, errorPx, radiusPx } = chooseLevel(h, 45, 3);
+    assert.ok(errorPx < 0.5 || level === MAX_LEVEL);
+    if (level > 0) assert.ok(chooseLevel(h, 45, 3, 0.5).errorPx * MAX_DEVIATION[level - 1] / MAX_DEVIATION[level] >= 0.5);
+    // the silhouette radius: tan(asin(1/3)) / tan(22.5°) of half the height
+    assert.ok(Math.abs(radiusPx - (h / 2) * Math.tan(Math.asin(1 / 3)) / Math.tan(Math.PI / 8)) < 1e-9);
+  }
+  assert.equal(chooseLevel(1e6, 45, 3).level, MAX_LEVEL, 'a huge canvas gets the most the page offers');
+});

@@ -1,0 +1,59 @@
+// Shared by the command-line tools: Debian's Chromium with the flags this machine needs, and the
+// site's static server on a free loopback port.
+import { spawn } from 'node:child_process';
+import { existsSync, readFileSync } from 'node:fs';
+import net from 'node:net';
+import { fileURLToPath } from 'node:url';
+import { chromium } from '@playwright/test';
+
+export const CHROMIUM = process.env.CHROMIUM_PATH || '/usr/bin/chromium';
+export const CHROMIUM_ARGS = [
+  '--disable-background-networking', '--disable-component-update', '--disable-sync',
+  '--no-first-run', '--disable-quic', '--use-angle=swiftshader', '--enable-unsafe-swiftshader',
+];
+
+/** A style sheet that pins the canvas to the viewport's top-left corner, on whole pixels, while a
+ * screenshot is taken (text above it may leave it at a fractional y, which would add a row). */
+export const PIN_CANVAS_PATH = fileURLToPath(new URL('./pin-canvas.css', import.meta.url));
+export const PIN_CANVAS = readFileSync(PIN_CANVAS_PATH, 'utf8');
+
+/** A screenshot of a page's canvas, as PNG bytes: exactly canvas.width × canvas.height pixels. */
+export async function canvasScreenshot(page) {
+  const size = await page.locator('canvas').first().evaluate((c) => ({ width: c.width, height: c.height }));
+  return page.screenshot({ style: PIN_CANVAS, clip: { x: 0, y: 0, ...size } });
+}
+
+/** Launches Chromium, or throws an Error saying how to install it. */
+export async function launchChromium(options = {}) {
+  if (!existsSync(CHROMIUM)) {
+    throw new Error(`Chromium is missing at ${CHROMIUM}: run "sudo apt-get update && sudo apt-get install -y chromium" (or set CHROMIUM_PATH)`);
+  }
+  return chromium.launch({ executablePath: CHROMIUM, args: CHROMIUM_ARGS, ...options });
+}
+
+function freePort() {
+  return new Promise((resolve, reject) => {
+    const srv = net.createServer();
+    srv.on('error', reject);
+    srv.listen(0, '127.0.0.1', () => {
+      const { port } = srv.address();
+      srv.close(() => resolve(port));
+    });
+  });
+}
+
+/**
+ * Starts tools/serve.js on a free port for `root` (default: the repository).
+ * @returns {Promise<{url: string, stop: () => void}>}
+ */
+export async function startServer(root) {
+  const port = await freePort();
+  const args = [fileURLToPath(new URL('./serve.js', import.meta.url)), '--port', String(port)];
+  if (root) args.push('--root', root);
+  const child = spawn(process.execPath, args, { stdio: ['ignore', 'pipe', 'inherit'] });
+  await new Promise((resolve, reject) => {
+    child.on('exit', (code) => reject(new Error(`the static server exited (${code})`)));
+    child.stdout.on('data', (chunk) => { if (String(chunk).includes('http://')) resolve(); });
+  });
+  return { url: `http://127.0.0.1:${port}`, stop: () => child.kill() };
+}
