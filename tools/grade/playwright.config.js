@@ -1,0 +1,22 @@
+// The grader's own Playwright Test run: one test per part (tools/grade/grade.spec.js), its workers,
+// its --shard for splitting a class over machines, its reporters (blob for merge-reports, list).
+import { defineConfig } from '@playwright/test';
+import { CHROMIUM, CHROMIUM_ARGS } from '../browser.js';
+
+const plan = process.env.GRADE_PLAN ? JSON.parse(await import('node:fs').then((fs) => fs.readFileSync(process.env.GRADE_PLAN, 'utf8'))) : { timeoutSeconds: 30, out: 'out/grade' };
+
+export default defineConfig({
+  testDir: '.',
+  testMatch: 'grade.spec.js',
+  timeout: plan.timeoutSeconds * 1000,
+  workers: Number(process.env.GRADE_WORKERS || 2),
+  fullyParallel: true,
+  retries: 0,
+  outputDir: `${plan.out}/test-results`,
+  reporter: [['list'], ['blob', { outputDir: `${plan.out}/blob-report` }]],
+  use: {
+    deviceScaleFactor: 1,
+    viewport: { width: 900, height: 900 },
+    launchOptions: { executablePath: CHROMIUM, args: CHROMIUM_ARGS },
+  },
+});
