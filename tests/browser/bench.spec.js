@@ -1,0 +1,73 @@
+// npm run bench -- --quick, checked for shape and sanity (never for speed), and the level chooser
+// checked against the exact reference.
+import { spawnSync } from 'node:child_process';
+import { readFileSync, mkdtempSync } from 'node:fs';
+import os from 'node:os';
+import path from 'node:path';
+import { test, expect, open, canvasPixels, andDraw } from './fixtures.js';
+import { renderReference, silhouetteErrorPx } from '../../tools/reference.js';
+import { EDGE_CASES } from '../../tools/edge-cases.js';
+
+test('bench --quick: every method and level, errors that fall with the level, an exact impostor', async ({ api }) => {
+  test.skip(api !== 'webgl2', 'the bench picks its own context; once is enough');
+  test.setTimeout(120_000);
+  const out = mkdtempSync(path.join(os.tmpdir(), 'bench-'));
+  const run = spawnSync(process.execPath, ['tools/bench.js', '--quick', '--out', out], { encoding: 'utf8', timeout: 110_000 });
+  expect(run.status, run.stderr).toBe(0);
+  expect(run.stderr).toMatch(/\[bench\]/); // a progress line
+  const r = JSON.parse(readFileSync(path.join(out, 'bench.json'), 'utf8'));
+  expect(r.meta.renderer).toBeTruthy();
+  expect(r.meta.machine).toBeTruthy();
+  expect(r.meta.browser).toMatch(/Chromium/);
+  for (const method of ['flat', 'gouraud', 'phong']) {
+    const rows = r.frames.filter((f) => f.method === method).sort((a, b) => a.level - b.level);
+    expect(rows.map((f) => f.level)).toEqual([0, 1, 2, 3, 4, 5]);
+    for (const f of rows) {
+      expect(f.msMedian).toBeGreaterThan(0);
+      expect(f.vertices).toBe(12 * 4 ** f.level);
+    }
+    if (method !== 'flat') {
+      for (let k = 1; k < rows.length; k++) expect(rows[k].rmse, `${method} level ${k}`).toBeLessThan(rows[k - 1].rmse);
+    }
+    expect(rows[5].silhouetteErrorPx).toBeLessThan(0.5);
+  }
+  const impostor = r.frames.find((f) => f.method === 'impostor');
+  expect(impostor.rmse * 255).toBeLessThan(0.5);
+  expect(impostor.silhouetteMismatch).toBeLessThanOrEqual(2);
+  expect(r.levelChange.map((l) => l.level)).toEqual([0, 1, 2, 3, 4, 5, 6]);
+  for (const l of r.levelChange) expect(l.oursMs * l.classicMs * l.boundMs).toBeGreaterThan(0);
+  expect(r.indexed.every((x) => x.pixelsEqual)).toBe(true);
+  expect(r.indexed.map((x) => x.vertices)).toEqual([0, 1, 2, 3, 4, 5, 6].map((n) => 2 * 4 ** n + 2));
+  const phong = r.stability.find((s) => s.method === 'phong' && s.level === 5);
+  const gouraud = r.stability.find((s) => s.method === 'gouraud' && s.level === 3);
+  expect(phong.peakErrorRms).toBeLessThan(gouraud.peakErrorRms);
+  // the edge-case table: every case for both methods, and no NaN-black pixel anywhere
+  expect(r.edgeCases.length).toBe(2 * EDGE_CASES.length);
+  expect(r.edgeCases.every((e) => e.nanLike === 0)).toBe(true);
+  expect(readFileSync(path.join(out, 'bench.csv'), 'utf8')).toMatch(/^# .*\nmethod,level,size/);
+});
+
+for (const size of [128, 256]) {
+  test(`the chosen level at ${size} px keeps the silhouette within ½ px; one level less does not`, async ({ page }) => {
+    const s = await open(page, '/WP04P5/', { orbit: 0, angle: 0, size });
+    await expect(page.locator('#info')).toContainText(`the least level that looks round at ${size} px`);
+    const ref = renderReference(s, size, size);
+    expect(silhouetteErrorPx(await canvasPixels(page), ref, s)).toBeLessThan(0.5);
+    const coarser = await andDraw(page, () => page.getByRole('button', { name: 'Coarsen' }).click());
+    expect(coarser.level).toBe(s.level - 1);
+    expect(silhouetteErrorPx(await canvasPixels(page), ref, coarser)).toBeGreaterThan(0.5);
+  });
+}
+
+test('the lab page draws its charts and tables from the committed results', async ({ page }) => {
+  await page.goto('/lab/');
+  await page.waitForFunction(() => window.labReady);
+  await expect(page.locator('#speed-accuracy canvas')).toBeVisible();
+  await expect(page.locator('#claim p')).toHaveCount(4);
+  await expect(page.locator('#claim')).toContainText('Gouraud (WP04P4)');
+  for (const id of ['level-table', 'stability', 'indexed', 'edge-cases']) expect(await page.locator(`#${id} tr`).count(), id).toBeGreaterThan(2);
+  await expect(page.locator('#indexed')).not.toContainText('NO');
+  await page.goto('/');
+  await page.getByRole('link', { name: 'the lab' }).click();
+  await expect(page).toHaveURL(/\/lab\/$/);
+});
