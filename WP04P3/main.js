@@ -9,6 +9,8 @@ import { checkbox, createContext, onClick, onContextLoss, publishScene, readPara
 const BACKGROUND = [0.3921, 0.5843, 0.9294, 1.0];
 // The camera orbits the unit sphere at radius r in the xz-plane.
 const EYE_DISTANCE = 3, FOVY = 45;
+// Which of chooseLevel's measured shading errors this step has: Gouraud, diffuse only
+const SHADING = 'diffuse';
 const ORBIT_SPEED = (2 * Math.PI) / 12; // radians per second: one orbit in 12 s
 // Where each kind of light starts: a directional light's xyz is the direction it shines in (l_e);
 // a point light's is its position.
@@ -23,7 +25,7 @@ async function main() {
     near: { type: 'number', min: 0.01, max: 100, default: 0.1 },
     far: { type: 'number', min: 0.02, max: 1000, default: 10 },
     // Model no more than the scene needs: by default the least level that looks round at this size
-    level: { type: 'int', min: 0, max: MAX_LEVEL, default: (v) => chooseLevel(v.height, FOVY, EYE_DISTANCE).level },
+    level: { type: 'int', min: 0, max: MAX_LEVEL, default: (v) => chooseLevel(v.height, FOVY, EYE_DISTANCE, { shading: SHADING }).level },
     orbit: { type: 'bool', default: true },
     angle: { type: 'number', min: -1e6, max: 1e6, default: 0 },
     light: { type: 'enum', values: ['directional', 'point'], default: 'directional' },
@@ -103,7 +105,7 @@ async function main() {
 
   // Controls
   const info = document.getElementById('info');
-  const autoLevel = chooseLevel(state.height, FOVY, EYE_DISTANCE).level;
+  const autoLevel = chooseLevel(state.height, FOVY, EYE_DISTANCE, { shading: SHADING }).level;
   const subdivide = document.getElementById('subdivide');
   const coarsen = document.getElementById('coarsen');
   function setLevel(level) {
@@ -112,7 +114,7 @@ async function main() {
     subdivide.disabled = level >= MAX_LEVEL;
     coarsen.disabled = level <= 0;
     info.value = `level ${level} · ${numVertices.toLocaleString('en')} vertices` +
-      (level === autoLevel ? ` (the least level that looks round at ${state.height} px)` : '');
+      (level === autoLevel ? ` (the least level that looks round at ${state.height} px and shades within 1/255)` : '');
     changed();
   }
   onClick('subdivide', () => setLevel(Math.min(state.level + 1, MAX_LEVEL)));

@@ -67,8 +67,8 @@ async function main() {
   });
   function draw(size) {
     const rows = r.frames.filter((f) => f.size === size);
-    const chosen = r.chosen[size];
     const datasets = Object.keys(NAMES).map((method) => {
+      const chosen = r.chosen[size][method]; // the level the exercise of this method picks
       const pts = rows.filter((f) => f.method === method)
         .map((f) => ({ x: Math.max(f.msMedian, 0.01), y: Math.max(f.rmse / STEP, 0.01), label: f.level === null ? '' : `L${f.level}`, level: f.level }));
       return { label: NAMES[method], data: pts, borderColor: COLOURS[method], backgroundColor: COLOURS[method],

@@ -124,7 +124,9 @@ async function main() {
       if (!results.meta.renderer) {
         Object.assign(results.meta, await page.evaluate(() => ({ renderer: window.bench.renderer, api: window.bench.api })));
       }
-      results.chosen[size] = chooseLevel(size, 45, 3).level;
+      // the level each exercise picks for this canvas; flat shading has no page, so the silhouette alone
+      results.chosen[size] = { flat: chooseLevel(size, 45, 3).level, gouraud: chooseLevel(size, 45, 3, { shading: 'gouraud' }).level,
+        phong: chooseLevel(size, 45, 3, { shading: 'phong' }).level };
       const refScene = await page.evaluate(() => window.bench.scene());
       const ref = renderReference(refScene, size, size);
       const measure = async (method, level) => {

@@ -1,6 +1,6 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { tetrahedronSphere, sphereMesh, vertexCount, vertexBytes, chooseLevel, MAX_DEVIATION, MAX_LEVEL } from '../../common/sphere.js';
+import { tetrahedronSphere, sphereMesh, vertexCount, vertexBytes, chooseLevel, MAX_DEVIATION, MAX_LEVEL, SHADING_RMSE } from '../../common/sphere.js';
 
 test('vertex count is 4·4^n·3 at every level', () => {
   for (let n = 0; n <= MAX_LEVEL; n++) {
@@ -92,9 +92,28 @@ test('chooseLevel: the least level with a silhouette error under half a pixel', 
   for (const h of [16, 64, 128, 256, 512, 1024, 2048]) {
     const { level, errorPx, radiusPx } = chooseLevel(h, 45, 3);
     assert.ok(errorPx < 0.5 || level === MAX_LEVEL);
-    if (level > 0) assert.ok(chooseLevel(h, 45, 3, 0.5).errorPx * MAX_DEVIATION[level - 1] / MAX_DEVIATION[level] >= 0.5);
+    if (level > 0) assert.ok(chooseLevel(h, 45, 3, { tolerancePx: 0.5 }).errorPx * MAX_DEVIATION[level - 1] / MAX_DEVIATION[level] >= 0.5);
     // the silhouette radius: tan(asin(1/3)) / tan(22.5°) of half the height
     assert.ok(Math.abs(radiusPx - (h / 2) * Math.tan(Math.asin(1 / 3)) / Math.tan(Math.PI / 8)) < 1e-9);
   }
   assert.equal(chooseLevel(1e6, 45, 3).level, MAX_LEVEL, 'a huge canvas gets the most the page offers');
+});
+
+test('chooseLevel with a shading method: also the least level whose shading error is within tolerance', () => {
+  for (const table of Object.values(SHADING_RMSE)) {
+    assert.equal(table.length, MAX_LEVEL + 1);
+    for (let k = 1; k < table.length; k++) assert.ok(table[k] <= table[k - 1], 'the error never grows with the level');
+  }
+  // Gouraud highlights need level 6 at any size; diffuse Gouraud and Phong shading level 5
+  assert.deepEqual([32, 128, 256, 512].map((h) => chooseLevel(h, 45, 3, { shading: 'gouraud' }).level), [6, 6, 6, 6]);
+  assert.deepEqual([32, 128, 256, 512].map((h) => chooseLevel(h, 45, 3, { shading: 'phong' }).level), [5, 5, 5, 6]);
+  assert.deepEqual([32, 128, 256, 512].map((h) => chooseLevel(h, 45, 3, { shading: 'diffuse' }).level), [5, 5, 5, 6]);
+  assert.equal(chooseLevel(128, 45, 3, { shading: 'gouraud' }).limit, 'shading');
+  assert.equal(chooseLevel(128, 45, 3, { shading: 'phong' }).limit, 'silhouette');
+  assert.equal(chooseLevel(128, 45, 3, { shading: 'gouraud' }).rmse, SHADING_RMSE.gouraud[6]);
+  assert.equal(chooseLevel(128, 45, 3).rmse, null);
+  // a looser tolerance lets Gouraud down to the silhouette's level; none at all is never met
+  assert.equal(chooseLevel(128, 45, 3, { shading: 'gouraud', toleranceRmse: 2 }).level, 5);
+  assert.deepEqual([chooseLevel(128, 45, 3, { shading: 'phong', toleranceRmse: 0 }).level, chooseLevel(128, 45, 3, { shading: 'phong', toleranceRmse: 0 }).limit], [MAX_LEVEL, 'max']);
+  assert.throws(() => chooseLevel(128, 45, 3, { shading: 'flat' }), /shading must be one of diffuse, gouraud, phong/);
 });
