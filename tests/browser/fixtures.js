@@ -7,6 +7,7 @@
 import { test as base, expect } from '@playwright/test';
 import { PNG } from 'pngjs';
 import { PIN_CANVAS_PATH, canvasScreenshot } from '../../tools/browser.js';
+import { renderReference, compareToReference } from '../../tools/reference.js';
 
 function instrument() {
   const counts = {};
@@ -98,6 +99,13 @@ export async function expectCanvasScreenshot(page, name) {
 export async function canvasPixels(page) {
   const png = PNG.sync.read(await canvasScreenshot(page));
   return { width: png.width, height: png.height, data: png.data };
+}
+
+/** Renders the page's own window.scene exactly and compares the canvas with it (options: compareToReference's). */
+export async function errorAgainstReference(page, options) {
+  const s = await scene(page);
+  const img = await canvasPixels(page);
+  return compareToReference(img, renderReference(s, img.width, img.height), options);
 }
 
 /** The text of the page's message area. */

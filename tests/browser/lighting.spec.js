@@ -1,17 +1,8 @@
 // The lighting steps (issue 6): WP04P3 Gouraud, WP04P4 Phong reflection model, WP04P5 Phong shading,
 // each compared with the exact reference renderer (tools/reference.js). WebGL 2 and WebGL 1.
-import { test, expect, open, scene, andDraw, canvasPixels, expectCanvasScreenshot } from './fixtures.js';
-import { renderReference, compareToReference } from '../../tools/reference.js';
+import { test, expect, open, scene, andDraw, canvasPixels, expectCanvasScreenshot, errorAgainstReference } from './fixtures.js';
 
 const STILL = { orbit: 0, angle: 0 };
-
-/** Renders the page's own scene exactly and compares the canvas with it (options: compareToReference's). */
-async function errorAgainstReference(page, options) {
-  const s = await scene(page);
-  const img = await canvasPixels(page);
-  const ref = renderReference(s, img.width, img.height);
-  return compareToReference(img, ref, options);
-}
 
 function report(testInfo, label, stats) {
   const line = `${label}: interior RMSE ${(stats.rmse * 255).toFixed(3)}/255, max ${(stats.maxError * 255).toFixed(1)}/255, ` +
