@@ -1,6 +1,7 @@
-// Page helpers shared by the exercises: URL state (parse, clamp, say what was fixed, follow the
-// controls), the WebGL context, a visible message area, window.scene, and control wiring.
+// Page helpers shared by the exercises and the lab: a visible message area (notices and errors,
+// never a blank page), the WebGL context and its loss, and the address bar that follows the view.
 // Nothing here knows about a particular exercise.
+import { queryString } from './params.js';
 
 const box = () => document.getElementById('messages');
 
@@ -39,78 +40,17 @@ export function run(main) {
   Promise.resolve().then(main).catch(showError);
 }
 
-const TRUE = new Set(['1', 'true', 'on', 'yes']);
-const FALSE = new Set(['0', 'false', 'off', 'no']);
-
-function parseOne(name, raw, rule) {
-  const fix = (why) => ({ value: rule.default, notice: `${name}=${raw} ${why}: using ${name}=${rule.default}.` });
-  if (rule.type === 'enum') {
-    return rule.values.includes(raw) ? { value: raw } : fix(`is not one of ${rule.values.join(', ')}`);
-  }
-  if (rule.type === 'bool') {
-    const v = raw.toLowerCase();
-    if (TRUE.has(v)) return { value: true };
-    if (FALSE.has(v)) return { value: false };
-    return fix('is not on/off (1 or 0)');
-  }
-  const x = raw.trim() === '' ? NaN : Number(raw);
-  if (!Number.isFinite(x)) return fix('is not a number');
-  let value = rule.type === 'int' ? Math.round(x) : x;
-  if (value < rule.min) {
-    return { value: rule.min, notice: `${name}=${raw} is below the least value ${rule.min}: using ${rule.min}.` };
-  }
-  if (value > rule.max) {
-    return { value: rule.max, notice: `${name}=${raw} is above the largest value ${rule.max}: using ${rule.max}.` };
-  }
-  if (value !== x) return { value, notice: `${name}=${raw} is not a whole number: using ${value}.` };
-  return { value };
-}
-
-/**
- * Reads the page's parameters from the query string.
- * @param {Object<string, {type:'int'|'number'|'bool'|'enum', default:*, min?:number, max?:number, values?:string[]}>} spec
- *   a default may be a function of the values read before it, e.g. a level chosen for the canvas size
- * @returns {{values: Object, notices: string[]}} every key of spec gets a valid value; notices say
- *   what was clamped or ignored (they are also shown on the page)
- */
-export function readParams(spec, search = location.search) {
-  const values = {};
-  const notices = [];
-  const given = new URLSearchParams(search);
-  for (const name of given.keys()) {
-    if (!spec[name]) notices.push(`Unknown parameter "${name}" ignored.`);
-  }
-  // Plain defaults first; a default given as a function of the other values comes after them.
-  const names = Object.keys(spec).sort((a, b) =>
-    (typeof spec[a].default === 'function') - (typeof spec[b].default === 'function'));
-  for (const name of names) {
-    const rule = spec[name];
-    const fallback = typeof rule.default === 'function' ? rule.default(values) : rule.default;
-    values[name] = fallback;
-    if (!given.has(name)) continue;
-    const { value, notice } = parseOne(name, given.get(name), { ...rule, default: fallback });
-    values[name] = value;
-    if (notice) notices.push(notice);
-  }
-  for (const text of notices) notify(text);
-  return { values, notices };
-}
-
 let pendingParams = null;
 
 /**
  * Puts the current values into the address bar, so a copied link reproduces the view. Written at
  * most every 100 ms: browsers throttle (or refuse) hundreds of history changes in a row.
  */
-export function writeParams(values) {
+export function writeQuery(values) {
   if (pendingParams) return;
   pendingParams = setTimeout(() => {
     pendingParams = null;
-    const query = new URLSearchParams();
-    for (const [name, value] of Object.entries(values)) {
-      query.set(name, typeof value === 'boolean' ? (value ? '1' : '0') : String(value));
-    }
-    history.replaceState(null, '', `${location.pathname}?${query}`);
+    history.replaceState(null, '', `${location.pathname}?${queryString(values)}`);
   }, 100);
 }
 
@@ -150,50 +90,4 @@ export function createContext(canvas, api) {
       'Turn on hardware acceleration or try another browser.');
   }
   return { gl, api: 'webgl' };
-}
-
-/** Publishes the page's state after a drawn frame (tests, the grader and the bench read it). */
-export function publishScene(scene) {
-  window.scene = scene;
-}
-
-/** Calls `handler` on every click of the button with this id. */
-export function onClick(id, handler) {
-  document.getElementById(id).addEventListener('click', handler);
-}
-
-/** Sets a checkbox and calls `handler(checked)` whenever it changes. */
-export function checkbox(id, checked, handler) {
-  const input = document.getElementById(id);
-  input.checked = checked;
-  input.addEventListener('change', () => handler(input.checked));
-}
-
-/** Sets a <select> and calls `handler(value)` whenever another option is chosen. */
-export function select(id, value, handler) {
-  const input = document.getElementById(id);
-  input.value = value;
-  input.addEventListener('change', () => handler(input.value));
-}
-
-/**
- * Sets a range input (and the <output for=id> beside it) and calls `handler(value)` on every
- * `input` event, i.e. continuously while the slider is dragged (slide "Exercise (WP04P4)").
- */
-export function slider(id, value, handler) {
-  const input = document.getElementById(id);
-  const shown = document.querySelector(`output[for="${id}"]`);
-  setSlider(id, value);
-  input.addEventListener('input', () => {
-    const v = Number(input.value);
-    if (shown) shown.value = input.value;
-    handler(v);
-  });
-}
-
-/** Moves a slider (and the value shown beside it) without firing its handler. */
-export function setSlider(id, value) {
-  document.getElementById(id).value = String(value);
-  const shown = document.querySelector(`output[for="${id}"]`);
-  if (shown) shown.value = String(value);
 }

@@ -3,7 +3,7 @@
 // so the page can show the student exactly where the GLSL is wrong.
 
 /** Error from a shader that failed to load, compile or link; `details` is the marked listing. */
-export class ShaderError extends Error {
+class ShaderError extends Error {
   constructor(message, details = '') {
     super(message);
     this.name = 'ShaderError';
@@ -25,7 +25,7 @@ async function fetchText(url) {
 }
 
 /** The source with line numbers, the failing line marked with ">>". */
-export function listing(source, badLine) {
+function listing(source, badLine) {
   const lines = source.split('\n');
   const width = String(lines.length).length;
   return lines
@@ -40,7 +40,7 @@ export function listing(source, badLine) {
  * @param {string} source GLSL
  * @param {string} name the file name shown in messages
  */
-export function compileShader(gl, type, source, name) {
+function compileShader(gl, type, source, name) {
   const shader = gl.createShader(type);
   gl.shaderSource(shader, source);
   gl.compileShader(shader);
@@ -55,7 +55,7 @@ export function compileShader(gl, type, source, name) {
 }
 
 /** Links two compiled shaders into a program, or throws a ShaderError with the link log. */
-export function linkProgram(gl, vertexShader, fragmentShader, name = 'program') {
+function linkProgram(gl, vertexShader, fragmentShader, name = 'program') {
   const program = gl.createProgram();
   gl.attachShader(program, vertexShader);
   gl.attachShader(program, fragmentShader);
@@ -81,7 +81,7 @@ export function programFrom(gl, shaders) {
 }
 
 /** Compiles and links GLSL sources given as strings (names are for messages). */
-export function createProgram(gl, vertexSource, fragmentSource, vertexName = 'vertex shader', fragmentName = 'fragment shader') {
+function createProgram(gl, vertexSource, fragmentSource, vertexName = 'vertex shader', fragmentName = 'fragment shader') {
   const vs = compileShader(gl, gl.VERTEX_SHADER, vertexSource, vertexName);
   const fs = compileShader(gl, gl.FRAGMENT_SHADER, fragmentSource, fragmentName);
   const program = linkProgram(gl, vs, fs, `${vertexName} + ${fragmentName}`);
@@ -89,6 +89,54 @@ export function createProgram(gl, vertexSource, fragmentSource, vertexName = 've
   gl.deleteShader(vs);
   gl.deleteShader(fs);
   return program;
+}
+
+/**
+ * Uploads a program's uniforms by name: each active uniform takes `uniforms[name]`, or else
+ * `values[name]` (a step's parameters: kd, ks, s, Le, La are the slides' names and the shaders').
+ * A number given for a vecN fills every component. Locations are looked up once per program.
+ * @param {WebGLRenderingContext|WebGL2RenderingContext} gl
+ * @param {WebGLProgram} program the program in use
+ * @param {Object<string, number|boolean|ArrayLike<number>>} uniforms
+ * @param {Object<string, *>} [values]
+ */
+export function setUniforms(gl, program, uniforms, values = {}) {
+  let setters = settersOf.get(program);
+  if (!setters) settersOf.set(program, (setters = makeSetters(gl, program)));
+  for (let i = 0; i < setters.length; i++) {
+    const { name, set } = setters[i];
+    const value = name in uniforms ? uniforms[name] : values[name];
+    if (value === undefined) throw new Error(`setUniforms: the shaders' uniform ${name} has no value`);
+    set(value);
+  }
+}
+
+const settersOf = new WeakMap();
+
+function makeSetters(gl, program) {
+  const setters = [];
+  const count = gl.getProgramParameter(program, gl.ACTIVE_UNIFORMS);
+  for (let i = 0; i < count; i++) {
+    const { name, type } = gl.getActiveUniform(program, i);
+    const at = gl.getUniformLocation(program, name);
+    const vector = (n, upload) => {
+      const splat = new Float32Array(n); // filled when a number is given for the vector
+      return (v) => upload.call(gl, at, typeof v === 'number' ? splat.fill(v) : v);
+    };
+    const set = {
+      [gl.FLOAT]: (v) => gl.uniform1f(at, v),
+      [gl.FLOAT_VEC2]: vector(2, gl.uniform2fv),
+      [gl.FLOAT_VEC3]: vector(3, gl.uniform3fv),
+      [gl.FLOAT_VEC4]: vector(4, gl.uniform4fv),
+      [gl.FLOAT_MAT3]: (v) => gl.uniformMatrix3fv(at, false, v),
+      [gl.FLOAT_MAT4]: (v) => gl.uniformMatrix4fv(at, false, v),
+      [gl.INT]: (v) => gl.uniform1i(at, v),
+      [gl.BOOL]: (v) => gl.uniform1i(at, v ? 1 : 0),
+    }[type];
+    if (!set) throw new Error(`setUniforms: the type of uniform ${name} (0x${type.toString(16)}) is not handled`);
+    setters.push({ name, set });
+  }
+  return setters;
 }
 
 /**

@@ -1,0 +1,151 @@
+// The page machinery every step shares, so that a step's main.js holds the lesson only:
+// the URL parameters (read, clamped, said, and written back as the controls move), the canvas and
+// its WebGL context, the controls, the frame loop (the orbit's clock), the WebGL context's loss
+// and restoration, and window.scene, published after every frame (the page contract, DESIGN.md).
+//
+//   const page = openStep({ exercise: 'WP04P1', params: ['level'] });
+//   const { gl, canvas, state, camera } = page;
+//   ... set-up ...
+//   page.start({ init, setLevel, draw });
+import { AT, EYE_DISTANCE, FOVY, ORBIT_SPEED, UP } from './course.js';
+import { makeControls, showLevel, showValue } from './controls.js';
+import { createContext, notify, onContextLoss, writeQuery } from './page.js';
+import { PARAMETERS, autoLevel, defaultOf, readParams, wrapAngle } from './params.js';
+
+/**
+ * Reads the step's parameters from the URL, sizes the canvas and creates its context.
+ * @param {object} step
+ * @param {string} step.exercise e.g. 'WP04P3'
+ * @param {string[]} step.params the parameters it has besides api and size (common/params.js)
+ * @param {'normals'|'gouraud'|'phong'} [step.shading] as window.scene says it (default 'normals')
+ * @param {'diffuse'|'gouraud'|'phong'} [step.rmse] which shading errors chooseLevel weighs
+ *   (common/sphere.js SHADING_RMSE); none: the silhouette alone sets the level
+ * @returns {{gl: WebGLRenderingContext|WebGL2RenderingContext, api: string, canvas: HTMLCanvasElement,
+ *   state: Object, camera: Object, scene: Object, start: Function}}
+ */
+export function openStep({ exercise, params, shading = 'normals', rmse = null }) {
+  const names = ['api', 'size', ...params];
+  const { values: state, notices } = readParams(names, location.search, { shading: rmse });
+  for (const text of notices) notify(text);
+
+  const canvas = document.getElementById('gl-canvas');
+  canvas.width = state.size;
+  canvas.height = state.height ?? state.size;
+  const { gl, api } = createContext(canvas, state.api);
+
+  // The camera looks at the centre from e = (r sin α, 0, r cos α); a step that orbits moves e
+  const camera = { eye: [0, 0, EYE_DISTANCE], at: [...AT], up: [...UP], fovy: FOVY,
+    aspect: canvas.width / canvas.height, near: state.near ?? 0.1, far: state.far ?? 10 };
+  const scene = describe({ exercise, api, level: 0, vertices: 0, frame: 0, camera, shading }, state);
+
+  /**
+   * Hands the step's GL code to the machinery and draws the first frame.
+   * @param {object} lesson
+   * @param {() => void} lesson.init makes the program, buffer and GL state (again after a lost context)
+   * @param {(level: number) => number} lesson.setLevel fills the one buffer; returns the vertex count
+   * @param {() => void} lesson.draw draws one frame from `state`
+   */
+  function start({ init, setLevel, draw }) {
+    const autoNote = rmse ? 'the least level that looks round at %d px and shades within 1/255'
+      : 'the least level that looks round at %d px';
+    const usual = autoLevel(state, { shading: rmse });
+    function applyLevel() {
+      scene.vertices = setLevel(state.level);
+      showLevel(state.level, scene.vertices, state.level === usual ? autoNote.replace('%d', canvas.height) : '');
+    }
+
+    // A control changed a value: into the state, the URL, the scene, and a new frame
+    const remembered = {}; // per light kind, the light's xyz last used with it
+    function onInput(name, value) {
+      for (const follower of followers(name)) {
+        (remembered[state[name]] ??= {})[follower] = state[follower];
+        state[follower] = remembered[value]?.[follower] ?? defaultOf(follower, { ...state, [name]: value });
+        showValue(follower, state[follower], PARAMETERS[follower]);
+      }
+      state[name] = value;
+      if (name === 'level') applyLevel();
+      changed();
+    }
+    makeControls(PARAMETERS, state, onInput);
+
+    // Frames: a still step draws at once on a change; an orbiting one in its animation frame
+    let pending = false;
+    let lastTime = null;
+    function changed() {
+      writeQuery(state);
+      if (!('orbit' in state)) frame();
+      else if (!pending) {
+        pending = true;
+        requestAnimationFrame(tick);
+      }
+    }
+    function tick(time) {
+      pending = false;
+      if (state.orbit && lastTime !== null) state.angle = wrapAngle(state.angle + (ORBIT_SPEED * (time - lastTime)) / 1000);
+      lastTime = state.orbit ? time : null;
+      frame();
+      if (state.orbit) {
+        pending = true;
+        requestAnimationFrame(tick);
+      }
+    }
+    function frame() {
+      if (gl.isContextLost()) return;
+      describe(scene, state);
+      draw();
+      scene.frame++;
+      window.scene = scene;
+    }
+
+    init();
+    applyLevel();
+    onContextLoss(canvas, () => { init(); applyLevel(); changed(); });
+    changed();
+  }
+
+  return { gl, api, canvas, state, camera, scene, start };
+}
+
+/** The parameters whose value follows `name`'s choice (the light's xyz follows its kind). */
+function followers(name) {
+  return Object.keys(PARAMETERS).filter((p) => PARAMETERS[p].follows === name);
+}
+
+/** window.scene's fields from the step's parameters, in place; a step without one leaves it out. */
+function describe(scene, state) {
+  scene.level = state.level;
+  if ('depth' in state) {
+    scene.depthTest = state.depth;
+    scene.cullFace = state.cull;
+    scene.frontFace = state.cw ? 'cw' : 'ccw';
+  }
+  if ('orbit' in state) {
+    // the lit steps test depth and cull back faces, as WP04P2 taught
+    scene.depthTest = true;
+    scene.cullFace = true;
+    scene.frontFace = 'ccw';
+    scene.orbit = state.orbit;
+    scene.angle = state.angle;
+  }
+  if ('light' in state) {
+    scene.light ??= { position: [0, 0, 0, 0] };
+    const p = scene.light.position;
+    p[0] = state.lx;
+    p[1] = state.ly;
+    p[2] = state.lz;
+    p[3] = state.light === 'point' ? 1 : 0; // homogeneous: w = 1 a point, w = 0 a direction
+    scene.light.Le = state.Le;
+    if ('La' in state) scene.light.La = state.La;
+  }
+  if ('kd' in state) {
+    scene.material ??= {};
+    scene.material.kd = state.kd;
+    if ('La' in state) scene.material.ka = state.kd; // k_a = k_d
+    if ('ks' in state) {
+      scene.material.ks = state.ks;
+      scene.material.s = state.s;
+    }
+  }
+  if ('model' in state) scene.model = state.model;
+  return scene;
+}
