@@ -575,6 +575,27 @@ export function perspective(fovy, aspect, near, far, out) {
 }
 
 /**
+ * The perspective projection for WebGPU, whose clip space keeps z in [0, 1] (WebGL's: [−1, 1]):
+ * the same view volume as `perspective`, its near plane mapped to z = 0 and its far plane to 1.
+ * Same as gl-matrix's mat4.perspectiveZO with fovy in radians.
+ * @param {number} fovy degrees @param {number} aspect width / height
+ * @param {number} near > 0 @param {number} far > near, or Infinity
+ * @param {Mat} [out]
+ * @returns {Mat} out, or a new mat4
+ */
+export function perspectiveZO(fovy, aspect, near, far, out) {
+  const m = perspective(fovy, aspect, near, far, target(out, 16, 'perspectiveZO'));
+  if (far === Infinity) {
+    m[10] = -1;
+    m[14] = -near;
+  } else {
+    m[10] = far / (near - far);
+    m[14] = (far * near) / (near - far);
+  }
+  return m;
+}
+
+/**
  * The orthographic projection of the box x in [left, right], y in [bottom, top],
  * z in [−near, −far] (camera space) onto the cube [−1, 1]^3.
  * @param {number} left @param {number} right @param {number} bottom @param {number} top

@@ -339,9 +339,22 @@ test('equal compares with a tolerance and a length', () => {
   assert.ok(M.equal(M.mult(M.rotate(30, [1, 1, 0]), M.rotate(-30, [1, 1, 0])), M.mat4()));
 });
 
+test('perspectiveZO (WebGPU, z in [0, 1]) agrees with gl-matrix, maps near to 0 and far to 1', () => {
+  for (const [fovy, aspect, near, far] of [[45, 1, 0.1, 10], [60, 16 / 9, 0.5, 100], [30, 0.5, 2.3, 3.5]]) {
+    const P = gm4.perspectiveZO(gm4.create(), (fovy * Math.PI) / 180, aspect, near, far);
+    close(M.perspectiveZO(fovy, aspect, near, far), P, 'perspectiveZO');
+    const o = new Float32Array(16).fill(7);
+    assert.equal(M.perspectiveZO(fovy, aspect, near, far, o), o);
+    close(o, P, 'perspectiveZO into a used out');
+    const z = (d) => { const m = M.perspectiveZO(fovy, aspect, near, far); return (m[10] * -d + m[14]) / d; };
+    assert.ok(Math.abs(z(near)) < 1e-6 && Math.abs(z(far) - 1) < 1e-6, 'near -> 0, far -> 1');
+  }
+  close(M.perspectiveZO(45, 1, 0.1, Infinity), gm4.perspectiveZO(gm4.create(), Math.PI / 4, 1, 0.1, Infinity), 'perspectiveZO, far = ∞');
+});
+
 test('every export is tested here', () => {
   const tested = ['vec2', 'vec3', 'vec4', 'mat3', 'mat4', 'add', 'subtract', 'scale', 'negate', 'dot', 'cross',
     'length', 'normalize', 'radians', 'mult', 'transpose', 'det', 'inverse', 'normalMatrix', 'translate',
-    'scalem', 'rotate', 'rotateX', 'rotateY', 'rotateZ', 'lookAt', 'perspective', 'ortho', 'flatten', 'equal'];
+    'scalem', 'rotate', 'rotateX', 'rotateY', 'rotateZ', 'lookAt', 'perspective', 'perspectiveZO', 'ortho', 'flatten', 'equal'];
   assert.deepEqual(Object.keys(M).sort(), tested.sort());
 });
