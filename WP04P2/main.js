@@ -9,7 +9,7 @@ import { run } from '../common/page.js';
 
 async function main() {
   // The page: URL parameters, canvas and context, controls, window.scene (common/step.js)
-  const page = openStep({ exercise: 'WP04P2', params: ['level', 'depth', 'cull', 'cw'] });
+  const page = await openStep({ exercise: 'WP04P2', params: ['level', 'depth', 'cull', 'cw'] });
   const { gl, canvas, state, camera } = page;
   const shaders = await loadShaders('shader.vert', 'shader.frag');
 
@@ -52,7 +52,7 @@ async function main() {
     gl.clear(gl.COLOR_BUFFER_BIT | gl.DEPTH_BUFFER_BIT);
     gl.drawArrays(gl.TRIANGLES, 0, numVertices);
   }
-  page.start({ init, setLevel, draw });
+  await page.start({ init, setLevel, draw });
 }
 
 run(main);

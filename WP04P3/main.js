@@ -9,7 +9,7 @@ import { run } from '../common/page.js';
 
 async function main() {
   // The page: URL parameters, canvas and context, controls, window.scene (common/step.js)
-  const page = openStep({ exercise: 'WP04P3', shading: 'gouraud', rmse: 'diffuse',
+  const page = await openStep({ exercise: 'WP04P3', shading: 'gouraud', rmse: 'diffuse',
     params: ['height', 'near', 'far', 'level', 'orbit', 'angle', 'light', 'lx', 'ly', 'lz', 'kd', 'Le'] });
   const { gl, canvas, state, camera, scene } = page;
   const shaders = await loadShaders('shader.vert', 'shader.frag');
@@ -57,7 +57,7 @@ async function main() {
     gl.clear(gl.COLOR_BUFFER_BIT | gl.DEPTH_BUFFER_BIT);
     gl.drawArrays(gl.TRIANGLES, 0, numVertices);
   }
-  page.start({ init, setLevel, draw });
+  await page.start({ init, setLevel, draw });
 }
 
 run(main);

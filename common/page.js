@@ -24,10 +24,20 @@ export function notify(text) {
   return message('notice', text);
 }
 
-/** Shows an error (the page cannot go on), with an optional listing under it. */
+/**
+ * Shows an error (the page cannot go on), with an optional listing under it (`err.details`) and an
+ * optional way on (`err.link`: {href, text}).
+ */
 export function showError(err) {
   const text = err instanceof Error ? err.message : String(err);
-  return message('error', text, err && err.details);
+  const item = message('error', text, err && err.details);
+  if (err && err.link) {
+    const a = document.createElement('a');
+    a.href = err.link.href;
+    a.textContent = err.link.text;
+    item.append(' ', a);
+  }
+  return item;
 }
 
 /**
@@ -74,11 +84,12 @@ export function onContextLoss(canvas, restore) {
 
 /**
  * Creates the WebGL context asked for: 'webgl2' (falling back to WebGL 1, with a notice) or 'webgl'.
- * Antialiasing is off, so each pixel shows what its centre sees, as the exact reference renders it.
+ * Antialiasing is off unless asked for, so each pixel shows what its centre sees, as the exact
+ * reference renders it.
  * @returns {{gl: WebGLRenderingContext|WebGL2RenderingContext, api: 'webgl2'|'webgl'}}
  */
-export function createContext(canvas, api) {
-  const attributes = { antialias: false };
+export function createContext(canvas, api, { antialias = false } = {}) {
+  const attributes = { antialias };
   if (api === 'webgl2') {
     const gl2 = canvas.getContext('webgl2', attributes);
     if (gl2) return { gl: gl2, api: 'webgl2' };

@@ -22,8 +22,10 @@ import { MAX_LEVEL, chooseLevel } from './sphere.js';
 
 /** @type {Object<string, Parameter>} */
 export const PARAMETERS = {
-  api: { type: 'enum', options: { webgl2: 'WebGL 2', webgl: 'WebGL 1' }, default: 'webgl2' },
+  api: { type: 'enum', options: { webgl2: 'WebGL 2', webgl: 'WebGL 1', webgpu: 'WebGPU' }, default: 'webgl2' },
   size: { type: 'int', min: 16, max: 2048, default: 512 },
+  // multisampling (the slides' msaaCount): 1 (none, as the exact reference renders) or 4
+  msaa: { type: 'enum', options: { 1: 'none', 4: '4 samples a pixel' }, default: '1' },
   height: { type: 'int', min: 16, max: 2048, default: (v) => v.size },
   near: { type: 'number', min: 0.01, max: 100, default: 0.1 },
   far: { type: 'number', min: 0.02, max: 1000, default: 10 },

@@ -25,7 +25,7 @@ async function fetchText(url) {
 }
 
 /** The source with line numbers, the failing line marked with ">>". */
-function listing(source, badLine) {
+export function listing(source, badLine) {
   const lines = source.split('\n');
   const width = String(lines.length).length;
   return lines

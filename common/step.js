@@ -3,13 +3,17 @@
 // its WebGL context, the controls, the frame loop (the orbit's clock), the WebGL context's loss
 // and restoration, and window.scene, published after every frame (the page contract, DESIGN.md).
 //
-//   const page = openStep({ exercise: 'WP04P1', params: ['level'] });
+//   const page = await openStep({ exercise: 'WP04P1', params: ['level'] });
 //   const { gl, canvas, state, camera } = page;
 //   ... set-up ...
 //   page.start({ init, setLevel, draw });
+//
+// A step's WebGPU twin (webgpu.js) opens with { webgpu: true } and gets page.gpu (device, context,
+// format) instead of page.gl; a lost device is its lost context: init(gpu) runs again on a new one.
 import { AT, EYE_DISTANCE, FOVY, ORBIT_SPEED, UP } from './course.js';
 import { makeControls, showLevel, showValue } from './controls.js';
-import { createContext, notify, onContextLoss, writeQuery } from './page.js';
+import { requestGPU } from './gpu.js';
+import { createContext, notify, onContextLoss, showError, writeQuery } from './page.js';
 import { PARAMETERS, autoLevel, defaultOf, readParams, wrapAngle } from './params.js';
 
 /**
@@ -20,18 +24,22 @@ import { PARAMETERS, autoLevel, defaultOf, readParams, wrapAngle } from './param
  * @param {'normals'|'gouraud'|'phong'} [step.shading] as window.scene says it (default 'normals')
  * @param {'diffuse'|'gouraud'|'phong'} [step.rmse] which shading errors chooseLevel weighs
  *   (common/sphere.js SHADING_RMSE); none: the silhouette alone sets the level
- * @returns {{gl: WebGLRenderingContext|WebGL2RenderingContext, api: string, canvas: HTMLCanvasElement,
- *   state: Object, camera: Object, scene: Object, start: Function}}
+ * @param {boolean} [step.webgpu] the step's WebGPU script: a device instead of a WebGL context
+ * @returns {Promise<{gl: WebGLRenderingContext|WebGL2RenderingContext|null, gpu: object|null,
+ *   api: string, canvas: HTMLCanvasElement, state: Object, camera: Object, scene: Object, start: Function}>}
  */
-export function openStep({ exercise, params, shading = 'normals', rmse = null }) {
-  const names = ['api', 'size', ...params];
+export async function openStep({ exercise, params, shading = 'normals', rmse = null, webgpu = false }) {
+  const names = ['api', 'size', 'msaa', ...params];
   const { values: state, notices } = readParams(names, location.search, { shading: rmse });
   for (const text of notices) notify(text);
 
   const canvas = document.getElementById('gl-canvas');
   canvas.width = state.size;
   canvas.height = state.height ?? state.size;
-  const { gl, api } = createContext(canvas, state.api);
+  let gl = null, gpu = null, api = 'webgpu';
+  if (webgpu) gpu = await requestGPU(canvas);
+  if (gpu) reportGPUErrors(gpu.device);
+  else ({ gl, api } = createContext(canvas, state.api === 'webgpu' ? 'webgl2' : state.api, { antialias: Number(state.msaa) > 1 }));
 
   // The camera looks at the centre from e = (r sin α, 0, r cos α); a step that orbits moves e
   const camera = { eye: [0, 0, EYE_DISTANCE], at: [...AT], up: [...UP], fovy: FOVY,
@@ -41,11 +49,12 @@ export function openStep({ exercise, params, shading = 'normals', rmse = null })
   /**
    * Hands the step's GL code to the machinery and draws the first frame.
    * @param {object} lesson
-   * @param {() => void} lesson.init makes the program, buffer and GL state (again after a lost context)
+   * @param {(gpu: object) => void|Promise<void>} lesson.init makes the program or pipelines, buffers and state
+   *   (again after a lost context or device; WebGPU: on the new device, `gpu`)
    * @param {(level: number) => number} lesson.setLevel fills the one buffer; returns the vertex count
    * @param {() => void} lesson.draw draws one frame from `state`
    */
-  function start({ init, setLevel, draw }) {
+  async function start({ init, setLevel, draw }) {
     const autoNote = rmse ? 'the least level that looks round at %d px and shades within 1/255'
       : 'the least level that looks round at %d px';
     const usual = autoLevel(state, { shading: rmse });
@@ -90,20 +99,53 @@ export function openStep({ exercise, params, shading = 'normals', rmse = null })
       }
     }
     function frame() {
-      if (gl.isContextLost()) return;
+      if (gl ? gl.isContextLost() : lost) return;
       describe(scene, state);
       draw();
       scene.frame++;
       window.scene = scene;
     }
 
-    init();
+    let lost = false;
+    const restore = async (fresh) => {
+      await init(fresh);
+      lost = false;
+      applyLevel();
+      changed();
+    };
+    await init(gpu);
     applyLevel();
-    onContextLoss(canvas, () => { init(); applyLevel(); changed(); });
+    if (gl) onContextLoss(canvas, restore);
+    else watchDevice(gpu.device, canvas, () => { lost = true; }, restore);
     changed();
   }
 
-  return { gl, api, canvas, state, camera, scene, start };
+  return { gl, gpu, api, canvas, state, camera, scene, start };
+}
+
+/**
+ * A lost WebGPU device (the GPU was reset, or the page destroyed it) is WebGPU's lost context:
+ * say so, ask the adapter for a new device, and hand it to `restore`.
+ */
+function watchDevice(device, canvas, onLost, restore) {
+  device.lost.then(async (info) => {
+    onLost();
+    const notice = notify(`This page lost its WebGPU device (${info.message || info.reason || 'no reason given'}); ` +
+      'it is asking for a new one.');
+    const gpu = await requestGPU(canvas);
+    reportGPUErrors(gpu.device);
+    watchDevice(gpu.device, canvas, onLost, restore);
+    await restore(gpu);
+    notice.remove();
+  });
+}
+
+/** WebGPU validation errors go to the console as warnings only: show them, as errors. */
+function reportGPUErrors(device) {
+  device.addEventListener('uncapturederror', (event) => {
+    console.error(`WebGPU: ${event.error.message}`);
+    showError(new Error(`WebGPU error: ${event.error.message}`));
+  });
 }
 
 /** The parameters whose value follows `name`'s choice (the light's xyz follows its kind). */
