@@ -1,4 +1,6 @@
-// The exact reference renderer (tools/reference.js), checked against values worked out by hand.
+// The exact reference renderer (tools/reference/render.js) checked against values worked out by
+// hand; its error measures (tools/reference/measure.js), its PNG files (tools/reference/png.js)
+// and its command (tools/reference.js).
 // The camera of most tests: eye (0, 0, 3) looking at the unit sphere's centre, fovy 45°, so
 // tan(fovy/2) = tan 22.5° = √2 − 1 ≈ 0.414214, and r = (1, 0, 0), u = (0, 1, 0), f = (0, 0, −1).
 import { test } from 'node:test';
@@ -9,9 +11,9 @@ import { tmpdir } from 'node:os';
 import path from 'node:path';
 import { fileURLToPath, pathToFileURL } from 'node:url';
 import { PNG } from 'pngjs';
-import {
-  BACKGROUND, shadePoint, renderReference, toRGBA8, writePNG, compareToReference, silhouetteErrorPx,
-} from '../../tools/reference.js';
+import { BACKGROUND, shadePoint, renderReference } from '../../tools/reference/render.js';
+import { compareToReference, silhouetteErrorPx } from '../../tools/reference/measure.js';
+import { toRGBA8, writePNG } from '../../tools/reference/png.js';
 
 const TOOL = fileURLToPath(new URL('../../tools/reference.js', import.meta.url));
 const camera = { eye: [0, 0, 3], at: [0, 0, 0], up: [0, 1, 0], fovy: 45, aspect: 1, near: 0.1, far: 100 };
