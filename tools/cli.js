@@ -28,12 +28,13 @@ export function parseOptions(argv, options) {
 
 /**
  * A whole number from `min` to `max`, from an option's text.
+ * @param {string} text @param {string} label the option as the user wrote it, e.g. "--width"
  * @throws {UsageError} naming the option when it is not one
  */
-export function wholeNumber(text, name, min, max) {
+export function wholeNumber(text, label, min, max) {
   const n = Number(text);
   if (!Number.isInteger(n) || n < min || n > max) {
-    throw new UsageError(`--${name} must be a whole number from ${min} to ${max}, not ${JSON.stringify(text)}`);
+    throw new UsageError(`${label} must be a whole number from ${min} to ${max}, not ${JSON.stringify(text)}`);
   }
   return n;
 }

@@ -36,7 +36,7 @@ function readOptions(argv) {
   if (!opt.scene) throw new UsageError('--scene is required');
   if (!opt.out && !opt.compare) throw new UsageError('give --out, --compare or both');
   for (const name of ['width', 'height']) {
-    if (opt[name] !== undefined) opt[name] = wholeNumber(opt[name], name, 1, 16384);
+    if (opt[name] !== undefined) opt[name] = wholeNumber(opt[name], `--${name}`, 1, 16384);
   }
   return opt;
 }
