@@ -9,6 +9,19 @@
 //   (mult(V, M, V) is fine). With `out` given, nothing here allocates, so a draw loop can
 //   call lookAt, mult and normalMatrix every frame without making garbage.
 // - Mistakes throw an Error that says what was wrong (never a string, never NaNs).
+//
+// What is here, group by group in the file's order (MV.js's names; * marks what the pages use):
+//   making vectors and matrices   vec2, vec3, vec4, mat3*, mat4*
+//   component by component        add, subtract, scale (s·v), negate, dot, cross, length,
+//                                 normalize, radians
+//   products                      mult (matrix·matrix, matrix·vector)
+//   transpose and inverse         transpose, det, inverse, normalMatrix* (N = (M^T)^-1)
+//   transformations               translate, scalem, rotate, rotateX, rotateY, rotateZ
+//   camera and projection         lookAt*, perspective*, ortho
+//   for WebGL                     flatten, equal
+// The exercise pages need five of these. The rest is here because this file stands in for MV.js
+// in the students' own hand-ins, which build model matrices (translate, rotate, scalem, mult) the
+// book's way. tests/unit/math.test.js checks every export against gl-matrix.
 
 const F32 = Float32Array;
 
@@ -24,7 +37,9 @@ function target(out, n, who) {
 }
 
 // ---------------------------------------------------------------------------------------------
-// Constructors (these always allocate: they are for set-up, not for the draw loop)
+// Making vectors and matrices: vec2, vec3, vec4, mat3, mat4
+// MV.js's constructors, with its argument conventions (vec4's w = 1, matrices written row by row).
+// These always allocate: they are for set-up, not for the draw loop.
 
 // The arguments of vec2/3/4 as MV.js reads them: numbers and array-likes, spread in order.
 function components(n, args, who, lastDefault) {
@@ -117,7 +132,8 @@ export function mat3(...args) { return matrix(3, args, 'mat3'); }
 export function mat4(...args) { return matrix(4, args, 'mat4'); }
 
 // ---------------------------------------------------------------------------------------------
-// Component by component
+// Component by component: add, subtract, scale, negate, dot, cross, length, normalize, radians
+// Vector algebra; add, subtract, scale and negate work on matrices too.
 
 function sameLength(a, b, who) {
   if (a.length !== b.length) throw new Error(`${who}: sizes differ (${a.length} and ${b.length})`);
@@ -233,7 +249,8 @@ export function normalize(v, out) {
 export function radians(degrees) { return (degrees * Math.PI) / 180; }
 
 // ---------------------------------------------------------------------------------------------
-// Products
+// Products: mult
+// MV.js's one product for every pair: mat4·mat4 (V M), mat4·vec4 (P V p), and the mat3 cases.
 
 // mat4 · mat4. a is read whole into locals first and each column of b just before its column
 // of the result is written, so out may be a, b, or both.
@@ -305,7 +322,8 @@ export function mult(a, b, out) {
 }
 
 // ---------------------------------------------------------------------------------------------
-// Transpose, determinant, inverse
+// Transpose and inverse: transpose, det, inverse, normalMatrix
+// normalMatrix is what the lighting steps need: N = (M^T)^-1 turns normals into view space.
 
 function order(m, who) {
   if (m.length === 16) return 4;
@@ -429,7 +447,8 @@ export function normalMatrix(m, out) {
 }
 
 // ---------------------------------------------------------------------------------------------
-// Transformations (all mat4)
+// Transformations: translate, scalem, rotate, rotateX, rotateY, rotateZ
+// The model matrix M's building blocks, all mat4, angles in degrees as in MV.js.
 
 /**
  * The translation by (x, y, z): m[12], m[13], m[14] = x, y, z.
@@ -513,7 +532,8 @@ export function rotateY(angle, out) { return axisRotation(angle, 2, 0, out, 'rot
 export function rotateZ(angle, out) { return axisRotation(angle, 0, 1, out, 'rotateZ'); }
 
 // ---------------------------------------------------------------------------------------------
-// Camera and projection
+// Camera and projection: lookAt, perspective, ortho
+// The view matrix V (the camera) and the projection P of gl_Position = P * V * M * p.
 
 /**
  * The view matrix V of a camera at `eye` looking at `at`, with `up` roughly up (OpenGL: the
@@ -617,7 +637,8 @@ export function ortho(left, right, bottom, top, near, far, out) {
 }
 
 // ---------------------------------------------------------------------------------------------
-// For WebGL
+// For WebGL: flatten, equal
+// flatten hands data to gl.bufferData and gl.uniform*; equal compares with a tolerance.
 
 /**
  * One Float32Array for gl.bufferData or gl.uniform*: a Float32Array is returned AS IT IS (no

@@ -2,13 +2,24 @@
 // npm run bench: speed against accuracy, method by method and level by level, in one Chromium run.
 // Writes out/bench/bench.json and .csv; a full run also publishes lab/results.json and the chart
 // lab/speed-accuracy.png that the lab page and the README show.
+//
+// It drives lab/bench.html through its window.bench interface (documented in lab/bench-page.js),
+// and the exercise pages themselves for the edge cases. The steps, in the order main() runs them:
+//   measureFrames        ms per frame and error against the reference, every method and level
+//   measureLevelChanges  ms per level change (ours, classic, bound) and the indexed layout
+//   measureStability     how the highlight moves over an orbit, Gouraud against Phong shading
+//   measureEdgeCases     where each method breaks, on WP04P4 and WP04P5
+//   writeResults, publishResults
 import { mkdirSync, writeFileSync, copyFileSync } from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
-import { renderReference, compareToReference, silhouetteErrorPx } from './reference.js';
+import { renderReference } from './reference/render.js';
+import { compareToReference, silhouetteErrorPx } from './reference/measure.js';
+import { toRGBA8 } from './reference/png.js';
 import { PNG } from 'pngjs';
 import { canvasScreenshot, launchChromium, startServer } from './browser.js';
+import { UsageError, parseOptions } from './cli.js';
 import { chooseLevel } from '../common/sphere.js';
 import { EDGE_CASES, STEP } from './edge-cases.js';
 
@@ -22,26 +33,20 @@ the bound baselines, the indexed layout, and highlight stability over an orbit.
   --no-publish  do not update lab/results.json and lab/speed-accuracy.png (a full run does)
 exit codes: 0 done, 1 it failed (the message says why), 2 bad usage`;
 
-const args = process.argv.slice(2);
-if (args.includes('--help') || args.includes('-h')) {
-  console.log(HELP);
-  process.exit(0);
-}
-for (let k = 0; k < args.length; k++) {
-  if (args[k] === '--out') { k++; continue; }
-  if (!['--quick', '--no-publish'].includes(args[k])) {
-    console.error(`bench: unknown option ${args[k]}\n\n${HELP}`);
-    process.exit(2);
-  }
-}
-const quick = args.includes('--quick');
-const outDir = path.resolve(args.includes('--out') ? args[args.indexOf('--out') + 1] : path.join(root, 'out/bench'));
-const publish = !quick && !args.includes('--no-publish');
+const OPTIONS = { quick: { type: 'boolean' }, out: { type: 'string' }, 'no-publish': { type: 'boolean' } };
 
-const plan = quick
-  ? { sizes: [128], maxLevel: 5, frames: 5, warmup: 2, repeats: 3, orbitSize: 128, angles: 12, changeLevels: 6 }
-  : { sizes: [256, 512], maxLevel: 8, frames: 15, warmup: 3, repeats: 5, orbitSize: 256, angles: 90, changeLevels: 8 };
+/** How much to measure: the quick run is for tests and a first look, the full one is published. */
+const PLANS = {
+  quick: { sizes: [128], maxLevel: 5, frames: 5, warmup: 2, repeats: 3, orbitSize: 128, angles: 12, changeLevels: 6 },
+  full: { sizes: [256, 512], maxLevel: 8, frames: 15, warmup: 3, repeats: 5, orbitSize: 256, angles: 90, changeLevels: 8 },
+};
 const METHODS = ['flat', 'gouraud', 'phong'];
+/** The stability run's material: its highlight never clamps (kd + ks + ka La = 0.94). */
+const STABLE = { kd: 0.3, ka: 0.3, ks: 0.6, s: 40 };
+
+// ---------------------------------------------------------------------------------------------
+// Small helpers: statistics, progress, pictures
+// ---------------------------------------------------------------------------------------------
 
 const median = (xs) => {
   const s = [...xs].sort((a, b) => a - b);
@@ -53,6 +58,7 @@ const quantile = (xs, q) => {
   return s[Math.min(s.length - 1, Math.max(0, Math.round(q * (s.length - 1))))];
 };
 const round = (x, d = 4) => (x === null || x === undefined ? x : Number(x.toFixed(d)));
+const rms = (xs) => Math.sqrt(xs.reduce((s, x) => s + x * x, 0) / xs.length);
 
 let lastLine = '';
 let lastPrinted = 0;
@@ -66,6 +72,7 @@ function progress(text) {
   }
 }
 
+/** window.bench.capture()'s base64 RGBA as an image for the error measures. */
 function decode(base64, width, height) {
   return { width, height, data: Buffer.from(base64, 'base64') };
 }
@@ -95,12 +102,8 @@ function highlight(image, mask) {
   }
   return { peak, x: sx / n, y: sy / n };
 }
-function referenceImage(ref) {
-  const data = new Uint8Array(ref.width * ref.height * 4);
-  for (let p = 0; p < ref.width * ref.height; p++) for (let c = 0; c < 3; c++) data[4 * p + c] = Math.round(ref.rgb[3 * p + c] * 255);
-  return { width: ref.width, height: ref.height, data };
-}
 
+/** Opens lab/bench.html with a size × size canvas and waits for window.bench. */
 async function openBench(browser, base, size) {
   const page = await browser.newPage({ viewport: { width: size + 40, height: size + 200 }, deviceScaleFactor: 1 });
   const problems = [];
@@ -113,162 +116,252 @@ async function openBench(browser, base, size) {
   return page;
 }
 
-async function main() {
+// ---------------------------------------------------------------------------------------------
+// The measurements
+// ---------------------------------------------------------------------------------------------
+
+/**
+ * One method on the mesh the page holds: ms per frame (median and quartiles) and the error
+ * against the exact reference `ref` of `refScene`.
+ */
+async function measureMethod(page, plan, { method, level, size, ref, refScene }) {
+  progress(`${size}px level ${level} ${method}`);
+  const times = await page.evaluate(([m, f, w]) => { window.bench.setMethod(m); return window.bench.frameTimes(f, w); }, [method, plan.frames, plan.warmup]);
+  const img = decode(await page.evaluate(() => window.bench.capture()), size, size);
+  const stats = compareToReference(img, ref);
+  return {
+    method, level, size, msMedian: round(median(times)), msP25: round(quantile(times, 0.25)), msP75: round(quantile(times, 0.75)),
+    rmse: round(stats.rmse, 6), maxError: round(stats.maxError, 6), silhouetteMismatch: stats.silhouetteMismatch,
+    silhouetteErrorPx: round(silhouetteErrorPx(img, ref, refScene), 3), spherePixels: stats.spherePixels,
+  };
+}
+
+/** Every method at every level, then the impostor, on one canvas size: the rows of results.frames. */
+async function measureFrames(page, plan, size) {
+  const refScene = await page.evaluate(() => window.bench.scene());
+  const ref = renderReference(refScene, size, size);
+  const rows = [];
+  for (let level = 0; level <= plan.maxLevel; level++) {
+    const mesh = await page.evaluate(([l]) => window.bench.setMesh(l), [level]);
+    for (const method of METHODS) {
+      rows.push({ ...(await measureMethod(page, plan, { method, level, size, ref, refScene })), vertices: mesh.vertices, bytes: mesh.bytes });
+    }
+  }
+  rows.push({ ...(await measureMethod(page, plan, { method: 'impostor', level: null, size, ref, refScene })), vertices: 6, bytes: 48 });
+  return rows;
+}
+
+/** The level each exercise picks for a canvas; flat shading has no page, so the silhouette alone. */
+function chosenLevels(size) {
+  return { flat: chooseLevel(size, 45, 3).level, gouraud: chooseLevel(size, 45, 3, { shading: 'gouraud' }).level,
+    phong: chooseLevel(size, 45, 3, { shading: 'phong' }).level };
+}
+
+/**
+ * Level changes (ours against the classic and the bound baselines) and the indexed layout against
+ * drawArrays (time to change, time per frame, the same pixels), level by level.
+ * @returns {Promise<{levelChange: object[], indexed: object[]}>}
+ */
+async function measureLevelChanges(page, plan) {
+  const levelChange = [], indexed = [];
+  for (let level = 0; level <= plan.changeLevels; level++) {
+    progress(`level change ${level}`);
+    const t = await page.evaluate(([l, r]) => window.bench.levelChange(l, r), [level, plan.repeats]);
+    const ours = median(t.ours), classic = median(t.classic), bound = median(t.bound);
+    levelChange.push({ level, vertices: 12 * 4 ** level, bytes: 36 * 4 ** level * 4,
+      oursMs: round(ours), classicMs: round(classic), boundMs: round(bound),
+      classicOverOurs: round(classic / ours, 2), oursOverBound: round(ours / bound, 2) });
+
+    progress(`indexed ${level}`);
+    await page.evaluate(([l]) => window.bench.setMesh(l, 'arrays'), [level]);
+    const arraysTimes = await page.evaluate(([f, w]) => { window.bench.setMethod('phong'); return window.bench.frameTimes(f, w); }, [plan.frames, plan.warmup]);
+    const arraysImg = await page.evaluate(() => window.bench.capture());
+    const change = await page.evaluate(([l, r]) => window.bench.indexedChange(l, r), [level, plan.repeats]);
+    const info = await page.evaluate(([l]) => window.bench.setMesh(l, 'indexed'), [level]);
+    const indexedTimes = await page.evaluate(([f, w]) => window.bench.frameTimes(f, w), [plan.frames, plan.warmup]);
+    const indexedImg = await page.evaluate(() => window.bench.capture());
+    indexed.push({ level, vertices: info.vertices, indexBits: info.indexBits, bytes: info.bytes, bytesArrays: 36 * 4 ** level * 4,
+      changeMs: round(median(change)), changeMsArrays: round(ours), frameMs: round(median(indexedTimes)),
+      frameMsArrays: round(median(arraysTimes)), pixelsEqual: indexedImg === arraysImg });
+    await page.evaluate(([l]) => window.bench.setMesh(l, 'arrays'), [level]);
+  }
+  return { levelChange, indexed };
+}
+
+/**
+ * Temporal stability over a full orbit, with the STABLE material, counted at the angles where the
+ * exact highlight shows: how far the highlight's peak and position stray from the exact ones, and
+ * the largest jump of the peak's error from one angle to the next. The rows of results.stability.
+ */
+async function measureStability(browser, base, plan) {
+  const size = plan.orbitSize;
+  const page = await openBench(browser, base, size);
+  const chosen = chooseLevel(size, 45, 3).level;
+  await page.evaluate(([m]) => window.bench.setMaterial(m), [STABLE]);
+  const refs = [];
+  for (let k = 0; k < plan.angles; k++) {
+    await page.evaluate(([x]) => window.bench.setAngle(x), [(2 * Math.PI * k) / plan.angles]);
+    const ref = renderReference(await page.evaluate(() => window.bench.scene()), size, size);
+    const mask = interiorMask(ref);
+    const h = highlight({ width: ref.width, data: toRGBA8(ref) }, mask);
+    refs.push({ mask, h, shows: h.peak > STABLE.kd + STABLE.ka * 0.2 + 0.05 });
+    progress(`orbit reference ${k + 1}/${plan.angles}`);
+  }
+  const rows = [];
+  for (const level of [...new Set([3, chosen])]) {
+    await page.evaluate(([l]) => window.bench.setMesh(l), [level]);
+    for (const method of ['gouraud', 'phong']) {
+      await page.evaluate(([m]) => window.bench.setMethod(m), [method]);
+      const peaks = [], pos = [], jumps = [];
+      let prev = null;
+      for (let k = 0; k < plan.angles; k++) {
+        progress(`orbit ${method} level ${level} ${k + 1}/${plan.angles}`);
+        if (!refs[k].shows) { prev = null; continue; }
+        await page.evaluate(([x]) => window.bench.setAngle(x), [(2 * Math.PI * k) / plan.angles]);
+        const img = decode(await page.evaluate(() => window.bench.capture()), size, size);
+        const h = highlight(img, refs[k].mask);
+        const e = refs[k].h;
+        peaks.push(h.peak - e.peak);
+        pos.push(Math.hypot(h.x - e.x, h.y - e.y));
+        if (prev) jumps.push(Math.abs((h.peak - prev.h.peak) - (e.peak - prev.e.peak)));
+        prev = { h, e };
+      }
+      rows.push({ method, level, size, angles: plan.angles, anglesWithHighlight: peaks.length,
+        material: STABLE, peakErrorRms: round(rms(peaks), 5), peakErrorMax: round(Math.max(...peaks.map(Math.abs)), 5),
+        positionErrorRmsPx: round(rms(pos), 3), positionErrorMaxPx: round(Math.max(...pos), 3),
+        peakJumpMax: round(Math.max(0, ...jumps), 5) });
+    }
+  }
+  await page.close();
+  return rows;
+}
+
+/** Where each method breaks: every edge case on WP04P4 and WP04P5. The rows of results.edgeCases. */
+async function measureEdgeCases(browser, base) {
+  const page = await browser.newPage({ viewport: { width: 900, height: 900 }, deviceScaleFactor: 1 });
+  const rows = [];
+  for (const c of EDGE_CASES) {
+    for (const step of ['WP04P4', 'WP04P5']) {
+      progress(`edge case ${c.name} ${step}`);
+      const query = new URLSearchParams({ orbit: 0, angle: 0, size: 128, ...c.params });
+      await page.goto(`${base}/${step}/?${query}`);
+      await page.waitForFunction(() => window.scene && window.scene.frame >= 1);
+      const scene = await page.evaluate(() => window.scene);
+      const img = PNG.sync.read(await canvasScreenshot(page));
+      const stats = compareToReference(img, renderReference(scene, img.width, img.height));
+      const why = [stats.nanLike && 'NaN-black pixels', stats.saturated && 'saturates', stats.rmse > 2 * STEP && 'error over 2/255'].filter(Boolean);
+      rows.push({ case: c.name, method: step === 'WP04P4' ? 'gouraud' : 'phong', level: scene.level,
+        rmse: round(stats.rmse, 6), maxError: round(stats.maxError, 6), silhouetteMismatch: stats.silhouetteMismatch,
+        nanLike: stats.nanLike, saturated: stats.saturated, fails: why.join(', ') });
+    }
+  }
+  await page.close();
+  return rows;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Results
+// ---------------------------------------------------------------------------------------------
+
+/** Writes bench.json and bench.csv (the frames) into outDir; returns bench.json's path. */
+function writeResults(results, outDir) {
+  mkdirSync(outDir, { recursive: true });
+  const jsonPath = path.join(outDir, 'bench.json');
+  writeFileSync(jsonPath, JSON.stringify(results, null, 1));
+  const cols = ['method', 'level', 'size', 'vertices', 'bytes', 'msMedian', 'msP25', 'msP75', 'rmse', 'maxError', 'silhouetteMismatch', 'silhouetteErrorPx'];
+  const csv = [`# ${results.meta.machine}; ${results.meta.browser}; ${results.meta.renderer}`, cols.join(',')]
+    .concat(results.frames.map((r) => cols.map((c) => r[c] ?? '').join(','))).join('\n') + '\n';
+  writeFileSync(path.join(outDir, 'bench.csv'), csv);
+  return jsonPath;
+}
+
+/** Copies bench.json to lab/results.json and screenshots the lab page's chart to lab/speed-accuracy.png. */
+async function publishResults(browser, base, jsonPath) {
+  copyFileSync(jsonPath, path.join(root, 'lab/results.json'));
+  progress('chart PNG');
+  const chartPage = await browser.newPage({ viewport: { width: 900, height: 1400 }, deviceScaleFactor: 1 });
+  await chartPage.goto(`${base}/lab/`);
+  await chartPage.waitForFunction(() => window.labReady);
+  await chartPage.locator('#speed-accuracy').screenshot({ path: path.join(root, 'lab/speed-accuracy.png') });
+  await chartPage.close();
+}
+
+// ---------------------------------------------------------------------------------------------
+// The command
+// ---------------------------------------------------------------------------------------------
+
+/** The options, checked: { quick, outDir, publish }, or { help: true }. Throws a UsageError. */
+function readOptions(argv) {
+  const opt = parseOptions(argv, OPTIONS);
+  if (opt.help) return opt;
+  const quick = !!opt.quick;
+  return { quick, outDir: path.resolve(opt.out ?? path.join(root, 'out/bench')), publish: !quick && !opt['no-publish'] };
+}
+
+/** The whole bench, every measurement in one browser; returns the results as bench.json holds them. */
+async function runBench(browser, base, { plan, quick, started }) {
+  const results = { meta: {}, chosen: {}, frames: [], levelChange: [], indexed: [], stability: [], edgeCases: [] };
+  for (const size of plan.sizes) {
+    const page = await openBench(browser, base, size);
+    if (!results.meta.renderer) {
+      Object.assign(results.meta, await page.evaluate(() => ({ renderer: window.bench.renderer, api: window.bench.api })));
+    }
+    results.chosen[size] = chosenLevels(size);
+    results.frames.push(...(await measureFrames(page, plan, size)));
+    if (size === plan.sizes[0]) { // level changes and the indexed layout, on the smaller canvas
+      const { levelChange, indexed } = await measureLevelChanges(page, plan);
+      results.levelChange.push(...levelChange);
+      results.indexed.push(...indexed);
+    }
+    const glError = await page.evaluate(() => window.bench.glError());
+    if (glError) throw new Error(`gl.getError() = 0x${glError.toString(16)} during the bench`);
+    await page.close();
+  }
+  results.stability = await measureStability(browser, base, plan);
+  results.edgeCases = await measureEdgeCases(browser, base);
+  results.meta = {
+    ...results.meta, date: new Date().toISOString(), quick, seconds: Math.round((Date.now() - started) / 1000),
+    machine: `${os.cpus().length} × ${os.cpus()[0]?.model || 'cpu'}, ${Math.round(os.totalmem() / 2 ** 30)} GiB, ${os.platform()} ${os.release()}`,
+    browser: `Chromium ${browser.version()}`, node: process.version,
+    view: 'eye (0,0,3) orbiting, fovy 45°, directional light (0,0,-1,0), kd 0.8, ks 0.5, s 40, Le 1, La 0.2, Phong',
+  };
+  return results;
+}
+
+/** Runs the command; returns its exit code. */
+async function main(argv) {
+  let opt;
+  try {
+    opt = readOptions(argv);
+  } catch (err) {
+    if (!(err instanceof UsageError)) throw err;
+    console.error(`bench: ${err.message}\n\n${HELP}`);
+    return 2;
+  }
+  if (opt.help) {
+    console.log(HELP);
+    return 0;
+  }
+  const { quick, outDir, publish } = opt;
   const started = Date.now();
   const server = await startServer(root);
-  const browser = await launchChromium();
-  const results = { meta: {}, chosen: {}, frames: [], levelChange: [], indexed: [], stability: [], edgeCases: [] };
+  let browser = null;
   try {
-    for (const size of plan.sizes) {
-      const page = await openBench(browser, server.url, size);
-      if (!results.meta.renderer) {
-        Object.assign(results.meta, await page.evaluate(() => ({ renderer: window.bench.renderer, api: window.bench.api })));
-      }
-      // the level each exercise picks for this canvas; flat shading has no page, so the silhouette alone
-      results.chosen[size] = { flat: chooseLevel(size, 45, 3).level, gouraud: chooseLevel(size, 45, 3, { shading: 'gouraud' }).level,
-        phong: chooseLevel(size, 45, 3, { shading: 'phong' }).level };
-      const refScene = await page.evaluate(() => window.bench.scene());
-      const ref = renderReference(refScene, size, size);
-      const measure = async (method, level) => {
-        progress(`${size}px level ${level} ${method}`);
-        const times = await page.evaluate(([m, f, w]) => { window.bench.setMethod(m); return window.bench.frameTimes(f, w); }, [method, plan.frames, plan.warmup]);
-        const img = decode(await page.evaluate(() => window.bench.capture()), size, size);
-        const stats = compareToReference(img, ref);
-        return {
-          method, level, size, msMedian: round(median(times)), msP25: round(quantile(times, 0.25)), msP75: round(quantile(times, 0.75)),
-          rmse: round(stats.rmse, 6), maxError: round(stats.maxError, 6), silhouetteMismatch: stats.silhouetteMismatch,
-          silhouetteErrorPx: round(silhouetteErrorPx(img, ref, refScene), 3), spherePixels: stats.spherePixels,
-        };
-      };
-      for (let level = 0; level <= plan.maxLevel; level++) {
-        const mesh = await page.evaluate(([l]) => window.bench.setMesh(l), [level]);
-        for (const method of METHODS) results.frames.push({ ...(await measure(method, level)), vertices: mesh.vertices, bytes: mesh.bytes });
-      }
-      results.frames.push({ ...(await measure('impostor', null)), vertices: 6, bytes: 48 });
-
-      if (size === plan.sizes[0]) {
-        // level changes and the indexed layout, on the smaller canvas
-        for (let level = 0; level <= plan.changeLevels; level++) {
-          progress(`level change ${level}`);
-          const t = await page.evaluate(([l, r]) => window.bench.levelChange(l, r), [level, plan.repeats]);
-          const ours = median(t.ours), classic = median(t.classic), bound = median(t.bound);
-          results.levelChange.push({ level, vertices: 12 * 4 ** level, bytes: 36 * 4 ** level * 4,
-            oursMs: round(ours), classicMs: round(classic), boundMs: round(bound),
-            classicOverOurs: round(classic / ours, 2), oursOverBound: round(ours / bound, 2) });
-
-          progress(`indexed ${level}`);
-          await page.evaluate(([l]) => window.bench.setMesh(l, 'arrays'), [level]);
-          const arraysTimes = await page.evaluate(([f, w]) => { window.bench.setMethod('phong'); return window.bench.frameTimes(f, w); }, [plan.frames, plan.warmup]);
-          const arraysImg = await page.evaluate(() => window.bench.capture());
-          const change = await page.evaluate(([l, r]) => window.bench.indexedChange(l, r), [level, plan.repeats]);
-          const info = await page.evaluate(([l]) => window.bench.setMesh(l, 'indexed'), [level]);
-          const indexedTimes = await page.evaluate(([f, w]) => window.bench.frameTimes(f, w), [plan.frames, plan.warmup]);
-          const indexedImg = await page.evaluate(() => window.bench.capture());
-          results.indexed.push({ level, vertices: info.vertices, indexBits: info.indexBits, bytes: info.bytes, bytesArrays: 36 * 4 ** level * 4,
-            changeMs: round(median(change)), changeMsArrays: round(ours), frameMs: round(median(indexedTimes)),
-            frameMsArrays: round(median(arraysTimes)), pixelsEqual: indexedImg === arraysImg });
-          await page.evaluate(([l]) => window.bench.setMesh(l, 'arrays'), [level]);
-        }
-      }
-      const glError = await page.evaluate(() => window.bench.glError());
-      if (glError) throw new Error(`gl.getError() = 0x${glError.toString(16)} during the bench`);
-      await page.close();
-    }
-
-    // Temporal stability over a full orbit, with a material whose highlight never clamps
-    // (kd + ks + ka La = 0.94), counted at the angles where the exact highlight shows
-    const size = plan.orbitSize;
-    const page = await openBench(browser, server.url, size);
-    const chosen = chooseLevel(size, 45, 3).level;
-    const STABLE = { kd: 0.3, ka: 0.3, ks: 0.6, s: 40 };
-    await page.evaluate(([m]) => window.bench.setMaterial(m), [STABLE]);
-    const refs = [];
-    for (let k = 0; k < plan.angles; k++) {
-      await page.evaluate(([x]) => window.bench.setAngle(x), [(2 * Math.PI * k) / plan.angles]);
-      const ref = renderReference(await page.evaluate(() => window.bench.scene()), size, size);
-      const mask = interiorMask(ref);
-      const h = highlight(referenceImage(ref), mask);
-      refs.push({ mask, h, shows: h.peak > STABLE.kd + STABLE.ka * 0.2 + 0.05 });
-      progress(`orbit reference ${k + 1}/${plan.angles}`);
-    }
-    for (const level of [...new Set([3, chosen])]) {
-      await page.evaluate(([l]) => window.bench.setMesh(l), [level]);
-      for (const method of ['gouraud', 'phong']) {
-        await page.evaluate(([m]) => window.bench.setMethod(m), [method]);
-        const peaks = [], pos = [], jumps = [];
-        let prev = null;
-        for (let k = 0; k < plan.angles; k++) {
-          progress(`orbit ${method} level ${level} ${k + 1}/${plan.angles}`);
-          if (!refs[k].shows) { prev = null; continue; }
-          await page.evaluate(([x]) => window.bench.setAngle(x), [(2 * Math.PI * k) / plan.angles]);
-          const img = decode(await page.evaluate(() => window.bench.capture()), size, size);
-          const h = highlight(img, refs[k].mask);
-          const e = refs[k].h;
-          peaks.push(h.peak - e.peak);
-          pos.push(Math.hypot(h.x - e.x, h.y - e.y));
-          if (prev) jumps.push(Math.abs((h.peak - prev.h.peak) - (e.peak - prev.e.peak)));
-          prev = { h, e };
-        }
-        const rms = (xs) => Math.sqrt(xs.reduce((s, x) => s + x * x, 0) / xs.length);
-        results.stability.push({ method, level, size, angles: plan.angles, anglesWithHighlight: peaks.length,
-          material: STABLE, peakErrorRms: round(rms(peaks), 5), peakErrorMax: round(Math.max(...peaks.map(Math.abs)), 5),
-          positionErrorRmsPx: round(rms(pos), 3), positionErrorMaxPx: round(Math.max(...pos), 3),
-          peakJumpMax: round(Math.max(0, ...jumps), 5) });
-      }
-    }
-    await page.close();
-
-    // Where each method breaks: the edge cases, on the exercise pages themselves
-    const pagePng = await browser.newPage({ viewport: { width: 900, height: 900 }, deviceScaleFactor: 1 });
-    for (const c of EDGE_CASES) {
-      for (const step of ['WP04P4', 'WP04P5']) {
-        progress(`edge case ${c.name} ${step}`);
-        const query = new URLSearchParams({ orbit: 0, angle: 0, size: 128, ...c.params });
-        await pagePng.goto(`${server.url}/${step}/?${query}`);
-        await pagePng.waitForFunction(() => window.scene && window.scene.frame >= 1);
-        const scene = await pagePng.evaluate(() => window.scene);
-        const img = PNG.sync.read(await canvasScreenshot(pagePng));
-        const stats = compareToReference(img, renderReference(scene, img.width, img.height));
-        const why = [stats.nanLike && 'NaN-black pixels', stats.saturated && 'saturates', stats.rmse > 2 * STEP && 'error over 2/255'].filter(Boolean);
-        results.edgeCases.push({ case: c.name, method: step === 'WP04P4' ? 'gouraud' : 'phong', level: scene.level,
-          rmse: round(stats.rmse, 6), maxError: round(stats.maxError, 6), silhouetteMismatch: stats.silhouetteMismatch,
-          nanLike: stats.nanLike, saturated: stats.saturated, fails: why.join(', ') });
-      }
-    }
-    await pagePng.close();
-
-    results.meta = {
-      ...results.meta, date: new Date().toISOString(), quick, seconds: Math.round((Date.now() - started) / 1000),
-      machine: `${os.cpus().length} × ${os.cpus()[0]?.model || 'cpu'}, ${Math.round(os.totalmem() / 2 ** 30)} GiB, ${os.platform()} ${os.release()}`,
-      browser: `Chromium ${browser.version()}`, node: process.version,
-      view: 'eye (0,0,3) orbiting, fovy 45°, directional light (0,0,-1,0), kd 0.8, ks 0.5, s 40, Le 1, La 0.2, Phong',
-    };
-    mkdirSync(outDir, { recursive: true });
-    const jsonPath = path.join(outDir, 'bench.json');
-    writeFileSync(jsonPath, JSON.stringify(results, null, 1));
-    const cols = ['method', 'level', 'size', 'vertices', 'bytes', 'msMedian', 'msP25', 'msP75', 'rmse', 'maxError', 'silhouetteMismatch', 'silhouetteErrorPx'];
-    const csv = [`# ${results.meta.machine}; ${results.meta.browser}; ${results.meta.renderer}`, cols.join(',')]
-      .concat(results.frames.map((r) => cols.map((c) => r[c] ?? '').join(','))).join('\n') + '\n';
-    writeFileSync(path.join(outDir, 'bench.csv'), csv);
-    if (publish) {
-      copyFileSync(jsonPath, path.join(root, 'lab/results.json'));
-      progress('chart PNG');
-      const chartPage = await browser.newPage({ viewport: { width: 900, height: 1400 }, deviceScaleFactor: 1 });
-      await chartPage.goto(`${server.url}/lab/`);
-      await chartPage.waitForFunction(() => window.labReady);
-      await chartPage.locator('#speed-accuracy').screenshot({ path: path.join(root, 'lab/speed-accuracy.png') });
-      await chartPage.close();
-    }
+    browser = await launchChromium();
+    const results = await runBench(browser, server.url, { plan: quick ? PLANS.quick : PLANS.full, quick, started });
+    const jsonPath = writeResults(results, outDir);
+    if (publish) await publishResults(browser, server.url, jsonPath);
     process.stderr.write(`\r[bench] done in ${results.meta.seconds} s`.padEnd(90) + '\n');
     console.log(`bench: wrote ${jsonPath} and bench.csv${publish ? ', lab/results.json and lab/speed-accuracy.png' : ''}`);
+    return 0;
   } finally {
-    await browser.close();
+    await browser?.close();
     server.stop();
   }
 }
 
-main().catch((err) => {
+main(process.argv.slice(2)).then((code) => { process.exitCode = code; }, (err) => {
   process.stderr.write('\n');
   console.error(`bench: failed during "${lastLine}": ${err.message}`);
-  process.exit(1);
+  process.exitCode = 1;
 });

@@ -5,21 +5,29 @@ import http from 'node:http';
 import { fileURLToPath } from 'node:url';
 import path from 'node:path';
 import sirv from 'sirv';
+import { UsageError, parseOptions, wholeNumber } from './cli.js';
 
 const root = path.dirname(path.dirname(fileURLToPath(import.meta.url)));
-const args = process.argv.slice(2);
-if (args.includes('--help')) {
-  console.log(`usage: node tools/serve.js [--port N] [--root DIR]
+const HELP = `usage: node tools/serve.js [--port N] [--root DIR]
 Serves DIR (default: the repository) at http://127.0.0.1:N/ (default port 8080, or $PORT).
-Binds 127.0.0.1 only. Stop with Ctrl+C. exit codes: 0 stopped, 1 could not listen`);
-  process.exit(0);
+Binds 127.0.0.1 only. Stop with Ctrl+C.
+exit codes: 0 stopped, 1 could not listen, 2 bad usage`;
+
+let port, dir;
+try {
+  const opt = parseOptions(process.argv.slice(2), { port: { type: 'string' }, root: { type: 'string' } });
+  if (opt.help) {
+    console.log(HELP);
+    process.exit(0);
+  }
+  port = opt.port !== undefined ? wholeNumber(opt.port, '--port', 1, 65535)
+    : wholeNumber(process.env.PORT || '8080', '$PORT', 1, 65535);
+  dir = path.resolve(opt.root ?? root);
+} catch (err) {
+  if (!(err instanceof UsageError)) throw err;
+  console.error(`serve: ${err.message}\n\n${HELP}`);
+  process.exit(2);
 }
-const opt = (name, fallback) => {
-  const i = args.indexOf(name);
-  return i >= 0 && args[i + 1] ? args[i + 1] : fallback;
-};
-const port = Number(opt('--port', process.env.PORT || 8080));
-const dir = path.resolve(opt('--root', root));
 
 const files = sirv(dir, { dev: true, dotfiles: false, extensions: ['html'] });
 function notFound(req, res) {

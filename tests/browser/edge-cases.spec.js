@@ -1,6 +1,7 @@
-// Numerical edge cases (issue 9), each for Gouraud (WP04P4) and Phong shading (WP04P5), against
-// the exact reference: never a NaN-black or saturated pixel where the reference is not; Phong
-// shading stays within its bound wherever the mesh is fine enough. The errors are printed.
+// The numerical edge cases of tools/edge-cases.js, each for Gouraud (WP04P4) and Phong shading
+// (WP04P5), against the exact reference: never a NaN-black or saturated pixel where the reference
+// is not; Phong shading stays within its bound wherever the mesh is fine enough. The errors are
+// printed.
 import { test, expect, open, scene, canvasPixels, errorAgainstReference } from './fixtures.js';
 import { EDGE_CASES, STEP } from '../../tools/edge-cases.js';
 

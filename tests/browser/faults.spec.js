@@ -1,5 +1,6 @@
-// Where the pages must hold (issue 9): fuzzed URL values, a lost WebGL context, a long orbit,
-// thousands of changes. WebGL 2 and WebGL 1.
+// The pages under stress: every URL parameter set to garbage (a sphere and a notice, never HTML
+// from the URL), a lost and restored WebGL context, a long orbit, and thousands of level changes
+// and slider moves (no new buffer, no heap growth, no GL error). WebGL 2 and WebGL 1.
 import { test, expect, open, scene, canvasPixels } from './fixtures.js';
 
 const PARAMS = {

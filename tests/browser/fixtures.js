@@ -7,7 +7,8 @@
 import { test as base, expect } from '@playwright/test';
 import { PNG } from 'pngjs';
 import { PIN_CANVAS_PATH, canvasScreenshot } from '../../tools/browser.js';
-import { renderReference, compareToReference } from '../../tools/reference.js';
+import { renderReference } from '../../tools/reference/render.js';
+import { compareToReference } from '../../tools/reference/measure.js';
 
 function instrument() {
   const counts = {};

@@ -1,4 +1,8 @@
-// The foundation: the front page, WP04P1 and WP04P2 (issue 5). Run under WebGL 2 and WebGL 1.
+// The front page and the two unlit steps, against screenshots and the exact sphere: WP04P1 (the
+// subdivided sphere coloured 0.5 p + 0.5, Subdivide / Coarsen, one recycled buffer) and WP04P2
+// (depth test, culling, clockwise front faces). Then what a page does with bad input and failures:
+// out-of-range URL values, broken or missing shaders, no WebGL (2), file://, and the address
+// following the controls. Run under WebGL 2 and WebGL 1.
 import { test, expect, open, scene, andDraw, canvasPixels, expectCanvasScreenshot, messages } from './fixtures.js';
 
 // Where the ray through pixel (i, j)'s centre meets the unit sphere: [near point, far point] or null.

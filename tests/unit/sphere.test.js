@@ -1,3 +1,6 @@
+// The sphere mesh (common/sphere.js): vertex counts, every vertex on the unit sphere, winding
+// counter-clockwise seen from outside, a closed mesh, clear errors, one reused array,
+// MAX_DEVIATION as measured, and chooseLevel's least level for a silhouette and a shading error.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { tetrahedronSphere, sphereMesh, vertexCount, vertexBytes, chooseLevel, MAX_DEVIATION, MAX_LEVEL, SHADING_RMSE } from '../../common/sphere.js';

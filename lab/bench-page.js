@@ -1,7 +1,44 @@
-// The bench harness (lab/bench.html), driven by tools/bench.js through window.bench.
+// The browser end of the bench: lab/bench.html loads this module, and tools/bench.js (npm run
+// bench) drives it through window.bench, documented below. It draws nothing by itself.
 // Methods: flat (one normal per face), gouraud (WP04P4's shaders), phong (WP04P5's shaders),
 // impostor (one quad, ray–sphere per fragment), all with the same camera, light and material as
 // the exercises' default view. Layouts: the slides' drawArrays, or shared vertices + drawElements.
+
+/**
+ * window.bench: published once the programs are compiled, and then window.benchReady = true (a
+ * failure shows in #messages as an .error instead). Every call is synchronous. URL parameters of
+ * lab/bench.html: size (the canvas's width and height in pixels, default 256), api=webgl for
+ * WebGL 1 (default WebGL 2).
+ *
+ * @typedef {object} Bench
+ * @property {'webgl2'|'webgl'} api the context in use
+ * @property {string} renderer the GPU's name (UNMASKED_RENDERER_WEBGL where the browser gives it)
+ * @property {number} maxLevel the largest subdivision level (MAX_LEVEL of common/sphere.js)
+ * @property {boolean} uint32 whether 32-bit indices are available (WebGL 2, or OES_element_index_uint)
+ * @property {(level: number, layout?: 'arrays'|'indexed') => {vertices: number, bytes: number, indexBits?: number}} setMesh
+ *   builds the sphere at `level` and uploads it: 'arrays' (the default) is sphereMesh for
+ *   drawArrays plus the face centroids for flat shading, 'indexed' is lab/meshes.js's
+ *   indexedSphere for drawElements. Returns the vertex count, the bytes of positions (and of
+ *   indices), and for 'indexed' the index size in bits (16 or 32).
+ * @property {(method: 'flat'|'gouraud'|'phong'|'impostor') => void} setMethod the program to draw with
+ * @property {(angle: number) => void} setAngle the orbit angle α in radians: eye = (3 sin α, 0, 3 cos α)
+ * @property {(material: {kd?: number, ka?: number, ks?: number, s?: number}) => void} setMaterial
+ *   changes some of the material; the shaders take ka = kd, so give ka equal to kd or scene()
+ *   will not describe what is drawn
+ * @property {(frames: number, warmup?: number) => number[]} frameTimes draws `warmup` frames
+ *   (default 3), then `frames` timed ones, each finished by a 1-pixel readPixels; returns ms per frame
+ * @property {() => string} capture draws once; returns the whole canvas, RGBA bytes, row 0 at the
+ *   top, as base64
+ * @property {() => object} scene the view as a page's window.scene gives it (camera, light,
+ *   material, model, shading = the method, cullFace, level, canvas), for tools/reference/render.js
+ * @property {(level: number, repeats: number) => {ours: number[], classic: number[], bound: number[]}} levelChange
+ *   times one level change `repeats` times three ways (ours, the textbook's classic, the
+ *   copy-only bound: see the function); ms per change. Leaves the mesh at `level` in the current layout.
+ * @property {(level: number, repeats: number) => number[]} indexedChange times building and
+ *   uploading the indexed layout, ms per change; leaves the indexed mesh bound
+ * @property {() => number} glError gl.getError(): 0 when nothing went wrong
+ */
+
 import { lookAt, mat3, mat4, normalMatrix, perspective } from '../common/math.js';
 import { MAX_LEVEL, sphereMesh, vertexBytes } from '../common/sphere.js';
 import { loadProgram } from '../common/shaders.js';
@@ -105,6 +142,7 @@ async function main() {
 
   let classicBuffer = null;
 
+  /** @type {Bench} */
   window.bench = {
     api,
     renderer: (() => {

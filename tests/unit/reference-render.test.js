@@ -1,42 +1,20 @@
-// The exact reference renderer (tools/reference.js), checked against values worked out by hand.
-// The camera of most tests: eye (0, 0, 3) looking at the unit sphere's centre, fovy 45°, so
-// tan(fovy/2) = tan 22.5° = √2 − 1 ≈ 0.414214, and r = (1, 0, 0), u = (0, 1, 0), f = (0, 0, −1).
+// The exact reference renderer (tools/reference/render.js), checked against values worked out by
+// hand: colours at chosen points, the silhouette, highlights, point lights, clipping and culling,
+// bad scenes, speed; and its pictures as 8-bit RGBA and PNG (tools/reference/png.js).
+// The scenes and helpers are in reference-scenes.js.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { spawnSync } from 'node:child_process';
-import { mkdtempSync, writeFileSync, readFileSync, rmSync } from 'node:fs';
+import { mkdtempSync, readFileSync, rmSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import path from 'node:path';
-import { fileURLToPath, pathToFileURL } from 'node:url';
 import { PNG } from 'pngjs';
-import {
-  BACKGROUND, shadePoint, renderReference, toRGBA8, writePNG, compareToReference, silhouetteErrorPx,
-} from '../../tools/reference.js';
+import { BACKGROUND, shadePoint, renderReference } from '../../tools/reference/render.js';
+import { toRGBA8, writePNG } from '../../tools/reference/png.js';
+import { camera, lit, normals, at, covered, close, grey } from './reference-scenes.js';
 
-const TOOL = fileURLToPath(new URL('../../tools/reference.js', import.meta.url));
-const camera = { eye: [0, 0, 3], at: [0, 0, 0], up: [0, 1, 0], fovy: 45, aspect: 1, near: 0.1, far: 100 };
-/** A lit scene: directional light from the eye's side (position (0,0,−1,0), so w_i = (0,0,1)). */
-const lit = (over = {}) => ({
-  exercise: 'WP04P5', camera, shading: 'phong', model: 'phong', depthTest: true, cullFace: true, frontFace: 'ccw',
-  light: { position: [0, 0, -1, 0], Le: 1, La: 0.1 },
-  material: { kd: 0.5, ka: 0.5, ks: 0.2, s: 40 },
-  ...over,
-});
-const normals = (over = {}) => ({ exercise: 'WP04P1', camera, shading: 'normals', ...over });
 const sub = (a, b) => a.map((v, k) => v - b[k]);
 const dot = (a, b) => a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
 const unit = (a) => a.map((v) => v / Math.hypot(...a));
-/** The colour of pixel (i, j) of a reference, row 0 at the top. */
-const at = (ref, i, j) => [0, 1, 2].map((c) => ref.rgb[3 * (j * ref.width + i) + c]);
-const covered = (ref, i, j) => ref.coverage[j * ref.width + i] === 1;
-function close(actual, expected, eps = 1e-12, what = '') {
-  const a = [].concat(actual), e = [].concat(expected);
-  assert.equal(a.length, e.length);
-  a.forEach((v, k) => assert.ok(Math.abs(v - e[k]) <= eps, `${what} channel ${k}: ${v}, expected ${e[k]} ± ${eps}`));
-}
-const grey = (v) => [v, v, v];
-/** The reference as an image object, as pngjs decodes a screenshot. */
-const asImage = (ref) => ({ width: ref.width, height: ref.height, data: Buffer.from(toRGBA8(ref).buffer) });
 
 // Silhouette of the unit sphere seen from distance 3: the tangent rays make asin(1/3) with the
 // axis, tan(asin(1/3)) = (1/3)/√(8/9) = 1/√8 ≈ 0.353553, so in NDC R = 0.353553/0.414214 ≈ 0.853553.
@@ -268,72 +246,6 @@ test('near and far planes clip by view depth; culling decides whether the inside
   close(at(renderReference(normals({ cullFace: true, frontFace: 'cw' }), 101, 101), 50, 50), [0.5, 0.5, 0]);
 });
 
-test('compareToReference: itself gives no error, a shifted copy mismatches', () => {
-  // a flat colour that 8 bits hold exactly: ka La = 1 · 51/255 = 0.2 → byte 51 → 0.2 again
-  const flat = renderReference(lit({ light: { position: [0, 0, -1, 0], Le: 1, La: 0.2 }, material: { kd: 0, ka: 1, ks: 0 } }), 64, 64);
-  const same = compareToReference(asImage(flat), flat);
-  assert.equal(same.rmse, 0);
-  assert.equal(same.maxError, 0);
-  assert.equal(same.silhouetteMismatch, 0);
-  assert.equal(same.silhouetteMismatchRatio, 0);
-  assert.equal(same.spherePixels, flat.coverage.reduce((a, v) => a + v, 0));
-  assert.ok(same.interiorPixels > 0 && same.interiorPixels < same.spherePixels);
-  assert.equal(same.nanLike + same.saturated, 0);
-  // a shaded one: only the 8-bit rounding, at most half a step
-  const ref = renderReference(lit(), 64, 64);
-  const self = compareToReference(asImage(ref), ref);
-  assert.ok(self.maxError <= 0.5 / 255 + 1e-12 && self.rmse <= 0.5 / 255);
-  assert.equal(self.silhouetteMismatch, 0);
-  // shifted one pixel to the right: every row through the sphere mismatches at both ends
-  const img = asImage(ref);
-  const shifted = Buffer.alloc(img.data.length);
-  for (let j = 0; j < 64; j++) {
-    for (let i = 0; i < 64; i++) img.data.copy(shifted, 4 * (j * 64 + i), 4 * (j * 64 + Math.max(i - 1, 0)), 4 * (j * 64 + Math.max(i - 1, 0)) + 4);
-  }
-  const moved = compareToReference({ width: 64, height: 64, data: shifted }, ref);
-  assert.ok(moved.silhouetteMismatch > 0 && moved.rmse > self.rmse, JSON.stringify(moved));
-  assert.ok(moved.silhouetteMismatch >= 2 * 40, `${moved.silhouetteMismatch}`); // ≈ 2 × the diameter in rows
-  assert.ok(silhouetteErrorPx({ width: 64, height: 64, data: shifted }, ref, lit()) > 0.5);
-  assert.ok(silhouetteErrorPx(asImage(ref), ref, lit()) === 0);
-});
-
-test('compareToReference: NaN-black and saturated pixels, maxErrorAt, and sizes must match', () => {
-  const ref = renderReference(lit(), 64, 64);
-  const img = asImage(ref);
-  const o = 4 * (32 * 64 + 32);
-  img.data[o] = img.data[o + 1] = img.data[o + 2] = 0; // black where the sphere is lit
-  const o2 = 4 * (30 * 64 + 20);
-  img.data[o2] = img.data[o2 + 1] = img.data[o2 + 2] = 255;
-  const stats = compareToReference(img, ref);
-  assert.equal(stats.nanLike, 1);
-  assert.equal(stats.saturated, 1);
-  // the black pixel is off by its whole reference value (≈ 0.74), more than the white one
-  assert.deepEqual(stats.maxErrorAt, [32, 32]);
-  close(stats.maxError, at(ref, 32, 32)[0], 1e-12);
-  assert.ok(1 - at(ref, 20, 30)[0] < stats.maxError);
-  assert.equal(stats.silhouetteMismatch, 0);
-  assert.throws(() => compareToReference({ width: 63, height: 64, data: img.data }, ref), /63×64 but the reference is 64×64/);
-  assert.throws(() => compareToReference(img, ref, { interior: 'image' }), /options\.interior/);
-});
-
-test('compareToReference: interior pixels by the reference, or by both pictures', () => {
-  // A picture whose sphere is ≈ 2.7 px too small all round (R 24.6 px from eye distance 3.3, not
-  // 27.3; as a coarse mesh's silhouette is): its ring of
-  // background inside the reference's interior counts as shading error by default, and only as
-  // silhouette mismatch with { interior: 'both' }.
-  const ref = renderReference(lit(), 64, 64);
-  const img = asImage(ref);
-  const small = renderReference(normals({ camera: { ...camera, eye: [0, 0, 3.3] } }), 64, 64);
-  for (let p = 0; p < 64 * 64; p++) if (!small.coverage[p]) img.data.set([100, 149, 237], 4 * p);
-  const byRef = compareToReference(img, ref);
-  const byBoth = compareToReference(img, ref, { interior: 'both' });
-  assert.equal(byRef.silhouetteMismatch, byBoth.silhouetteMismatch);
-  assert.ok(byRef.silhouetteMismatch > 0);
-  assert.ok(byRef.interiorPixels > byBoth.interiorPixels);
-  assert.ok(byRef.maxError > 0.1, `by the reference: ${byRef.maxError}`);
-  assert.ok(byBoth.maxError <= 0.5 / 255 + 1e-12, `by both: ${byBoth.maxError}`);
-});
-
 test('toRGBA8 and writePNG: round(v·255), alpha 255, row 0 on top', () => {
   const ref = renderReference(normals(), 33, 33);
   const bytes = toRGBA8(ref);
@@ -369,43 +281,3 @@ test('fast enough: 512 × 512 in well under a second', () => {
   assert.ok(ms < 500, `${ms.toFixed(0)} ms`);
 });
 
-test('the command: --help, bad usage, errors without a stack, --compare prints JSON', () => {
-  const run = (...args) => spawnSync(process.execPath, [TOOL, ...args], { encoding: 'utf8' });
-  const help = run('--help');
-  assert.equal(help.status, 0);
-  assert.match(help.stdout, /usage: node tools\/reference\.js --scene/);
-  assert.equal(run().status, 2);
-  assert.equal(run('--scene').status, 2);
-  assert.equal(run('--bogus', 'x').status, 2);
-  const dir = mkdtempSync(path.join(tmpdir(), 'reference-cli-'));
-  try {
-    const missing = run('--scene', path.join(dir, 'nope.json'), '--out', path.join(dir, 'x.png'));
-    assert.equal(missing.status, 1);
-    assert.match(missing.stderr, /cannot read the scene/);
-    assert.doesNotMatch(missing.stderr, /\n\s+at /);
-    const sceneFile = path.join(dir, 'scene.json');
-    writeFileSync(sceneFile, JSON.stringify({ ...lit(), canvas: { width: 40, height: 30 } }));
-    const out = path.join(dir, 'ref.png');
-    const made = run('--scene', sceneFile, '--out', out);
-    assert.equal(made.status, 0, made.stderr);
-    const png = PNG.sync.read(readFileSync(out));
-    assert.deepEqual([png.width, png.height], [40, 30]);
-    const compared = run('--scene', sceneFile, '--out', out, '--compare', out);
-    assert.equal(compared.status, 0, compared.stderr);
-    const stats = JSON.parse(compared.stdout);
-    assert.equal(stats.silhouetteMismatch, 0);
-    assert.ok(stats.rmse <= 0.5 / 255);
-    const wrongSize = run('--scene', sceneFile, '--width', '20', '--height', '20', '--compare', out);
-    assert.equal(wrongSize.status, 1);
-    assert.match(wrongSize.stderr, /40×30 but the reference is 20×20/);
-    assert.doesNotMatch(wrongSize.stderr, /\n\s+at /);
-    assert.equal(run('--scene', sceneFile, '--width', '-3', '--out', out).status, 2);
-    // a script that imports the module runs none of the command: no output, exit code 0
-    const importer = path.join(dir, 'importer.mjs');
-    writeFileSync(importer, `import ${JSON.stringify(pathToFileURL(TOOL).href)};\n`);
-    const imported = spawnSync(process.execPath, [importer], { encoding: 'utf8' });
-    assert.deepEqual([imported.status, imported.stdout, imported.stderr], [0, '', '']);
-  } finally {
-    rmSync(dir, { recursive: true, force: true });
-  }
-});

@@ -1,0 +1,40 @@
+// What the command-line tools share: node:util parseArgs with --help, and one kind of error for
+// bad usage, which each command reports with its help text and exit code 2.
+import { parseArgs } from 'node:util';
+
+/** Bad usage: an unknown option, a missing or bad value. The command exits with code 2. */
+export class UsageError extends Error {}
+
+/**
+ * Reads a command's options; --help (-h) is added to them. Positional arguments are refused.
+ * @param {string[]} argv the arguments after the script's name
+ * @param {object} options parseArgs's option descriptions, e.g. { out: { type: 'string' } }
+ * @returns {object} the options given, by name (`help: true` when --help was given)
+ * @throws {UsageError} for an unknown option, a string option without a value, or a positional
+ */
+export function parseOptions(argv, options) {
+  let values;
+  try {
+    ({ values } = parseArgs({ args: argv, options: { help: { type: 'boolean', short: 'h' }, ...options }, strict: true }));
+  } catch (err) {
+    if (typeof err.code === 'string' && err.code.startsWith('ERR_PARSE_ARGS_')) throw new UsageError(err.message);
+    throw err;
+  }
+  for (const [name, value] of Object.entries(values)) {
+    if (value === '') throw new UsageError(`--${name} needs a value`);
+  }
+  return values;
+}
+
+/**
+ * A whole number from `min` to `max`, from an option's text.
+ * @param {string} text @param {string} label the option as the user wrote it, e.g. "--width"
+ * @throws {UsageError} naming the option when it is not one
+ */
+export function wholeNumber(text, label, min, max) {
+  const n = Number(text);
+  if (!Number.isInteger(n) || n < min || n > max) {
+    throw new UsageError(`${label} must be a whole number from ${min} to ${max}, not ${JSON.stringify(text)}`);
+  }
+  return n;
+}
