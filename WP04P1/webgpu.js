@@ -10,7 +10,7 @@ import { run } from '../common/page.js';
 async function main() {
   // The page: URL parameters, canvas and device, controls, window.scene (common/step.js)
   const page = await openStep({ exercise: 'WP04P1', params: ['level'], webgpu: true });
-  const { canvas, camera } = page;
+  const { camera } = page;
   const wgsl = await loadWGSL('shader.wgsl');
 
   // Camera: a perspective view of the unit sphere from 3 units along the +z axis

@@ -39,7 +39,7 @@ export async function loadWGSL(url) {
   try {
     response = await fetch(url);
   } catch (err) {
-    throw new Error(`Could not load the shader ${url}: ${err.message}`);
+    throw new Error(`Could not load the shader ${url}: ${err.message}`, { cause: err });
   }
   if (!response.ok) throw new Error(`Could not load the shader ${url}: the server answered ${response.status} ${response.statusText}`);
   return { code: await response.text(), name: url };
