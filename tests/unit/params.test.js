@@ -39,7 +39,7 @@ test('bad values are clamped or replaced by the default, each with a sentence th
   assert.equal(values.size, 16);
   assert.equal(values.model, 'phong');
   assert.deepEqual(notices.sort(), [
-    'api=foo is not one of webgl2, webgl: using api=webgl2.',
+    'api=foo is not one of webgl2, webgl, webgpu: using api=webgl2.',
     'kd=abc is not a number: using kd=0.8.',
     'level=999 is above the largest value 8: using 8.',
     'model= is not one of phong, blinn-phong: using model=phong.',
