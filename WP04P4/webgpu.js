@@ -1,0 +1,86 @@
+// WP04P4 in WebGPU: the Phong reflection model (ambient + diffuse + specular) per vertex, in eye
+// space, with a slider for every parameter, updated on the `input` event while it is dragged.
+import { lookAt, mat3, mat4, normalMatrix, perspectiveZO } from '../common/math.js';
+import { MAX_LEVEL, sphereMesh, vertexBytes } from '../common/sphere.js';
+import { createShaderModule, createUniformBuffer, loadWGSL, setUniforms } from '../common/gpu.js';
+import { BACKGROUND, EYE_DISTANCE } from '../common/course.js';
+import { openStep } from '../common/step.js';
+import { run } from '../common/page.js';
+
+async function main() {
+  // The page: URL parameters, canvas and device, controls, window.scene (common/step.js)
+  const page = await openStep({ exercise: 'WP04P4', shading: 'gouraud', rmse: 'gouraud', webgpu: true,
+    params: ['height', 'near', 'far', 'level', 'orbit', 'angle', 'light', 'lx', 'ly', 'lz', 'kd', 'Le', 'ks', 's', 'La', 'model'] });
+  const { canvas, state, camera, scene } = page;
+  const wgsl = await loadWGSL('shader.wgsl');
+
+  // Camera: the eye orbits at radius r in the xz-plane; V follows it in every frame
+  const P = perspectiveZO(camera.fovy, camera.aspect, camera.near, camera.far);
+  const V = mat4();
+  const N = mat3();
+  // The uniforms by their names in the shader; kd, Le, ks, s, La are the sliders' own values (state).
+  // The light in world space: [x, y, z, w] with w = 0 a direction, w = 1 a point.
+  const uniforms = { P, V, N, lightPos: scene.light.position, blinnPhong: false };
+
+  // GPU set-up: the pipeline, the one vertex buffer, the uniform buffer and its bind group. It
+  // runs once; again only if the device is lost.
+  const msaaCount = Number(state.msaa);
+  let device, context, pipeline, vBuffer, uBlock, bindGroup, depthTexture, msaaTexture;
+  async function init(gpu) {
+    ({ device, context } = gpu);
+    const module = await createShaderModule(device, wgsl);
+    // The depth test and back-face culling of WP04P2, now fixed in the one pipeline
+    pipeline = device.createRenderPipeline({
+      label: 'WP04P4 sphere',
+      layout: 'auto',
+      vertex: { module, entryPoint: 'main_vs', buffers: [{ arrayStride: 12, attributes: [{ shaderLocation: 0, offset: 0, format: 'float32x3' }] }] },
+      fragment: { module, entryPoint: 'main_fs', targets: [{ format: gpu.format }] },
+      primitive: { topology: 'triangle-list', frontFace: 'ccw', cullMode: 'back' },
+      multisample: { count: msaaCount },
+      depthStencil: { depthWriteEnabled: true, depthCompare: 'less', format: 'depth24plus' },
+    });
+    vBuffer = device.createBuffer({ label: 'sphere vertices', size: vertexBytes(MAX_LEVEL), usage: GPUBufferUsage.VERTEX | GPUBufferUsage.COPY_DST });
+    uBlock = createUniformBuffer(device, wgsl.code, 'uniforms');
+    bindGroup = device.createBindGroup({ layout: pipeline.getBindGroupLayout(0), entries: [{ binding: 0, resource: { buffer: uBlock.buffer } }] });
+    // A canvas-sized depth texture (and colour target, when multisampling), as the slides make them
+    depthTexture = device.createTexture({ label: 'depth', size: [canvas.width, canvas.height], format: 'depth24plus', sampleCount: msaaCount, usage: GPUTextureUsage.RENDER_ATTACHMENT });
+    msaaTexture = msaaCount > 1 ? device.createTexture({ label: 'multisampled colour', size: [canvas.width, canvas.height], format: gpu.format, sampleCount: msaaCount, usage: GPUTextureUsage.RENDER_ATTACHMENT }) : null;
+  }
+
+  // A level change rewrites the one buffer (slide "Replacing an object")
+  let numVertices = 0;
+  function setLevel(level) {
+    const positions = sphereMesh(level);
+    device.queue.writeBuffer(vBuffer, 0, positions);
+    numVertices = positions.length / 3;
+    return numVertices;
+  }
+
+  // ---- set-up ends here; drawing: tick() calls draw() in every animation frame while orbiting ----
+  const [r, g, b, a] = BACKGROUND;
+  function draw() {
+    // e = (r sin α, 0, r cos α); V = lookAt(e, at, up)
+    camera.eye[0] = EYE_DISTANCE * Math.sin(state.angle);
+    camera.eye[2] = EYE_DISTANCE * Math.cos(state.angle);
+    lookAt(camera.eye, camera.at, camera.up, V);
+    normalMatrix(V, N); // N = ((V M)^T)^-1 with M = identity
+    uniforms.blinnPhong = state.model === 'blinn-phong';
+    setUniforms(device, uBlock, uniforms, state);
+    const encoder = device.createCommandEncoder();
+    const canvasView = context.getCurrentTexture().createView();
+    const pass = encoder.beginRenderPass({
+      colorAttachments: [{ view: msaaTexture ? msaaTexture.createView() : canvasView, resolveTarget: msaaTexture ? canvasView : undefined,
+        loadOp: 'clear', clearValue: { r, g, b, a }, storeOp: 'store' }],
+      depthStencilAttachment: { view: depthTexture.createView(), depthLoadOp: 'clear', depthClearValue: 1.0, depthStoreOp: 'store' },
+    });
+    pass.setPipeline(pipeline);
+    pass.setBindGroup(0, bindGroup);
+    pass.setVertexBuffer(0, vBuffer);
+    pass.draw(numVertices);
+    pass.end();
+    device.queue.submit([encoder.finish()]);
+  }
+  await page.start({ init, setLevel, draw });
+}
+
+run(main);
