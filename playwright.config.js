@@ -1,7 +1,9 @@
 // Browser tests: Debian's Chromium (never a downloaded browser), small canvases, one server.
-// Every test runs twice: project "webgl2" and project "webgl1" (the page's ?api= is set from it).
+// Every test runs under WebGL 2 and WebGL 1 (the page's ?api= is set from the project); the page
+// specs run a third time under WebGPU, whose screenshots must match the WebGL 2 baselines.
 import { defineConfig } from '@playwright/test';
 import { CHROMIUM, CHROMIUM_ARGS } from './tools/browser.js';
+import { WEBGPU_ARGS } from './tools/webgpu-capture.js';
 
 const PORT = Number(process.env.TEST_PORT || 4173);
 
@@ -23,6 +25,13 @@ export default defineConfig({
   projects: [
     { name: 'webgl2', use: { api: 'webgl2' } },
     { name: 'webgl1', use: { api: 'webgl' } },
+    {
+      name: 'webgpu',
+      use: { api: 'webgpu', launchOptions: { executablePath: CHROMIUM, args: [...CHROMIUM_ARGS, ...WEBGPU_ARGS] } },
+      testMatch: /(foundation|lighting|faults|edge-cases|webgpu)\.spec\.js/,
+      // the same pictures: a WebGPU page is held to the WebGL 2 baselines
+      snapshotPathTemplate: 'tests/screenshots/webgl2/{arg}{ext}',
+    },
   ],
   webServer: {
     command: `node tools/serve.js --port ${PORT}`,

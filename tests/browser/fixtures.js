@@ -1,7 +1,10 @@
 // Shared browser-test fixtures. Every test:
-// - runs with the project's API (webgl2 / webgl1): open() adds ?api= to the page's URL;
+// - runs with the project's API (webgl2 / webgl1 / webgpu): open() adds ?api= to the page's URL;
 // - counts WebGL calls (createBuffer, bufferData, createProgram, ...) through wrappers installed
-//   on the context prototypes before any page script runs;
+//   on the context prototypes before any page script runs; under WebGPU the same names count the
+//   calls that do the same job (a vertex buffer made or written, a render pipeline, a WGSL module);
+// - under WebGPU sees the canvas through tools/webgpu-capture.js (headless Chromium cannot present
+//   a WebGPU canvas: the capture stands in for its context and copies each frame to a 2D canvas);
 // - fails on any page error, console error or gl.getError() other than NO_ERROR, unless the test
 //   says which errors it expects (page.expectProblems(/regex/)).
 import { test as base, expect } from '@playwright/test';
@@ -9,6 +12,7 @@ import { PNG } from 'pngjs';
 import { PIN_CANVAS_PATH, canvasScreenshot } from '../../tools/browser.js';
 import { renderReference } from '../../tools/reference/render.js';
 import { compareToReference } from '../../tools/reference/measure.js';
+import { readWebGPUFrame, webgpuCaptureScript } from '../../tools/webgpu-capture.js';
 
 function instrument() {
   const counts = {};
@@ -38,6 +42,34 @@ function instrument() {
     contexts,
     errors: () => contexts.map((gl) => gl.getError()).filter((e) => e !== 0),
   };
+  // WebGPU: the calls that do the WebGL calls' jobs, under their names (the capture's own are not
+  // counted); the devices, so that a test can destroy one
+  if (!window.GPUDevice) return;
+  const capture = (descriptor) => descriptor && /webgpu-capture/.test(descriptor.label || '');
+  const vertexBuffers = new WeakSet();
+  const count = (name) => { counts[name] = (counts[name] || 0) + 1; };
+  const devices = [];
+  const { createBuffer, createRenderPipeline, createShaderModule } = GPUDevice.prototype;
+  GPUDevice.prototype.createBuffer = function (descriptor) {
+    const buffer = createBuffer.call(this, descriptor);
+    if (!capture(descriptor)) count(descriptor.usage & GPUBufferUsage.VERTEX ? 'createBuffer' : 'createUniformBuffer');
+    if (descriptor.usage & GPUBufferUsage.VERTEX) vertexBuffers.add(buffer);
+    return buffer;
+  };
+  GPUDevice.prototype.createRenderPipeline = function (...args) { count('createProgram'); return createRenderPipeline.apply(this, args); };
+  GPUDevice.prototype.createShaderModule = function (...args) { count('createShader'); return createShaderModule.apply(this, args); };
+  const { writeBuffer } = GPUQueue.prototype;
+  GPUQueue.prototype.writeBuffer = function (buffer, ...rest) {
+    if (vertexBuffers.has(buffer)) count('bufferData');
+    return writeBuffer.call(this, buffer, ...rest);
+  };
+  const { requestDevice } = GPUAdapter.prototype;
+  GPUAdapter.prototype.requestDevice = async function (...args) {
+    const device = await requestDevice.apply(this, args);
+    devices.push(device);
+    return device;
+  };
+  window.__gl.devices = devices;
 }
 
 export const test = base.extend({
@@ -50,6 +82,7 @@ export const test = base.extend({
       if (m.type() === 'error') problems.push(`console error: ${m.text()}`);
     });
     await page.addInitScript(instrument);
+    if (api === 'webgpu') await page.addInitScript(webgpuCaptureScript);
     page.expectProblems = (pattern) => { expected = pattern; };
     page.problems = problems;
     page.api = api;
@@ -57,6 +90,10 @@ export const test = base.extend({
     if (!page.isClosed()) {
       const glErrors = await page.evaluate(() => (window.__gl ? window.__gl.errors() : [])).catch(() => []);
       for (const e of glErrors) problems.push(`gl.getError() = 0x${e.toString(16)}`);
+      if (api === 'webgpu') {
+        const frame = await readWebGPUFrame(page).catch((e) => ({ errors: [`the capture could not be read: ${e.message}`] }));
+        for (const e of frame?.errors || []) problems.push(`WebGPU capture: ${e}`);
+      }
     }
     const unexpected = expected ? problems.filter((p) => !expected.test(p)) : problems;
     expect(unexpected, 'page, console and GL errors').toEqual([]);
@@ -72,9 +109,13 @@ export async function open(page, path, params = {}) {
   return scene(page);
 }
 
-/** Waits until the page has drawn at least `n` frames (window.scene.frame). */
+/**
+ * Waits until the page has drawn at least `n` frames (window.scene.frame); under WebGPU, also
+ * until the capture has put the last one on the canvas.
+ */
 export async function waitForFrame(page, n) {
   await page.waitForFunction((k) => window.scene && window.scene.frame >= k, n);
+  if (page.api === 'webgpu') await readWebGPUFrame(page);
 }
 
 /** The page's window.scene now. */

@@ -121,7 +121,7 @@ test.describe('WP04P1', () => {
     const after = await page.evaluate(() => ({ ...window.__gl.counts }));
     expect(after.createBuffer, 'buffers created').toBe(1);
     expect(after.createProgram, 'programs created').toBe(1);
-    expect(after.createShader, 'shaders created').toBe(2);
+    expect(after.createShader, 'shaders created').toBe(page.api === 'webgpu' ? 1 : 2); // one WGSL module, or GLSL's two
     expect(after.bufferData - before.bufferData, 'bufferData per level change').toBe(1000);
     expect(after.getUniformLocation, 'uniform look-ups happen once').toBe(before.getUniformLocation);
     expect(await page.evaluate(() => window.__gl.errors())).toEqual([]);
@@ -190,30 +190,49 @@ test.describe('bad input and failures', () => {
   }
 
   test('a broken shader is reported with its file and line, on the page', async ({ page }) => {
-    await page.route('**/WP04P1/shader.frag', (route) => route.fulfill({
-      contentType: 'text/plain',
-      body: 'precision mediump float;\nvarying vec4 vColor;\nvoid main() {\n  gl_FragColor = vColour;\n}\n',
-    }));
+    const [file, body] = page.api === 'webgpu'
+      ? ['shader.wgsl', '@vertex\nfn main_vs() -> @builtin(position) vec4f {\n  return vec4f(0.0);\n  let x: f32 = vColour;\n}\n']
+      : ['shader.frag', 'precision mediump float;\nvarying vec4 vColor;\nvoid main() {\n  gl_FragColor = vColour;\n}\n'];
+    await page.route(`**/WP04P1/${file}`, (route) => route.fulfill({ contentType: 'text/plain', body }));
+    if (page.api === 'webgpu') page.expectProblems(/vColour/); // Chromium also logs WGSL errors itself
     await page.goto(`/WP04P1/?api=${page.api}&size=64`);
     const error = page.locator('#messages .error');
-    await expect(error).toContainText('shader.frag, line 4');
+    await expect(error).toContainText(`${file}, line 4`);
     await expect(error.locator('pre')).toContainText('>> 4');
   });
 
   test('a missing shader file is reported on the page', async ({ page }) => {
-    await page.route('**/WP04P2/shader.vert', (route) => route.fulfill({ status: 404, body: 'not found' }));
+    const file = page.api === 'webgpu' ? 'shader.wgsl' : 'shader.vert';
+    await page.route(`**/WP04P2/${file}`, (route) => route.fulfill({ status: 404, body: 'not found' }));
     page.expectProblems(/404/); // the browser itself logs the failed request
     await page.goto(`/WP04P2/?api=${page.api}&size=64`);
-    await expect(page.locator('#messages .error')).toContainText('Could not load the shader shader.vert: the server answered 404');
+    await expect(page.locator('#messages .error')).toContainText(`Could not load the shader ${file}: the server answered 404`);
   });
 
   test('no WebGL at all: a clear message instead of a blank canvas', async ({ page }) => {
+    test.skip(page.api === 'webgpu', 'a WebGPU page asks for no WebGL context');
     await page.addInitScript(() => { HTMLCanvasElement.prototype.getContext = () => null; });
     await page.goto(`/WP04P1/?api=${page.api}&size=64`);
     await expect(page.locator('#messages .error')).toContainText('cannot create a WebGL context');
   });
 
+  for (const [what, init] of [['no navigator.gpu', () => { Object.defineProperty(Navigator.prototype, 'gpu', { get: () => undefined }); }],
+    ['no adapter', () => { GPU.prototype.requestAdapter = async () => null; }]]) {
+    test(`no WebGPU (${what}): a clear message with a link to the same view in WebGL`, async ({ page }) => {
+      test.skip(page.api !== 'webgpu', 'the WebGPU pages only');
+      await page.addInitScript(init);
+      await page.goto('/WP04P3/?api=webgpu&size=64&kd=0.5');
+      await expect(page.locator('#messages .error')).toContainText(/WebGPU/);
+      const link = page.locator('#messages .error a');
+      await link.click();
+      await page.waitForFunction(() => window.scene && window.scene.frame >= 1);
+      const s = await scene(page);
+      expect([s.api, s.material.kd]).toEqual(['webgl2', 0.5]);
+    });
+  }
+
   test('no WebGL 2: falls back to WebGL 1 and says so', async ({ page }) => {
+    test.skip(page.api === 'webgpu', 'a WebGL test (it asks for api=webgl2 itself)');
     await page.addInitScript(() => {
       const original = HTMLCanvasElement.prototype.getContext;
       HTMLCanvasElement.prototype.getContext = function (type, ...rest) {

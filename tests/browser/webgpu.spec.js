@@ -1,0 +1,138 @@
+// The WebGPU twins of the steps (project "webgpu" only): the capture shows what the page drew; each
+// step draws the same pixels as its WebGL 2 twin at several orbit angles and levels; the toggles of
+// WP04P2 are pipelines made once; multisampling is a parameter.
+import { test, expect, open, scene, canvasPixels, andDraw } from './fixtures.js';
+import { readWebGPUFrame } from '../../tools/webgpu-capture.js';
+
+test.beforeEach(({ api }) => {
+  test.skip(api !== 'webgpu', 'WebGPU only');
+});
+
+/** RMSE in 8-bit steps over RGB, and the pixels where one image shows the background and the other not. */
+function difference(a, b) {
+  const background = (d, o) => d[o] === 100 && d[o + 1] === 149 && d[o + 2] === 237;
+  let sum = 0, silhouette = 0, sphere = 0;
+  for (let o = 0; o < a.data.length; o += 4) {
+    for (let k = 0; k < 3; k++) sum += (a.data[o + k] - b.data[o + k]) ** 2;
+    if (background(a.data, o) !== background(b.data, o)) silhouette++;
+    if (!background(b.data, o)) sphere++;
+  }
+  return { rmse: Math.sqrt(sum / (3 * a.data.length / 4)), silhouette, sphere };
+}
+
+async function webglTwin(page, path, params) {
+  const twin = await page.context().newPage();
+  twin.api = 'webgl2';
+  await open(twin, path, params);
+  const pixels = await canvasPixels(twin);
+  const s = await scene(twin);
+  await twin.close();
+  return { pixels, scene: s };
+}
+
+test('the capture shows exactly what the page drew: a cleared canvas and one triangle', async ({ page }) => {
+  await page.goto('/');
+  const drawn = await page.evaluate(async () => {
+    const canvas = Object.assign(document.createElement('canvas'), { width: 64, height: 32 });
+    document.body.prepend(canvas);
+    const device = await (await navigator.gpu.requestAdapter()).requestDevice();
+    const context = canvas.getContext('webgpu');
+    const format = navigator.gpu.getPreferredCanvasFormat();
+    context.configure({ device, format });
+    const module = device.createShaderModule({ code: `
+      @vertex fn vs(@builtin(vertex_index) i: u32) -> @builtin(position) vec4f {
+        var p = array(vec2f(-1, -1), vec2f(0, -1), vec2f(-1, 1));   // the left-bottom corner's half of the left half
+        return vec4f(p[i], 0, 1);
+      }
+      @fragment fn fs() -> @location(0) vec4f { return vec4f(1, 0.5, 0, 1); }` });
+    const pipeline = device.createRenderPipeline({ layout: 'auto', vertex: { module, entryPoint: 'vs' },
+      fragment: { module, entryPoint: 'fs', targets: [{ format }] } });
+    const encoder = device.createCommandEncoder();
+    const pass = encoder.beginRenderPass({ colorAttachments: [{ view: context.getCurrentTexture().createView(),
+      loadOp: 'clear', clearValue: { r: 0.2, g: 0.4, b: 0.6, a: 1 }, storeOp: 'store' }] });
+    pass.setPipeline(pipeline);
+    pass.draw(3);
+    pass.end();
+    device.queue.submit([encoder.finish()]);
+    return format;
+  });
+  const frame = await readWebGPUFrame(page);
+  expect(frame).toMatchObject({ frames: 1, captured: 1, width: 64, height: 32, format: drawn, errors: [] });
+  const img = await canvasPixels(page);
+  const at = (x, y) => [...img.data.slice(4 * (y * img.width + x), 4 * (y * img.width + x) + 3)];
+  const clear = [51, 102, 153], orange = [255, 128, 0];
+  expect(at(1, 30), 'inside the triangle (bottom left)').toEqual(orange);
+  expect(at(10, 25)).toEqual(orange);
+  expect(at(60, 2), 'outside (top right)').toEqual(clear);
+  expect(at(40, 30)).toEqual(clear);
+  expect(at(30, 2), 'outside, above the hypotenuse').toEqual(clear);
+  // every pixel is one colour or the other, and the triangle covers a quarter of the canvas
+  let inside = 0;
+  for (let y = 0; y < 32; y++) for (let x = 0; x < 64; x++) {
+    const c = at(x, y).join();
+    expect([clear.join(), orange.join()]).toContain(c);
+    if (c === orange.join()) inside++;
+  }
+  expect(Math.abs(inside - (64 * 32) / 4)).toBeLessThanOrEqual(32);
+});
+
+const STILL = { orbit: 0 };
+const CASES = [
+  ['WP04P1', [{ level: 2 }, { level: 4 }, {}]],
+  ['WP04P2', [{ level: 2 }, { level: 4, depth: 0 }, { cull: 0 }, { cw: 1 }, {}]],
+  ...['WP04P3', 'WP04P4', 'WP04P5'].map((step) => [step, [0, 1.1, 2.5, 4].flatMap((angle) =>
+    [{ level: 2 }, { level: 4 }, {}].map((p) => ({ ...STILL, angle, ...p, ...(angle === 1.1 ? { light: 'point' } : {}) })))]),
+];
+for (const [step, views] of CASES) {
+  test(`${step}: the same pixels as WebGL 2 (within 1/255 RMSE, the same silhouette) in ${views.length} views`, async ({ page }) => {
+    test.setTimeout(120_000);
+    const worst = { rmse: 0, silhouette: 0 };
+    for (const params of views) {
+      const s = await open(page, `/${step}/`, params);
+      expect(s.api).toBe('webgpu');
+      const gpu = await canvasPixels(page);
+      const gl = await webglTwin(page, `/${step}/`, params);
+      expect({ ...s, api: 'webgl2', frame: 0 }, 'the same window.scene').toEqual({ ...gl.scene, frame: 0 });
+      const d = difference(gpu, gl.pixels);
+      const view = JSON.stringify(params);
+      expect(d.rmse, `RMSE in ${view}`).toBeLessThanOrEqual(1);
+      expect(d.silhouette, `silhouette pixels that differ in ${view}`).toBeLessThanOrEqual(Math.ceil(0.002 * d.sphere));
+      worst.rmse = Math.max(worst.rmse, d.rmse);
+      worst.silhouette = Math.max(worst.silhouette, d.silhouette);
+    }
+    console.log(`[webgpu] ${step} vs WebGL 2 over ${views.length} views: worst RMSE ${worst.rmse.toFixed(3)}/255, worst silhouette ${worst.silhouette} px`);
+  });
+}
+
+test('WP04P2: every toggle is a pipeline, made on first use and kept; 1,000 changes make no new buffer', async ({ page }) => {
+  await open(page, '/WP04P2/', { level: 1 });
+  const boxes = ['Depth test', 'Cull faces', 'Clockwise front faces'].map((name) => page.getByRole('checkbox', { name }));
+  for (let k = 0; k < 8; k++) {
+    for (let b = 0; b < 3; b++) {
+      const on = ((k >> b) & 1) === 0;
+      if ((await boxes[b].isChecked()) !== on) await andDraw(page, () => boxes[b].setChecked(on));
+    }
+  }
+  const counts = await page.evaluate(() => ({ ...window.__gl.counts }));
+  expect(counts.createProgram, 'one pipeline per combination of the three toggles').toBeLessThanOrEqual(8);
+  // 1,000 more: toggles and level changes, no new pipeline, no new buffer
+  await page.evaluate(() => {
+    const ids = ['depthTest', 'cullFace', 'frontFaceCW', 'subdivide', 'coarsen'];
+    for (let k = 0; k < 1000; k++) document.getElementById(ids[k % 5]).click();
+  });
+  const after = await page.evaluate(() => ({ ...window.__gl.counts }));
+  expect(after.createProgram).toBe(counts.createProgram);
+  expect([after.createBuffer, after.createUniformBuffer], 'one vertex and one uniform buffer in all').toEqual([1, 1]);
+  expect(after.bufferData - counts.bufferData, 'a level change is one writeBuffer').toBe(400);
+});
+
+test('?msaa=4: the slides\' multisampled target, resolved to the canvas; the default draws as WebGL', async ({ page }) => {
+  await open(page, '/WP04P4/', { ...STILL, level: 3 });
+  const single = await canvasPixels(page);
+  const s = await open(page, '/WP04P4/', { ...STILL, level: 3, msaa: 4 });
+  expect(s.level).toBe(3);
+  const multi = await canvasPixels(page);
+  const d = difference(single, multi);
+  expect(d.rmse, 'only the edges differ').toBeLessThan(6);
+  expect(d.rmse, 'but they do: the edges are smoothed').toBeGreaterThan(0);
+});
