@@ -37,9 +37,13 @@ export async function openStep({ exercise, params, shading = 'normals', rmse = n
   canvas.width = state.size;
   canvas.height = state.height ?? state.size;
   let gl = null, gpu = null, api = 'webgpu';
-  if (webgpu) gpu = await requestGPU(canvas);
-  if (gpu) reportGPUErrors(gpu.device);
-  else ({ gl, api } = createContext(canvas, state.api === 'webgpu' ? 'webgl2' : state.api, { antialias: Number(state.msaa) > 1 }));
+  if (webgpu) {
+    gpu = await requestGPU(canvas);
+    reportGPUErrors(gpu.device);
+  } else {
+    ({ gl, api } = createContext(canvas, state.api === 'webgpu' ? 'webgl2' : state.api, { antialias: Number(state.msaa) > 1 }));
+  }
+  apiLinks(api);
 
   // The camera looks at the centre from e = (r sin α, 0, r cos α); a step that orbits moves e
   const camera = { eye: [0, 0, EYE_DISTANCE], at: [...AT], up: [...UP], fovy: FOVY,
@@ -138,6 +142,25 @@ function watchDevice(device, canvas, onLost, restore) {
     await restore(gpu);
     notice.remove();
   });
+}
+
+/** Links in the page's <nav> to the same view in each API (the address as it is when clicked). */
+function apiLinks(current) {
+  const nav = document.querySelector('nav');
+  if (!nav) return;
+  nav.append(' · the same view in ');
+  for (const [api, text] of Object.entries(PARAMETERS.api.options)) {
+    const a = document.createElement('a');
+    a.textContent = text;
+    if (api === current) a.setAttribute('aria-current', 'page');
+    a.href = '?';
+    a.addEventListener('click', () => {
+      const query = new URLSearchParams(location.search);
+      query.set('api', api);
+      a.href = `?${query}`;
+    });
+    nav.append(a, api === 'webgpu' ? '' : ' · ');
+  }
 }
 
 /** WebGPU validation errors go to the console as warnings only: show them, as errors. */
