@@ -101,12 +101,25 @@ export const test = base.extend({
 });
 export { expect };
 
-/** Opens an exercise with ?api= from the project and small-canvas defaults, waits for a frame. */
+/**
+ * Opens an exercise with ?api= from the project and small-canvas defaults, waits for a frame, and
+ * checks that the page really got the API it asked for: window.scene.api and the context's class.
+ */
 export async function open(page, path, params = {}) {
   const query = new URLSearchParams({ api: page.api, size: '128', ...params });
   await page.goto(`${path}?${query}`);
   await waitForFrame(page, 1);
-  return scene(page);
+  const s = await scene(page);
+  const asked = ['webgl2', 'webgl', 'webgpu'].includes(query.get('api')) ? query.get('api') : 'webgl2';
+  expect(s.api, 'window.scene.api').toBe(asked);
+  const got = await page.evaluate(() => window.__gl && {
+    classes: window.__gl.contexts.map((gl) => gl.constructor.name),
+    devices: (window.__gl.devices || []).length,
+  });
+  if (!got) return s; // a page opened outside the fixture (not instrumented)
+  if (asked === 'webgpu') expect([got.classes, got.devices > 0], 'a WebGPU device, no WebGL context').toEqual([[], true]);
+  else expect(got.classes, 'the WebGL context class').toEqual([asked === 'webgl2' ? 'WebGL2RenderingContext' : 'WebGLRenderingContext']);
+  return s;
 }
 
 /**
