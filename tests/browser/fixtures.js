@@ -91,8 +91,9 @@ export const test = base.extend({
       const glErrors = await page.evaluate(() => (window.__gl ? window.__gl.errors() : [])).catch(() => []);
       for (const e of glErrors) problems.push(`gl.getError() = 0x${e.toString(16)}`);
       if (api === 'webgpu') {
-        const frame = await readWebGPUFrame(page).catch((e) => ({ errors: [`the capture could not be read: ${e.message}`] }));
-        for (const e of frame?.errors || []) problems.push(`WebGPU capture: ${e}`);
+        // what the capture met so far (not waiting for a copy in flight: an orbiting page never stops)
+        const errors = await page.evaluate(() => (window.__webgpuCapture ? [...window.__webgpuCapture.errors] : []));
+        for (const e of errors) problems.push(`WebGPU capture: ${e}`);
       }
     }
     const unexpected = expected ? problems.filter((p) => !expected.test(p)) : problems;
