@@ -36,6 +36,8 @@ export default defineConfig({
   webServer: {
     command: `node tools/serve.js --port ${PORT}`,
     url: `http://127.0.0.1:${PORT}/`,
-    reuseExistingServer: !process.env.CI,
+    // always a server of this checkout: another one already on the port is an error, not a reuse
+    // (run two checkouts at once with TEST_PORT=...)
+    reuseExistingServer: false,
   },
 });

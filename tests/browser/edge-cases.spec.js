@@ -11,6 +11,15 @@ import { EDGE_CASES, STEP } from '../../tools/edge-cases.js';
 // surface lights none of the true sphere ((p_l − p) · p = p_l · p − 1 ≤ 0), but the flat triangles
 // lie inside it, so the mesh near the light faces it and 1/r² makes them glow.
 const PHONG_BOUND = { default: 1.5, 'level 0': null, 'shininess s = 0': 4, 'point light on the surface': null };
+// Pixels saturated (a channel at 255) where the exact render's is not, per method: none, but where
+// the method breaks. Gouraud with s = 0 interpolates across the step that max(w_r · w_o, 0)^0 makes
+// at w_r · w_o = 0 (34 px measured at 96 px); the far plane cuts the mesh's interpolated highlight
+// differently from the true sphere's (2 px); Phong shading with a point light on the surface: the
+// glowing flat triangles above (48 px). A point light without 1/r² saturates thousands.
+const SATURATED_BOUND = {
+  WP04P4: { default: 0, 'shininess s = 0': 50, 'the far plane cuts the sphere': 4 },
+  WP04P5: { default: 0, 'point light on the surface': 64 },
+};
 
 for (const c of EDGE_CASES) {
   test(`edge case: ${c.name}`, async ({ page }, testInfo) => {
@@ -30,12 +39,11 @@ for (const c of EDGE_CASES) {
     for (const [step, stats] of Object.entries(all)) {
       expect(stats.nanLike, `${step}: NaN-black pixels`).toBe(0);
       expect(stats.spherePixels).toBeGreaterThan(0);
+      const saturated = SATURATED_BOUND[step][c.name] ?? SATURATED_BOUND[step].default;
+      expect(stats.saturated, `${step}: saturated pixels where the reference is not`).toBeLessThanOrEqual(saturated);
     }
     const bound = c.name in PHONG_BOUND ? PHONG_BOUND[c.name] : PHONG_BOUND.default;
-    if (bound !== null) {
-      expect(errors.WP04P5, 'Phong shading RMSE in 8-bit steps').toBeLessThanOrEqual(bound);
-      expect(all.WP04P5.saturated, 'Phong shading: saturated pixels where the reference is not').toBe(0);
-    }
+    if (bound !== null) expect(errors.WP04P5, 'Phong shading RMSE in 8-bit steps').toBeLessThanOrEqual(bound);
   });
 }
 
@@ -49,4 +57,6 @@ test('a far point light agrees with the directional light', async ({ page }) => 
   for (let i = 0; i < far.data.length; i++) worst = Math.max(worst, Math.abs(far.data[i] - directional.data[i]));
   expect(worst).toBeLessThanOrEqual(2);
   expect((await scene(page)).exercise).toBe('WP04P5');
+  // and both are the right picture, not only the same one
+  expect((await errorAgainstReference(page)).rmse / STEP, 'RMSE against the exact render, 8-bit steps').toBeLessThanOrEqual(1);
 });

@@ -88,7 +88,7 @@ export const test = base.extend({
     page.api = api;
     await use(page);
     if (!page.isClosed()) {
-      const glErrors = await page.evaluate(() => (window.__gl ? window.__gl.errors() : [])).catch(() => []);
+      const glErrors = await page.evaluate(() => (window.__gl ? window.__gl.errors() : []));
       for (const e of glErrors) problems.push(`gl.getError() = 0x${e.toString(16)}`);
       if (api === 'webgpu') {
         // what the capture met so far (not waiting for a copy in flight: an orbiting page never stops)
