@@ -50,8 +50,10 @@ export async function loadWGSL(url) {
  * listed and the line marked (the page shows it), as the WebGL steps do for GLSL.
  */
 export async function createShaderModule(device, { code, name }) {
+  // in an error scope: a bad module is reported here, by file and line, not as a stray device error
+  device.pushErrorScope('validation');
   const module = device.createShaderModule({ label: name, code });
-  const info = await module.getCompilationInfo();
+  const [info] = await Promise.all([module.getCompilationInfo(), device.popErrorScope()]);
   const error = info.messages.find((m) => m.type === 'error');
   if (error) {
     const err = new Error(`Shader error in ${name}, line ${error.lineNum}: ${error.message}`);

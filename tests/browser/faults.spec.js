@@ -1,7 +1,7 @@
 // The pages under stress: every URL parameter set to garbage (a sphere and a notice, never HTML
 // from the URL), a lost and restored WebGL context (WebGPU: device), a long orbit, and thousands of
 // level changes and slider moves (no new buffer, no heap growth, no GL error). All three APIs.
-import { test, expect, open, scene, canvasPixels, errorAgainstReference, waitForFrame } from './fixtures.js';
+import { test, expect, open, scene, canvasPixels, errorAgainstReference, waitForFrame, anotherPage } from './fixtures.js';
 
 const PARAMS = {
   '/WP04P2/': ['level', 'size', 'depth', 'cull', 'cw'],
@@ -47,9 +47,10 @@ test('a lost context (WebGPU: a lost device) is reported, and on restore the pag
   expect((await errorAgainstReference(page)).rmse * 255, 'interior RMSE against the exact render, 8-bit steps').toBeLessThanOrEqual(1);
   const before = await canvasPixels(page);
   const counts = await page.evaluate(() => ({ ...window.__gl.counts }));
+  const lostAt = (await scene(page)).frame;
   if (webgpu) {
     page.expectProblems(/WebGPU capture: readback/); // a copy in flight when the device goes
-    await page.evaluate(() => window.__gl.devices.at(-1).destroy());
+    await page.evaluate(() => window.__gl.devices.at(-1).destroy()); // the page asks for a new one by itself
   } else {
     await page.evaluate(() => { window.lose = window.__gl.contexts[0].getExtension('WEBGL_lose_context'); window.lose.loseContext(); });
     await expect(page.locator('#messages .notice')).toContainText(said);
@@ -57,11 +58,12 @@ test('a lost context (WebGPU: a lost device) is reported, and on restore the pag
   // the controls still work while the context is gone; nothing throws
   await page.getByLabel('ks', { exact: true }).fill('0.7');
   await page.getByLabel('ks', { exact: true }).fill('0.5');
-  const frame = (await scene(page)).frame;
   if (!webgpu) await page.evaluate(() => window.lose.restoreContext());
-  await page.waitForFunction((f) => window.scene.frame > f, frame);
-  await waitForFrame(page, frame + 1);
+  await page.waitForFunction((f) => window.scene.frame > f, lostAt);
   await expect(page.locator('#messages .notice', { hasText: said })).toHaveCount(0);
+  // let the last change draw (two animation frames), then read the picture
+  await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
+  await waitForFrame(page, lostAt + 1);
   const after = await canvasPixels(page);
   expect(Buffer.compare(Buffer.from(before.data), Buffer.from(after.data)), 'the same pixels after the restore').toBe(0);
   const now = await page.evaluate(() => ({ ...window.__gl.counts }));
@@ -103,7 +105,7 @@ test('a long orbit: α stays in [0, 2π), the same angle gives the same picture,
   await page.clock.runFor(100);
   const s = await scene(page);
   const stopped = await canvasPixels(page);
-  const fresh = await page.context().newPage();
+  const fresh = await anotherPage(page);
   await fresh.goto(`/WP04P4/?api=${page.api}&size=64&orbit=0&angle=${s.angle}`);
   await fresh.waitForFunction(() => window.scene && window.scene.frame >= 1);
   const again = await canvasPixels(fresh);

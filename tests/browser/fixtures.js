@@ -102,6 +102,15 @@ export const test = base.extend({
 });
 export { expect };
 
+/** A second page beside `page`, with the same API, instrumentation and (WebGPU) capture. */
+export async function anotherPage(page, api = page.api) {
+  const other = await page.context().newPage();
+  other.api = api;
+  await other.addInitScript(instrument);
+  if (api === 'webgpu') await other.addInitScript(webgpuCaptureScript);
+  return other;
+}
+
 /**
  * Opens an exercise with ?api= from the project and small-canvas defaults, waits for a frame, and
  * checks that the page really got the API it asked for: window.scene.api and the context's class.
@@ -147,12 +156,14 @@ export async function andDraw(page, action) {
 
 /** Asserts the canvas matches a baseline PNG (tests/screenshots/<project>/<name>). */
 export async function expectCanvasScreenshot(page, name) {
+  if (page.api === 'webgpu') await readWebGPUFrame(page);
   const size = await page.locator('canvas').evaluate((c) => ({ width: c.width, height: c.height }));
   await expect(page).toHaveScreenshot(name, { stylePath: PIN_CANVAS_PATH, clip: { x: 0, y: 0, ...size } });
 }
 
 /** A screenshot of the canvas, decoded: { width, height, data (RGBA, row 0 at the top) }. */
 export async function canvasPixels(page) {
+  if (page.api === 'webgpu') await readWebGPUFrame(page); // the last frame on the canvas
   const png = PNG.sync.read(await canvasScreenshot(page));
   return { width: png.width, height: png.height, data: png.data };
 }

@@ -1,7 +1,7 @@
 // The WebGPU twins of the steps (project "webgpu" only): the capture shows what the page drew; each
 // step draws the same pixels as its WebGL 2 twin at several orbit angles and levels; the toggles of
 // WP04P2 are pipelines made once; multisampling is a parameter.
-import { test, expect, open, scene, canvasPixels, andDraw } from './fixtures.js';
+import { test, expect, open, scene, canvasPixels, andDraw, anotherPage } from './fixtures.js';
 import { readWebGPUFrame } from '../../tools/webgpu-capture.js';
 
 test.beforeEach(({ api }) => {
@@ -21,8 +21,7 @@ function difference(a, b) {
 }
 
 async function webglTwin(page, path, params) {
-  const twin = await page.context().newPage();
-  twin.api = 'webgl2';
+  const twin = await anotherPage(page, 'webgl2');
   await open(twin, path, params);
   const pixels = await canvasPixels(twin);
   const s = await scene(twin);
