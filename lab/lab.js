@@ -48,7 +48,7 @@ async function main() {
   document.getElementById('meta').textContent =
     `Measured ${m.date.slice(0, 10)} on ${m.machine}; ${m.browser}, ${m.api}, renderer: ${m.renderer}` +
     `${m.rendererWebGPU ? `; WebGPU adapter: ${m.rendererWebGPU}` : ''}. ` +
-    `View: ${m.view}. ${m.quick ? 'A quick run (fewer levels and frames).' : ''}`;
+    `View: ${m.view}. ${m.load ? `Load average ${m.load.join(' → ')} on ${m.machine.split(' ')[0]} cores. ` : ''}${m.quick ? 'A quick run (fewer levels and frames).' : ''}`;
   if (m.quick) notify('These are the results of a quick run: run "npm run bench" for the full picture.');
 
   const sizes = [...new Set(r.frames.map((f) => f.size))];

@@ -326,6 +326,7 @@ function readOptions(argv) {
 
 /** The whole bench, every measurement in one browser; returns the results as bench.json holds them. */
 async function runBench(browser, base, { plan, quick, started }) {
+  const loadAtStart = os.loadavg()[0];
   const results = { meta: {}, chosen: {}, frames: [], levelChange: [], indexed: [], stability: [], edgeCases: [] };
   for (const size of plan.sizes) {
     const page = await openBench(browser, base, size);
@@ -358,6 +359,8 @@ async function runBench(browser, base, { plan, quick, started }) {
     ...results.meta, date: new Date().toISOString(), quick, seconds: Math.round((Date.now() - started) / 1000),
     machine: `${os.cpus().length} × ${os.cpus()[0]?.model || 'cpu'}, ${Math.round(os.totalmem() / 2 ** 30)} GiB, ${os.platform()} ${os.release()}`,
     browser: `Chromium ${browser.version()}`, node: process.version,
+    // how busy the machine was (1-minute load average, at the start and the end): noise, not speed
+    load: [loadAtStart, os.loadavg()[0]].map((x) => round(x, 1)),
     view: 'eye (0,0,3) orbiting, fovy 45°, directional light (0,0,-1,0), kd 0.8, ks 0.5, s 40, Le 1, La 0.2, Phong',
   };
   return results;
