@@ -95,8 +95,10 @@ test('the lab page draws its charts and tables from the committed results', asyn
   await expect(page.locator('#speed-accuracy canvas')).toBeVisible();
   await expect(page.locator('#claim p')).toHaveCount(4);
   await expect(page.locator('#claim')).toContainText('Gouraud (WP04P4)');
-  for (const id of ['level-table', 'stability', 'indexed', 'edge-cases']) expect(await page.locator(`#${id} tr`).count(), id).toBeGreaterThan(2);
+  for (const id of ['api-table', 'level-table', 'stability', 'indexed', 'edge-cases']) expect(await page.locator(`#${id} tr`).count(), id).toBeGreaterThan(2);
   await expect(page.locator('#indexed')).not.toContainText('NO');
+  await expect(page.locator('#level-table')).toContainText('WebGPU ours ms');
+  await expect(page.locator('#speed-accuracy canvas')).toHaveAttribute('aria-label', /milliseconds per frame/);
   await page.goto('/');
   await page.getByRole('link', { name: 'the lab' }).click();
   await expect(page).toHaveURL(/\/lab\/$/);
