@@ -3,10 +3,13 @@
 // Writes out/bench/bench.json and .csv; a full run also publishes lab/results.json and the chart
 // lab/speed-accuracy.png that the lab page and the README show.
 //
-// It drives lab/bench.html through its window.bench interface (documented in lab/bench-page.js),
-// and the exercise pages themselves for the edge cases. The steps, in the order main() runs them:
-//   measureFrames        ms per frame and error against the reference, every method and level
-//   measureLevelChanges  ms per level change (ours, classic, bound) and the indexed layout
+// It drives lab/bench.html (WebGL 2) and lab/bench-gpu.html (WebGPU) through their window.bench
+// interfaces (documented in lab/bench-page.js and lab/bench-gpu.js), in one Chromium with the
+// WebGPU flags, and the exercise pages themselves for the edge cases. The steps, in the order
+// main() runs them:
+//   measureFrames        ms per frame and error against the reference, every method and level, per API
+//   measureLevelChanges  ms per level change (ours, classic, bound) and the indexed layout, WebGL
+//   measureGPULevelChanges  the same level change in WebGPU (writeBuffer), beside the WebGL one
 //   measureStability     how the highlight moves over an orbit, Gouraud against Phong shading
 //   measureEdgeCases     where each method breaks, on WP04P4 and WP04P5
 //   writeResults, publishResults
@@ -18,7 +21,8 @@ import { renderReference } from './reference/render.js';
 import { compareToReference, silhouetteErrorPx } from './reference/measure.js';
 import { toRGBA8 } from './reference/png.js';
 import { PNG } from 'pngjs';
-import { canvasScreenshot, launchChromium, startServer } from './browser.js';
+import { CHROMIUM_ARGS, canvasScreenshot, launchChromium, startServer } from './browser.js';
+import { WEBGPU_ARGS } from './webgpu-capture.js';
 import { UsageError, parseOptions } from './cli.js';
 import { chooseLevel } from '../common/sphere.js';
 import { EDGE_CASES, STEP } from './edge-cases.js';
@@ -26,8 +30,9 @@ import { EDGE_CASES, STEP } from './edge-cases.js';
 const root = path.dirname(path.dirname(fileURLToPath(import.meta.url)));
 const HELP = `usage: npm run bench -- [--quick] [--out DIR] [--no-publish]
 Measures flat, Gouraud (WP04P4), Phong shading (WP04P5) and an exact impostor at every level,
-ms per frame and error against the exact reference, level-change time against the classic and
-the bound baselines, the indexed layout, and highlight stability over an orbit.
+in WebGL 2 and in WebGPU: ms per frame and error against the exact reference, level-change time
+against the classic and the bound baselines; then (WebGL 2) the indexed layout and highlight
+stability over an orbit.
   --quick       levels 0-5, one 128 px canvas, fewer frames (under a minute); does not publish
   --out DIR     where bench.json and bench.csv go (default out/bench)
   --no-publish  do not update lab/results.json and lab/speed-accuracy.png (a full run does)
@@ -103,13 +108,16 @@ function highlight(image, mask) {
   return { peak, x: sx / n, y: sy / n };
 }
 
-/** Opens lab/bench.html with a size × size canvas and waits for window.bench. */
-async function openBench(browser, base, size) {
+/** The bench page of each API. */
+const BENCH_PAGES = { webgl2: 'bench.html', webgpu: 'bench-gpu.html' };
+
+/** Opens the bench page of `api` with a size × size canvas (or target) and waits for window.bench. */
+async function openBench(browser, base, size, api = 'webgl2') {
   const page = await browser.newPage({ viewport: { width: size + 40, height: size + 200 }, deviceScaleFactor: 1 });
   const problems = [];
   page.on('pageerror', (e) => problems.push(e.message));
   page.on('console', (m) => { if (m.type() === 'error') problems.push(m.text()); });
-  await page.goto(`${base}/lab/bench.html?size=${size}`);
+  await page.goto(`${base}/lab/${BENCH_PAGES[api]}?size=${size}`);
   await page.waitForFunction(() => window.benchReady || document.querySelector('#messages .error'), null, { timeout: 60_000 });
   const error = await page.evaluate(() => document.querySelector('#messages .error')?.textContent);
   if (error || problems.length) throw new Error(`the bench page failed: ${error || problems.join('; ')}`);
@@ -124,30 +132,33 @@ async function openBench(browser, base, size) {
  * One method on the mesh the page holds: ms per frame (median and quartiles) and the error
  * against the exact reference `ref` of `refScene`.
  */
-async function measureMethod(page, plan, { method, level, size, ref, refScene }) {
-  progress(`${size}px level ${level} ${method}`);
+async function measureMethod(page, plan, { api, method, level, size, ref, refScene }) {
+  progress(`${api} ${size}px level ${level} ${method}`);
   const times = await page.evaluate(([m, f, w]) => { window.bench.setMethod(m); return window.bench.frameTimes(f, w); }, [method, plan.frames, plan.warmup]);
   const img = decode(await page.evaluate(() => window.bench.capture()), size, size);
   const stats = compareToReference(img, ref);
   return {
-    method, level, size, msMedian: round(median(times)), msP25: round(quantile(times, 0.25)), msP75: round(quantile(times, 0.75)),
+    api, method, level, size, msMedian: round(median(times)), msP25: round(quantile(times, 0.25)), msP75: round(quantile(times, 0.75)),
     rmse: round(stats.rmse, 6), maxError: round(stats.maxError, 6), silhouetteMismatch: stats.silhouetteMismatch,
     silhouetteErrorPx: round(silhouetteErrorPx(img, ref, refScene), 3), spherePixels: stats.spherePixels,
   };
 }
 
-/** Every method at every level, then the impostor, on one canvas size: the rows of results.frames. */
-async function measureFrames(page, plan, size) {
+/**
+ * Every method at every level, then the impostor, on one canvas size, on the bench page of `api`
+ * (webgl2 or webgpu; the page's calls are awaited either way): the rows of results.frames.
+ */
+async function measureFrames(page, plan, size, api) {
   const refScene = await page.evaluate(() => window.bench.scene());
   const ref = renderReference(refScene, size, size);
   const rows = [];
   for (let level = 0; level <= plan.maxLevel; level++) {
     const mesh = await page.evaluate(([l]) => window.bench.setMesh(l), [level]);
     for (const method of METHODS) {
-      rows.push({ ...(await measureMethod(page, plan, { method, level, size, ref, refScene })), vertices: mesh.vertices, bytes: mesh.bytes });
+      rows.push({ ...(await measureMethod(page, plan, { api, method, level, size, ref, refScene })), vertices: mesh.vertices, bytes: mesh.bytes });
     }
   }
-  rows.push({ ...(await measureMethod(page, plan, { method: 'impostor', level: null, size, ref, refScene })), vertices: 6, bytes: 48 });
+  rows.push({ ...(await measureMethod(page, plan, { api, method: 'impostor', level: null, size, ref, refScene })), vertices: 6, bytes: 48 });
   return rows;
 }
 
@@ -186,6 +197,21 @@ async function measureLevelChanges(page, plan) {
     await page.evaluate(([l]) => window.bench.setMesh(l, 'arrays'), [level]);
   }
   return { levelChange, indexed };
+}
+
+/**
+ * The level change in WebGPU, level by level, added to the WebGL rows of `levelChange`: ours
+ * (sphereMesh + queue.writeBuffer into the one buffer made for the largest level), classic and
+ * the copy-only bound, each timed to the end of the upload (queue.onSubmittedWorkDone).
+ */
+async function measureGPULevelChanges(page, plan, levelChange) {
+  for (const row of levelChange) {
+    progress(`webgpu level change ${row.level}`);
+    const t = await page.evaluate(([l, r]) => window.bench.levelChange(l, r), [row.level, plan.repeats]);
+    const ours = median(t.ours), classic = median(t.classic), bound = median(t.bound);
+    Object.assign(row, { gpuOursMs: round(ours), gpuClassicMs: round(classic), gpuBoundMs: round(bound),
+      gpuClassicOverOurs: round(classic / ours, 2), gpuOursOverBound: round(ours / bound, 2) });
+  }
 }
 
 /**
@@ -268,7 +294,7 @@ function writeResults(results, outDir) {
   mkdirSync(outDir, { recursive: true });
   const jsonPath = path.join(outDir, 'bench.json');
   writeFileSync(jsonPath, JSON.stringify(results, null, 1));
-  const cols = ['method', 'level', 'size', 'vertices', 'bytes', 'msMedian', 'msP25', 'msP75', 'rmse', 'maxError', 'silhouetteMismatch', 'silhouetteErrorPx'];
+  const cols = ['api', 'method', 'level', 'size', 'vertices', 'bytes', 'msMedian', 'msP25', 'msP75', 'rmse', 'maxError', 'silhouetteMismatch', 'silhouetteErrorPx'];
   const csv = [`# ${results.meta.machine}; ${results.meta.browser}; ${results.meta.renderer}`, cols.join(',')]
     .concat(results.frames.map((r) => cols.map((c) => r[c] ?? '').join(','))).join('\n') + '\n';
   writeFileSync(path.join(outDir, 'bench.csv'), csv);
@@ -300,6 +326,7 @@ function readOptions(argv) {
 
 /** The whole bench, every measurement in one browser; returns the results as bench.json holds them. */
 async function runBench(browser, base, { plan, quick, started }) {
+  const loadAtStart = os.loadavg()[0];
   const results = { meta: {}, chosen: {}, frames: [], levelChange: [], indexed: [], stability: [], edgeCases: [] };
   for (const size of plan.sizes) {
     const page = await openBench(browser, base, size);
@@ -307,7 +334,7 @@ async function runBench(browser, base, { plan, quick, started }) {
       Object.assign(results.meta, await page.evaluate(() => ({ renderer: window.bench.renderer, api: window.bench.api })));
     }
     results.chosen[size] = chosenLevels(size);
-    results.frames.push(...(await measureFrames(page, plan, size)));
+    results.frames.push(...(await measureFrames(page, plan, size, 'webgl2')));
     if (size === plan.sizes[0]) { // level changes and the indexed layout, on the smaller canvas
       const { levelChange, indexed } = await measureLevelChanges(page, plan);
       results.levelChange.push(...levelChange);
@@ -316,6 +343,15 @@ async function runBench(browser, base, { plan, quick, started }) {
     const glError = await page.evaluate(() => window.bench.glError());
     if (glError) throw new Error(`gl.getError() = 0x${glError.toString(16)} during the bench`);
     await page.close();
+
+    // The same in WebGPU, in the same browser
+    const gpuPage = await openBench(browser, base, size, 'webgpu');
+    results.meta.rendererWebGPU ??= await gpuPage.evaluate(() => window.bench.renderer);
+    results.frames.push(...(await measureFrames(gpuPage, plan, size, 'webgpu')));
+    if (size === plan.sizes[0]) await measureGPULevelChanges(gpuPage, plan, results.levelChange);
+    const gpuErrors = await gpuPage.evaluate(() => window.bench.gpuErrors());
+    if (gpuErrors.length) throw new Error(`WebGPU errors during the bench: ${gpuErrors.join('; ')}`);
+    await gpuPage.close();
   }
   results.stability = await measureStability(browser, base, plan);
   results.edgeCases = await measureEdgeCases(browser, base);
@@ -323,6 +359,8 @@ async function runBench(browser, base, { plan, quick, started }) {
     ...results.meta, date: new Date().toISOString(), quick, seconds: Math.round((Date.now() - started) / 1000),
     machine: `${os.cpus().length} × ${os.cpus()[0]?.model || 'cpu'}, ${Math.round(os.totalmem() / 2 ** 30)} GiB, ${os.platform()} ${os.release()}`,
     browser: `Chromium ${browser.version()}`, node: process.version,
+    // how busy the machine was (1-minute load average, at the start and the end): noise, not speed
+    load: [loadAtStart, os.loadavg()[0]].map((x) => round(x, 1)),
     view: 'eye (0,0,3) orbiting, fovy 45°, directional light (0,0,-1,0), kd 0.8, ks 0.5, s 40, Le 1, La 0.2, Phong',
   };
   return results;
@@ -347,7 +385,7 @@ async function main(argv) {
   const server = await startServer(root);
   let browser = null;
   try {
-    browser = await launchChromium();
+    browser = await launchChromium({ args: [...CHROMIUM_ARGS, ...WEBGPU_ARGS] });
     const results = await runBench(browser, server.url, { plan: quick ? PLANS.quick : PLANS.full, quick, started });
     const jsonPath = writeResults(results, outDir);
     if (publish) await publishResults(browser, server.url, jsonPath);

@@ -10,7 +10,7 @@ import { silhouetteErrorPx } from '../../tools/reference/measure.js';
 import { chooseLevel } from '../../common/sphere.js';
 import { EDGE_CASES } from '../../tools/edge-cases.js';
 
-test('bench --quick: every method and level, errors that fall with the level, an exact impostor', async ({ api }) => {
+test('bench --quick: every method and level in WebGL 2 and WebGPU, errors that fall with the level, an exact impostor', async ({ api }) => {
   test.skip(api !== 'webgl2', 'the bench picks its own context; once is enough');
   // a bound on a hang, not on speed: under a loaded machine the quick bench took up to 114 s here
   test.setTimeout(330_000);
@@ -22,23 +22,35 @@ test('bench --quick: every method and level, errors that fall with the level, an
   expect(r.meta.renderer).toBeTruthy();
   expect(r.meta.machine).toBeTruthy();
   expect(r.meta.browser).toMatch(/Chromium/);
-  for (const method of ['flat', 'gouraud', 'phong']) {
-    const rows = r.frames.filter((f) => f.method === method).sort((a, b) => a.level - b.level);
-    expect(rows.map((f) => f.level)).toEqual([0, 1, 2, 3, 4, 5]);
-    for (const f of rows) {
-      expect(f.msMedian).toBeGreaterThan(0);
-      expect(f.vertices).toBe(12 * 4 ** f.level);
+  expect(r.meta.rendererWebGPU).toBeTruthy();
+  expect(new Set(r.frames.map((f) => f.api))).toEqual(new Set(['webgl2', 'webgpu']));
+  for (const benchApi of ['webgl2', 'webgpu']) {
+    for (const method of ['flat', 'gouraud', 'phong']) {
+      const rows = r.frames.filter((f) => f.api === benchApi && f.method === method).sort((a, b) => a.level - b.level);
+      expect(rows.map((f) => f.level), `${benchApi} ${method}`).toEqual([0, 1, 2, 3, 4, 5]);
+      for (const f of rows) {
+        expect(f.msMedian).toBeGreaterThan(0);
+        expect(f.vertices).toBe(12 * 4 ** f.level);
+      }
+      if (method !== 'flat') {
+        for (let k = 1; k < rows.length; k++) expect(rows[k].rmse, `${benchApi} ${method} level ${k}`).toBeLessThan(rows[k - 1].rmse);
+      }
+      expect(rows[5].silhouetteErrorPx).toBeLessThan(0.5);
     }
-    if (method !== 'flat') {
-      for (let k = 1; k < rows.length; k++) expect(rows[k].rmse, `${method} level ${k}`).toBeLessThan(rows[k - 1].rmse);
-    }
-    expect(rows[5].silhouetteErrorPx).toBeLessThan(0.5);
+    const impostor = r.frames.find((f) => f.api === benchApi && f.method === 'impostor');
+    expect(impostor.rmse * 255, benchApi).toBeLessThan(0.5);
+    expect(impostor.silhouetteMismatch).toBeLessThanOrEqual(2);
   }
-  const impostor = r.frames.find((f) => f.method === 'impostor');
-  expect(impostor.rmse * 255).toBeLessThan(0.5);
-  expect(impostor.silhouetteMismatch).toBeLessThanOrEqual(2);
+  // the WGSL twins draw what the GLSL draws: the same error, within ½ of an 8-bit step, at every level
+  for (const f of r.frames.filter((x) => x.api === 'webgpu')) {
+    const twin = r.frames.find((x) => x.api === 'webgl2' && x.method === f.method && x.level === f.level && x.size === f.size);
+    expect(Math.abs(f.rmse - twin.rmse) * 255, `${f.method} level ${f.level}`).toBeLessThan(0.5);
+  }
   expect(r.levelChange.map((l) => l.level)).toEqual([0, 1, 2, 3, 4, 5, 6]);
-  for (const l of r.levelChange) expect(l.oursMs * l.classicMs * l.boundMs).toBeGreaterThan(0);
+  for (const l of r.levelChange) {
+    expect(l.oursMs * l.classicMs * l.boundMs).toBeGreaterThan(0);
+    expect(l.gpuOursMs * l.gpuClassicMs * l.gpuBoundMs, `WebGPU level ${l.level}`).toBeGreaterThan(0);
+  }
   expect(r.indexed.every((x) => x.pixelsEqual)).toBe(true);
   expect(r.indexed.map((x) => x.vertices)).toEqual([0, 1, 2, 3, 4, 5, 6].map((n) => 2 * 4 ** n + 2));
   const phong = r.stability.find((s) => s.method === 'phong' && s.level === 5);
@@ -47,7 +59,7 @@ test('bench --quick: every method and level, errors that fall with the level, an
   // the edge-case table: every case for both methods, and no NaN-black pixel anywhere
   expect(r.edgeCases.length).toBe(2 * EDGE_CASES.length);
   expect(r.edgeCases.every((e) => e.nanLike === 0)).toBe(true);
-  expect(readFileSync(path.join(out, 'bench.csv'), 'utf8')).toMatch(/^# .*\nmethod,level,size/);
+  expect(readFileSync(path.join(out, 'bench.csv'), 'utf8')).toMatch(/^# .*\napi,method,level,size,[^]*\nwebgpu,phong,5,/);
 });
 
 for (const size of [128, 256]) {
@@ -83,8 +95,10 @@ test('the lab page draws its charts and tables from the committed results', asyn
   await expect(page.locator('#speed-accuracy canvas')).toBeVisible();
   await expect(page.locator('#claim p')).toHaveCount(4);
   await expect(page.locator('#claim')).toContainText('Gouraud (WP04P4)');
-  for (const id of ['level-table', 'stability', 'indexed', 'edge-cases']) expect(await page.locator(`#${id} tr`).count(), id).toBeGreaterThan(2);
+  for (const id of ['api-table', 'level-table', 'stability', 'indexed', 'edge-cases']) expect(await page.locator(`#${id} tr`).count(), id).toBeGreaterThan(2);
   await expect(page.locator('#indexed')).not.toContainText('NO');
+  await expect(page.locator('#level-table')).toContainText('WebGPU ours ms');
+  await expect(page.locator('#speed-accuracy canvas')).toHaveAttribute('aria-label', /milliseconds per frame/);
   await page.goto('/');
   await page.getByRole('link', { name: 'the lab' }).click();
   await expect(page).toHaveURL(/\/lab\/$/);
