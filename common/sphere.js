@@ -19,14 +19,16 @@ export function vertexBytes(level) {
   return vertexCount(level) * 3 * Float32Array.BYTES_PER_ELEMENT;
 }
 
-// The regular tetrahedron inscribed in the unit sphere.
 const S2 = Math.SQRT2, S6 = Math.sqrt(6);
-const A = [0, 0, -1];
-const B = [0, (2 * S2) / 3, 1 / 3];
-const C = [-S6 / 3, -S2 / 3, 1 / 3];
-const D = [S6 / 3, -S2 / 3, 1 / 3];
-// Its four faces, each listed counter-clockwise seen from outside.
-const FACES = [[A, C, B], [D, B, C], [A, B, D], [A, D, C]];
+/**
+ * The regular tetrahedron inscribed in the unit sphere: its four corners, and its four faces as
+ * corner indices, each listed counter-clockwise seen from outside (the book's order is clockwise).
+ */
+export const TETRAHEDRON = {
+  corners: [[0, 0, -1], [0, (2 * S2) / 3, 1 / 3], [-S6 / 3, -S2 / 3, 1 / 3], [S6 / 3, -S2 / 3, 1 / 3]],
+  faces: [[0, 2, 1], [3, 1, 2], [0, 1, 3], [0, 3, 2]],
+};
+const FACES = TETRAHEDRON.faces.map((face) => face.map((k) => TETRAHEDRON.corners[k]));
 
 let out = null; // the array being filled, and the next free float in it
 let at = 0;

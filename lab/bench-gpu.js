@@ -43,9 +43,8 @@ import { MAX_LEVEL, sphereMesh, vertexBytes } from '../common/sphere.js';
 import { createShaderModule, createUniformBuffer, loadWGSL, setUniforms } from '../common/gpu.js';
 import { run } from '../common/page.js';
 import { classicSphere, faceCentroids } from './meshes.js';
+import { BACKGROUND, EYE_DISTANCE, FOVY } from '../common/course.js';
 
-const BACKGROUND = [0.3921, 0.5843, 0.9294, 1.0];
-const EYE_DISTANCE = 3, FOVY = 45;
 const FORMAT = 'rgba8unorm';
 
 async function main() {

@@ -44,9 +44,8 @@ import { MAX_LEVEL, sphereMesh, vertexBytes } from '../common/sphere.js';
 import { loadProgram } from '../common/shaders.js';
 import { createContext, run } from '../common/page.js';
 import { classicSphere, faceCentroids, indexedSphere } from './meshes.js';
+import { BACKGROUND, EYE_DISTANCE, FOVY } from '../common/course.js';
 
-const BACKGROUND = [0.3921, 0.5843, 0.9294, 1.0];
-const EYE_DISTANCE = 3, FOVY = 45;
 
 async function main() {
   const params = new URLSearchParams(location.search);

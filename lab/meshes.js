@@ -2,11 +2,9 @@
 //  - classicSphere: the textbook way, arrays of vec4 objects pushed one by one, then flattened;
 //  - indexedSphere: shared vertices (2·4^n + 2 instead of 12·4^n) and an index list, the same
 //    triangles in the same order and winding, for gl.drawElements.
-import { MAX_LEVEL } from '../common/sphere.js';
+import { MAX_LEVEL, TETRAHEDRON } from '../common/sphere.js';
 
-const S2 = Math.SQRT2, S6 = Math.sqrt(6);
-const CORNERS = [[0, 0, -1], [0, (2 * S2) / 3, 1 / 3], [-S6 / 3, -S2 / 3, 1 / 3], [S6 / 3, -S2 / 3, 1 / 3]];
-const FACES = [[0, 2, 1], [3, 1, 2], [0, 1, 3], [0, 3, 2]]; // as common/sphere.js: counter-clockwise outside
+const { corners: CORNERS, faces: FACES } = TETRAHEDRON; // counter-clockwise seen from outside
 
 /** The classic way: one [x, y, z, 1] array per vertex, new arrays at every step, then one copy. */
 export function classicSphere(level) {

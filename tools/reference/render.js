@@ -1,12 +1,13 @@
 // The exact reference renderer. For a page's `window.scene` it casts one ray per pixel centre at the
 // unit sphere (centre 0, model matrix identity), in double precision, and evaluates the slides'
 // reflection model at the hit point, so that L_o = L_r,d + L_r,s + L_r,a with no mesh, no
-// interpolation and no float32 anywhere. Plain JavaScript with no imports; the error measures
-// (measure.js), the PNG files (png.js), the command (../reference.js), the tests and the bench
-// build on it.
+// interpolation and no float32 anywhere. Plain JavaScript; its one import is the course's clear
+// colour. The error measures (measure.js), the PNG files (png.js), the command (../reference.js),
+// the tests and the bench build on it.
+import { BACKGROUND as CLEAR } from '../../common/course.js';
 
-/** The course's clear colour, cornflower blue (gl.clearColor(0.3921, 0.5843, 0.9294, 1)). */
-export const BACKGROUND = [0.3921, 0.5843, 0.9294];
+/** The course's clear colour, RGB (common/course.js). */
+export const BACKGROUND = CLEAR.slice(0, 3);
 
 // ---------------------------------------------------------------------------------------------
 // Reading the scene
