@@ -155,13 +155,14 @@ function fibonacciDirections(n) {
 }
 const DIRS = fibonacciDirections(500);
 
-function fitDirection(pts, use, l) {
-  // brightness ≈ a + b max(n·l, 0): linear in (a, b) for a given l
+function fitDirection(pts, use, l, twoSided = false) {
+  // brightness ≈ a + b max(n·l, 0) (or a + b |n·l|, lit on both sides): linear in (a, b) for a given l
+  const f = twoSided ? Math.abs : (v) => Math.max(0, v);
   let n = 0, sx = 0, sy = 0, sxx = 0, sxy = 0;
   for (let i = 0; i < pts.length; i++) {
     if (!use[i]) continue;
     const s = pts[i];
-    const x = Math.max(0, s.n[0] * l[0] + s.n[1] * l[1] + s.n[2] * l[2]), y = s.y;
+    const x = f(s.n[0] * l[0] + s.n[1] * l[1] + s.n[2] * l[2]), y = s.y;
     n++; sx += x; sy += y; sxx += x * x; sxy += x * y;
   }
   const den = n * sxx - sx * sx;
@@ -171,7 +172,7 @@ function fitDirection(pts, use, l) {
   for (let i = 0; i < pts.length; i++) {
     if (!use[i]) continue;
     const s = pts[i];
-    const x = Math.max(0, s.n[0] * l[0] + s.n[1] * l[1] + s.n[2] * l[2]);
+    const x = f(s.n[0] * l[0] + s.n[1] * l[1] + s.n[2] * l[2]);
     sse += (s.y - a - b * x) ** 2;
   }
   return { a, b, sse, l };
@@ -211,22 +212,34 @@ export function diffuseFit(pts, rubric = {}) {
   const used = use.filter(Boolean).length;
   const meanU = pts.reduce((a, s, i) => a + (use[i] ? s.y : 0), 0) / Math.max(1, used);
   const sstU = pts.reduce((a, s, i) => a + (use[i] ? (s.y - meanU) ** 2 : 0), 0);
+  // the highlight: how far above the diffuse fit a pixel is, as a share of the headroom left to
+  // white there (a highlight on a bright diffuse patch saturates at 1 and cannot rise far)
   let peak = 0, bright = 0;
   for (const s of pts) {
-    const r = s.y - (best.a + best.b * Math.max(0, s.n[0] * best.l[0] + s.n[1] * best.l[1] + s.n[2] * best.l[2]));
-    if (r > peak) peak = r;
-    if (r > highlightMargin) bright++;
+    const pred = best.a + best.b * Math.max(0, s.n[0] * best.l[0] + s.n[1] * best.l[1] + s.n[2] * best.l[2]);
+    const r = s.y - pred;
+    if (r < (rubric.highlightMinRise ?? 0.06)) continue;
+    const share = Math.min(1, r / Math.max(0.1, 1 - pred));
+    if (share > peak) peak = share;
+    if (r > highlightMargin || share > 0.8) bright++;
   }
-  return { r2: sstU > 1e-9 ? 1 - best.sse / sstU : 0, rms: Math.sqrt(best.sse / Math.max(1, used)), ambient: best.a, diffuse: best.b,
+  // the same pixels under a two-sided model: a page lit on both sides (|n·w_i|) fits it better
+  let twoSided = null;
+  for (const l of DIRS) {
+    const f = fitDirection(pts, use, l, true);
+    if (f.b >= 0 && (!twoSided || f.sse < twoSided.sse)) twoSided = f;
+  }
+  return { r2: sstU > 1e-9 ? 1 - best.sse / sstU : 0, r2TwoSided: sstU > 1e-9 ? 1 - twoSided.sse / sstU : 0, rms: Math.sqrt(best.sse / Math.max(1, used)), ambient: best.a, diffuse: best.b,
     light: best.l, spread: Math.sqrt(sst / pts.length), highlightPeak: peak, highlightShare: bright / pts.length, fitted: used / pts.length };
 }
 
-/** The share of the two objects' pixels that differ in or out (silhouettes compared). */
+/**
+ * How much the silhouette changed between two pictures: the relative change of its area, or of
+ * its roundness, whichever is more (pixel flips along the edge alone do not count).
+ */
 export function silhouetteChange(a, b) {
-  if (!a || !b || a.width !== b.width || a.height !== b.height || a.blank || b.blank) return 1;
-  let diff = 0;
-  for (let p = 0; p < a.mask.length; p++) if (a.mask[p] !== b.mask[p]) diff++;
-  return diff / Math.max(1, Math.max(a.area, b.area));
+  if (!a || !b || a.width !== b.width || a.height !== b.height || a.blank || b.blank) return a && b && a.blank && b.blank ? 0 : 1;
+  return Math.max(Math.abs(a.area - b.area) / Math.max(a.area, b.area), Math.abs(a.roundness - b.roundness) / 3);
 }
 
 /** RMS difference of brightness between two pictures over the pixels inside both objects. */
