@@ -402,16 +402,17 @@ async function gradeOpen(ctx, item, result) {
       if (how === 'input') inputOk++;
       else if (how === 'change') changeOnly++;
       else dead++;
-      if (how !== 'none' && baseFit) {
+      if (how !== 'none' && baseFit && k === 'ks') {
         const a = analyse(after, T);
         const f = a.blank ? null : diffuseFit(samples(after, a), T);
         if (k === 'ks' && f && f.highlightPeak >= baseFit.highlightPeak * 0.5 && f.highlightPeak >= T.highlightPeak) {
           say('review', `ks at ${target} leaves the highlight as it was (${fmt(f.highlightPeak)}): is ks used in the specular term?`);
         }
       }
+      // back to where it was (drawn with the next slider's frame, or the last one below)
       await page.evaluate(([i, v]) => window.__grade.setValue(i, v, ['input', 'change']), [c.index, c.value]);
-      await tick(ctx, 100);
     }
+    await tick(ctx, 100);
     if (must.has('sliderInputEvent') && changeOnly) say('review', `${changeOnly} slider(s) update the picture only on the change event, not while sliding (the slide asks for the input event)`);
     else if (must.has('sliderInputEvent') && inputOk) say('pass', 'the sliders update the picture on the input event');
     if (must.has('sliderEffects') && dead) say('review', `${dead} slider(s) change nothing in the picture`);
