@@ -271,12 +271,15 @@ async function gradeOpen(ctx, item, result) {
   const same = (a, b) => pictureChange(a.img, b.img) <= 0.0005;
   const settledSilhouette = (a, b) => silhouetteChange(a.an, b.an) <= T.silhouetteSettled;
   let ladder = [last];
-  if (R.coarsen && stopped) {
+  let coarsened = false;
+  // (down first only where a coarse level is judged: P5's highlight per fragment)
+  if (R.coarsen && stopped && must.has('perFragment')) {
     const down = await step(R.coarsen, 'Coarsen', T.maxCoarsenings, same);
     ladder = [down.length ? down[down.length - 1] : last];
+    coarsened = down.length > 0;
   }
   if (R.subdivide) {
-    ladder.push(...await step(R.subdivide, 'Subdivide', T.maxSubdivisions + (R.coarsen ? T.maxCoarsenings : 0), settledSilhouette));
+    ladder.push(...await step(R.subdivide, 'Subdivide', T.maxSubdivisions + (coarsened ? T.maxCoarsenings : 0), settledSilhouette));
   } else if (R.levelSlider && R.levelSlider.type === 'range') {
     const c = R.levelSlider;
     const lo = Number(c.min || 0), hi = Math.min(Number(c.max || 8), lo + T.maxSubdivisions);
@@ -306,6 +309,12 @@ async function gradeOpen(ctx, item, result) {
   if (an.blank) return { fail: 'the picture went blank after the controls were used', checks };
   result.numbers = { radius: an.radius, roundness: an.roundness, fill: an.fill, coverage: an.coverage, firstRoundness: firstAn.roundness,
     levelsSeen: ladder.length };
+  // a dark unlit side on a dark background: the outline is the lit edge's circle
+  const c = an.circle;
+  if (!(an.roundness <= T.roundness && an.fill >= T.fill) && c && c.roundness <= T.roundness && c.arc >= 180 && !an.touches) {
+    Object.assign(an, { cx: c.cx, cy: c.cy, radius: c.r, roundness: c.roundness, fill: 1 });
+    say('pass', `part of the sphere is as dark as the background: its outline was fitted to the lit edge (${c.arc}° of a circle)`);
+  }
   if (an.radius < T.minRadiusPixels) say('review', `the sphere is very small on screen (${fmt(an.radius, 0)} px radius): hard to judge`);
   else if (an.roundness <= T.roundness && an.fill >= T.fill) {
     say('pass', `a round closed sphere (radius ${fmt(an.radius, 0)} px, roundness ${fmt(an.roundness, 3)})`);

@@ -76,7 +76,43 @@ export function analyse(img, rubric = {}) {
     const x = cx + r * Math.cos(a), y = cy + r * Math.sin(a);
     return x < 1.5 || y < 1.5 || x > w - 1.5 || y > h - 1.5;
   });
-  return { ...result, blank: false, cx, cy, R, radius: mean, roundness, fill, touches };
+  const circle = fitCircle(img, mask, bg, tol);
+  return { ...result, blank: false, cx, cy, R, radius: mean, roundness, fill, touches, circle };
+}
+
+/**
+ * A circle through the object's outline where it stands out clearly from the background (a
+ * sphere's unlit side may be as dark as a dark background: then only the lit edge is outline).
+ * Kåsa's least-squares fit; roundness = spread of the edge's distances from the centre over the
+ * radius; arc = the degrees of the circle that edge covers.
+ */
+export function fitCircle(img, mask, bg, tol) {
+  const { width: w, height: h, data } = img;
+  const pts = [];
+  for (let y = 1; y < h - 1; y++) {
+    for (let x = 1; x < w - 1; x++) {
+      const p = y * w + x;
+      if (!mask[p] || (mask[p - 1] && mask[p + 1] && mask[p - w] && mask[p + w])) continue;
+      const o = 4 * p;
+      if (Math.abs(data[o] - bg[0]) + Math.abs(data[o + 1] - bg[1]) + Math.abs(data[o + 2] - bg[2]) > 2.5 * tol) pts.push([x + 0.5, y + 0.5]);
+    }
+  }
+  if (pts.length < 12) return null;
+  // x² + y² + D x + E y + F = 0
+  const A = [[0, 0, 0], [0, 0, 0], [0, 0, 0]], b = [0, 0, 0];
+  for (const [x, y] of pts) {
+    const row = [x, y, 1], z = -(x * x + y * y);
+    for (let i = 0; i < 3; i++) { b[i] += row[i] * z; for (let j = 0; j < 3; j++) A[i][j] += row[i] * row[j]; }
+  }
+  const [D, E, F] = solve3(A, b);
+  const cx = -D / 2, cy = -E / 2, r = Math.sqrt(Math.max(0, cx * cx + cy * cy - F));
+  if (!(r > 0)) return null;
+  const d = pts.map(([x, y]) => Math.hypot(x - cx, y - cy));
+  const sorted = [...d].sort((a, c) => a - c);
+  // the spread of the middle 96% (a stray pixel or two aside)
+  const lo = sorted[Math.floor(0.02 * sorted.length)], hi = sorted[Math.ceil(0.98 * sorted.length) - 1];
+  const bins = new Set(pts.map(([x, y]) => Math.floor(((Math.atan2(y - cy, x - cx) + Math.PI) / (2 * Math.PI)) * 36) % 36));
+  return { cx, cy, r, roundness: (hi - lo) / r, arc: bins.size * 10, points: pts.length };
 }
 
 /** Interior samples: pixel colour (0..1) and the view-space normal a sphere has there. */
