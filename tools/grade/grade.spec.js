@@ -203,7 +203,7 @@ async function gradeOpen(ctx, item, result) {
   let orbitToggles = false, stopped = !moving;
   const shadedPart = must.has('diffuse');
   const orbitFits = []; // the diffuse fit at each lit orbit position seen
-  const look = (im) => {
+  const look = (im) => { // the brightness spread; lit views' fits are kept
     const a = analyse(im, T);
     if (a.blank) return 0;
     const fit = diffuseFit(samples(im, a, { max: 1500 }), T);
@@ -212,8 +212,9 @@ async function gradeOpen(ctx, item, result) {
   };
   const sampleOrbit = async (im) => {
     // the light may be behind the sphere at first: look along the orbit (a few positions at least)
+    // and a few positions at least, to see the lit side turn with the orbit (a light fixed in the world)
     let k = 0;
-    for (; k < T.orbitSamples && look(im) < T.litSpread * 1.5; k++) {
+    for (; k < T.orbitSamples && (look(im) < T.litSpread * 1.5 || k < 2); k++) {
       await tick(ctx, T.orbitSampleSeconds * 1000);
       im = await snap(page);
     }
@@ -372,9 +373,20 @@ async function gradeOpen(ctx, item, result) {
       say('pass', `brightness follows max(n·w_i, 0)·kd·Le + ambient (R² ${fmt(fit.r2)}, fitted light ${fit.light.map((v) => fmt(v)).join(', ')})`);
     } else say('fail', `brightness does not follow max(n·w_i, 0)·kd·Le + ambient for any light direction (R² ${fmt(fit.r2)})`);
   }
+  if (shadedPart && orbitFits.length >= 2) {
+    const angle = (a, b) => (180 / Math.PI) * Math.acos(Math.min(1, Math.abs(a[0] * b[0] + a[1] * b[1] + a[2] * b[2])));
+    let turn = 0;
+    for (let i = 1; i < orbitFits.length; i++) turn = Math.max(turn, angle(orbitFits[0].light, orbitFits[i].light));
+    result.numbers.lightTurn = turn;
+    if (turn < T.lightTurnDegrees) {
+      say('review', `while the camera orbits, the lit side stays where it is on screen (the fitted light turns ${fmt(turn, 1)}°): the light moves with the camera (light and normals in different spaces?)`);
+    } else say('pass', `the lit side turns as the camera orbits (${fmt(turn, 0)}°): the light stays in the world`);
+  }
   if (must.has('orbitToggle')) {
     if (orbitToggles) say('pass', 'a control toggles the orbit on and off');
-    else if (R.orbit) say('review', 'an orbit control was found but the view did not start or stop with it');
+    else if (R.orbit) {
+      say('review', 'an orbit control was found, but the picture does not change with it: the light moves with the camera (light and normals in different spaces?) or the orbit does not run');
+    }
     else if (moving) say('review', 'the camera orbits, but no button toggles the orbit on/off (the slide asks for one)');
     else say('review', 'no orbit: no moving camera and no button toggling it');
   }
