@@ -203,13 +203,18 @@ async function gradeOpen(ctx, item, result) {
   let orbitToggles = false, stopped = !moving;
   const shadedPart = must.has('diffuse');
   const orbitFits = []; // the diffuse fit at each lit orbit position seen
-  const look = (im) => { // the brightness spread; lit views' fits are kept
+  const viewFits = []; // ... and at every lit view seen (the first one too)
+  const look = (im, orbiting = true) => { // the brightness spread; lit views' fits are kept
     const a = analyse(im, T);
     if (a.blank) return 0;
     const fit = diffuseFit(samples(im, a, { max: 1500 }), T);
-    if (fit && fit.spread >= T.litSpread * 1.5 && a.roundness < 0.3) orbitFits.push(fit);
+    if (fit && fit.spread >= T.litSpread * 1.5 && a.roundness < 0.3) {
+      viewFits.push(fit);
+      if (orbiting) orbitFits.push(fit);
+    }
     return fit ? fit.spread : 0;
   };
+  if (shadedPart) look(first, false);
   const sampleOrbit = async (im) => {
     // the light may be behind the sphere at first: look along the orbit (a few positions at least)
     // and a few positions at least, to see the lit side turn with the orbit (a light fixed in the world)
@@ -362,10 +367,12 @@ async function gradeOpen(ctx, item, result) {
   if (must.has('diffuse') || must.has('highlight')) {
     fit = diffuseFit(samples(img, an), T);
     result.numbers.fit = fit && { r2: fit.r2, ambient: fit.ambient, diffuse: fit.diffuse, light: fit.light, highlightPeak: fit.highlightPeak, spread: fit.spread };
+    // lit on both sides shows where the light comes from the side: any view seen on the orbit
+    const twoSided = [fit, ...viewFits].filter(Boolean).find((f) => f.r2TwoSided > f.r2 + 0.03 && f.r2 < 0.97);
     if (!fit) say('fail', 'too little of the sphere to read its shading');
     else if (fit.spread < T.litSpread / 2) say('fail', 'the sphere is evenly bright: no diffuse shading to see (from any orbit position tried)');
-    else if (fit.r2TwoSided > fit.r2 + 0.03 && fit.r2 < 0.97) {
-      say('fail', `the sphere is lit on both sides: brightness follows |n·w_i| (R² ${fmt(fit.r2TwoSided)}), not max(n·w_i, 0) (R² ${fmt(fit.r2)})`);
+    else if (twoSided) {
+      say('fail', `the sphere is lit on both sides: brightness follows |n·w_i| (R² ${fmt(twoSided.r2TwoSided)}), not max(n·w_i, 0) (R² ${fmt(twoSided.r2)})`);
     } else if (!must.has('highlight') && orbitFits.length && Math.min(...orbitFits.map((f) => f.r2)) < T.diffuseR2 - 0.1) {
       const worst = orbitFits.reduce((a, b) => (b.r2 < a.r2 ? b : a));
       say('fail', `brightness does not follow max(n·w_i, 0)·kd·Le + ambient at every orbit position (R² down to ${fmt(worst.r2)}): lit where it should be dark?`);
