@@ -163,12 +163,15 @@ async function gradeOpen(ctx, item, result) {
   const checks = []; // { level: 'pass'|'review'|'fail', reason }
   const say = (level, reason) => checks.push({ level, reason });
   await tick(ctx, 1000);
-  // a WebGPU page starts drawing only after its adapter and device promises (real time): wait a little for its first frame
-  for (let k = 0; k < 30; k++) {
+  // a page may start drawing only after promises that take real time (shaders fetched, a WebGPU
+  // adapter and device): wait for its first draw call, within firstFrameSeconds
+  const waitUntil = Date.now() + (rubric.firstFrameSeconds ?? 10) * 1000;
+  for (let k = 0; Date.now() < waitUntil; k++) {
     const state = await page.evaluate(() => ({ api: window.__grade.api, frames: window.__webgpuCapture ? window.__webgpuCapture.frames : 0,
-      adapter: window.__grade.adapter, gl: window.__grade.draws }));
-    if ((state.api && state.api !== 'webgpu') || state.frames > 0 || state.adapter === null) break;
-    if (!state.api && k >= 10) break;
+      adapter: window.__grade.adapter, draws: window.__grade.draws, errors: window.__grade.shaderErrors.length }));
+    if (state.draws > 0 && (state.api !== 'webgpu' || state.frames > 0)) break;
+    if (state.adapter === null || state.errors || (!state.api && k >= 20)) break;
+    if (k >= 10 && result.errors.some((e) => /^(page error|dialog)/.test(e))) break; // it threw or alerted: no need to wait longer
     await new Promise((resolve) => setTimeout(resolve, 100));
     await tick(ctx, 100);
   }
