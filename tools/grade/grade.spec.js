@@ -173,7 +173,7 @@ async function gradeOpen(ctx, item, result) {
     if (state.adapter === null || state.errors || (!state.api && k >= 20)) break;
     if (k >= 10 && result.errors.some((e) => /^(page error|dialog)/.test(e))) break; // it threw or alerted: no need to wait longer
     await new Promise((resolve) => setTimeout(resolve, 100));
-    await tick(ctx, 100);
+    await tick(ctx, 16); // one frame: the orbit's phase should depend on the machine's load as little as can be
   }
   const g = await page.evaluate(() => ({ api: window.__grade.api, draws: window.__grade.draws, shaderErrors: window.__grade.shaderErrors,
     gpuErrors: window.__grade.gpuErrors, adapter: window.__grade.adapter }));
