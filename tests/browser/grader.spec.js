@@ -75,7 +75,7 @@ test.describe('the WebGPU capture', () => {
 
 test.describe('grading the labelled class', () => {
   // one grading run, shared by the checks below (serial: one worker runs beforeAll once)
-  test.describe.configure({ mode: 'serial', timeout: 420_000 });
+  test.describe.configure({ mode: 'serial', timeout: 560_000 });
   let dir, out, report, labels;
   // eslint-disable-next-line no-empty-pattern -- Playwright wants the fixtures argument destructured
   test.beforeAll(async ({}, testInfo) => {
@@ -89,7 +89,7 @@ test.describe('grading the labelled class', () => {
     writeFileSync(rubric, JSON.stringify({ timeoutSeconds: 60, loadSeconds: 8, firstFrameSeconds: 6, reference: false }));
     const started = Date.now();
     const run = spawnSync(process.execPath, ['tools/grade/grade.js', '--batch', path.join(dir, 'class'), '--rubric', rubric, '--out', out],
-      { encoding: 'utf8', timeout: 400_000 });
+      { encoding: 'utf8', timeout: 540_000 });
     expect(run.status, run.stderr + run.stdout.slice(-3000)).toBe(0);
     report = JSON.parse(readFileSync(path.join(out, 'report.json'), 'utf8'));
     const parts = report.submissions.reduce((s, x) => s + x.parts.length, 0);

@@ -283,7 +283,8 @@ async function gradeOpen(ctx, item, result) {
   let coarsened = false;
   // (down first only where a coarse level is judged: P5's highlight per fragment)
   if (R.coarsen && stopped && must.has('perFragment')) {
-    const down = await step(R.coarsen, 'Coarsen', T.maxCoarsenings, same);
+    // down until the picture stops changing, or the silhouette is coarse (level 1 or so)
+    const down = await step(R.coarsen, 'Coarsen', T.maxCoarsenings, (a, b) => same(a, b) || b.an.blank || b.an.roundness > 2 * T.coarseRoundness);
     ladder = [down.length ? down[down.length - 1] : last];
     coarsened = down.length > 0;
   }
