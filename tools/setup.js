@@ -1,7 +1,7 @@
 #!/usr/bin/env node
-// Makes a fresh machine ready for `npm start` / `npm test`: installs the npm packages if they are
+// Makes a fresh machine ready for `npm start`, `npm test`, `npm run grade` and `npm run bench`: installs the npm packages if they are
 // missing, and checks for Debian's Chromium (installing it with apt-get when we are root).
-// Runs before `npm start` and `npm test` (npm's pre-scripts); uses only Node's own modules.
+// Runs before each of them (npm's pre-scripts); uses only Node's own modules.
 import { existsSync } from 'node:fs';
 import { spawnSync } from 'node:child_process';
 import { fileURLToPath } from 'node:url';
@@ -11,7 +11,7 @@ const root = path.dirname(path.dirname(fileURLToPath(import.meta.url)));
 const args = process.argv.slice(2);
 if (args.includes('--help')) {
   console.log(`usage: node tools/setup.js [--no-browser]
-Installs what npm start / npm test need on a fresh machine:
+Installs what npm start / test / run grade / run bench need on a fresh machine:
   - the npm packages (npm ci) when node_modules is missing or stale
   - Debian's chromium (apt-get) when /usr/bin/chromium is missing and we run as root
 --no-browser   skip the Chromium check (npm start only needs the packages)

@@ -15,18 +15,19 @@ const REFERENCE_SECONDS = 30;
 const HELP = `usage: npm run grade -- <submission-folder> [--part WP04P1=<path to html>]... [--rubric <file>] [--out <dir>]
        npm run grade -- --batch <folder with one submission per subfolder> [--rubric <file>] [--out <dir>]
 Opens each part (WP04P1 ... WP04P5, found by folder or file name: WP04P1, Part1, p01, w4p1,
-week04p01, ...) and this site's reference part in Chromium with time frozen, screenshots the
-canvases and compares them (pixelmatch; the object alone where backgrounds or sizes differ).
+week04p01, ...) in Chromium (WebGL or WebGPU) with time frozen, finds its controls, stops the
+orbit, subdivides until the silhouette settles, and gives each part a verdict (pass, review,
+fail) with reasons, from what the slide's step asks for. Our reference part is drawn beside it.
   --part P=FILE     use FILE (relative to the submission) for part P
-  --rubric FILE     JSON: {"threshold": 0.02, "timeoutSeconds": 30, "parts": {"WP04P1": {"query": {"level": 4},
-                    "actions": [{"click": "/subdiv/i", "times": 3}, {"slider": "/shin/i", "value": 50}], "threshold": 0.05}}}
+  --rubric FILE     a rubric in place of tools/grade/rubric.json (copy that file and edit it: time bounds,
+                    thresholds, control patterns, what each part must show)
   --out DIR         where report.html, report.json (and grades.csv in batch mode) go
                     (default out/grade/<name>)
   --shard I/N       grade only the I-th of N shares of the parts (Playwright's sharding), to split a
                     class across machines; gather the out folders and run --report-only on them
   --report-only     rebuild the report from the parts already graded in --out
   --workers N       parts graded at once (default 2)
-exit codes: 0 it ran (whatever the scores), 1 it could not run, 2 bad usage`;
+exit codes: 0 it ran (whatever the verdicts), 1 it could not run, 2 bad usage`;
 
 function fail(message, code = 1) {
   console.error(`grade: ${message}`);
@@ -59,51 +60,84 @@ function parseArgs(argv) {
 const esc = (s) => String(s).replace(/[&<>"']/g, (c) => ({ '&': '&amp;', '<': '&lt;', '>': '&gt;', '"': '&quot;', "'": '&#39;' })[c]);
 const safeName = (s) => s.replace(/[^A-Za-z0-9._-]+/g, '_');
 
+const DEFAULT_RUBRIC = path.join(here, 'rubric.json');
+
+/** The rubric: tools/grade/rubric.json, or the teacher's file in its place (keys it leaves out keep the defaults). */
 function readRubric(file) {
-  const base = { threshold: 0.02, timeoutSeconds: 30, parts: {} };
+  const load = (f) => {
+    try {
+      return JSON.parse(readFileSync(f, 'utf8'));
+    } catch (err) {
+      return fail(`cannot read the rubric ${f}: ${err.message}`, 2);
+    }
+  };
+  const base = load(DEFAULT_RUBRIC);
   if (!file) return base;
-  let r;
-  try {
-    r = JSON.parse(readFileSync(file, 'utf8'));
-  } catch (err) {
-    fail(`cannot read the rubric ${file}: ${err.message}`, 2);
-  }
-  return { ...base, ...r, parts: { ...(r.parts || {}) } };
+  const r = load(file);
+  const parts = { ...base.parts };
+  for (const [k, v] of Object.entries(r.parts || {})) parts[k] = { ...(base.parts[k] || {}), ...v };
+  return { ...base, ...r, thresholds: { ...base.thresholds, ...(r.thresholds || {}) }, controls: { ...base.controls, ...(r.controls || {}) }, parts };
 }
 
-/** The score of a submission: the mean mismatch of its parts, a part that did not run counting 1. */
-function score(parts) {
-  return parts.reduce((s, p) => s + (p.status === 'ok' ? p.mismatch : 1), 0) / PARTS.length;
+const VERDICTS = ['pass', 'review', 'fail'];
+/** The passes of a submission, then its reviews (a count a reader can read: more is better). */
+function passes(parts) {
+  return parts.filter((p) => p.verdict === 'pass').length;
 }
+const badge = (v) => `<span class="badge ${esc(v || 'fail')}">${esc(v || 'fail')}</span>`;
 
 function writeReport(out, submissions) {
-  const rows = submissions.map((s) => ({ ...s, score: score(s.parts) })).sort((a, b) => a.score - b.score);
+  const rows = submissions.map((s) => ({ ...s, passes: passes(s.parts), reviews: s.parts.filter((p) => p.verdict === 'review').length }))
+    .sort((a, b) => b.passes - a.passes || b.reviews - a.reviews || a.name.localeCompare(b.name));
   writeFileSync(path.join(out, 'report.json'), JSON.stringify({ generated: new Date().toISOString(), submissions: rows }, null, 1));
-  const pct = (x) => (x === null || x === undefined ? '–' : `${(100 * x).toFixed(1)}%`);
-  const summary = rows.map((s) => `<tr><td><a href="#${esc(safeName(s.name))}">${esc(s.name)}</a></td><td>${pct(s.score)}</td>` +
+  const img = (s, r, k) => (r.images && r.images[k] ? `<img src="${esc(`parts/${safeName(s.name)}/${r.images[k]}`)}" alt="${esc(`${r.part} ${k}`)}" loading="lazy">` : '');
+  const anchor = (s, r) => `${safeName(s.name)}-${r.part}`;
+  const grid = rows.map((s) => `<tr data-name="${esc(s.name)}" data-passes="${s.passes}"><th scope="row"><a href="#${esc(safeName(s.name))}">${esc(s.name)}</a></th><td class="num">${s.passes}</td>` +
     PARTS.map((p) => {
       const r = s.parts.find((x) => x.part === p);
-      return `<td class="${r.status === 'ok' ? (r.pass ? 'pass' : 'fail') : 'bad'}">${r.status === 'ok' ? pct(r.mismatch) : esc(r.status)}</td>`;
+      return `<td class="cell ${esc(r.verdict)}" data-verdict="${VERDICTS.indexOf(r.verdict)}"><a href="#${esc(anchor(s, r))}">${badge(r.verdict)}` +
+        `<span class="api">${esc(r.api || '')}</span><span class="thumbs">${img(s, r, 'first')}${img(s, r, 'judged')}</span></a></td>`;
     }).join('') + '</tr>').join('\n');
-  const details = rows.map((s) => `<section id="${esc(safeName(s.name))}"><h2>${esc(s.name)} · score ${pct(s.score)}</h2>` +
-    s.parts.map((r) => `<div class="part"><h3>${r.part}: ${esc(r.status)}${r.status === 'ok' ? ` · ${pct(r.mismatch)} of pixels differ (${esc(r.comparison)}), RMSE ${(255 * r.rmse).toFixed(1)}/255 · ${r.pass ? 'pass' : 'fail'}` : ''}</h3>` +
+  const list = (title, items, cls) => (items && items.length ? `<p>${title}</p><ul class="${cls}">${items.map((e) => `<li>${esc(e)}</li>`).join('')}</ul>` : '');
+  const details = rows.map((s) => `<section id="${esc(safeName(s.name))}"><h2>${esc(s.name)} · ${s.passes} of ${PARTS.length} pass</h2>` +
+    s.parts.map((r) => `<div class="part" id="${esc(anchor(s, r))}"><h3>${r.part} ${badge(r.verdict)} <small>${esc(r.api || 'no API')} · ${esc(r.status)}${r.seconds ? ` · ${r.seconds.toFixed(0)} s` : ''}</small></h3>` +
       `<p class="file">${r.file ? esc(r.file) : 'no file'}</p>` +
-      (r.images ? `<div class="images">${['reference', 'submission', 'diff'].map((k) => `<figure><img src="${esc(`parts/${safeName(s.name)}/${r.images[k]}`)}" alt="${k}"><figcaption>${k}</figcaption></figure>`).join('')}</div>` : '') +
-      (r.notes && r.notes.length ? `<ul class="notes">${r.notes.map((n) => `<li>${esc(n)}</li>`).join('')}</ul>` : '') +
-      (r.errors.length ? `<p>Errors the page printed or caused:</p><ul class="errors">${r.errors.map((e) => `<li>${esc(e)}</li>`).join('')}</ul>` : '') +
-      (r.blocked.length ? `<p>Blocked:</p><ul class="blocked">${r.blocked.map((e) => `<li>${esc(e)}</li>`).join('')}</ul>` : '') +
+      list('Reasons:', r.reasons, 'reasons') +
+      (r.images ? `<div class="images">${['first', 'coarse', 'judged', 'reference', 'diff'].filter((k) => r.images[k]).map((k) => `<figure>${img(s, r, k)}<figcaption>${{ first: 'first frame', coarse: 'a coarse level', judged: 'judged (submission)', reference: 'our reference', diff: 'difference' }[k]}</figcaption></figure>`).join('')}</div>` : '') +
+      (r.numbers && Object.keys(r.numbers).length ? `<details><summary>numbers</summary><pre>${esc(JSON.stringify(r.numbers, (k, v) => (typeof v === 'number' ? Number(v.toFixed(4)) : v), 1))}</pre></details>` : '') +
+      (r.mismatch !== null && r.mismatch !== undefined ? `<p>Against our reference: ${(100 * r.mismatch).toFixed(1)}% of pixels differ (${esc(r.comparison)}), RMSE ${(255 * r.rmse).toFixed(1)}/255 (evidence only).</p>` : '') +
+      list('Controls found:', Object.entries(r.controls || {}).map(([k, v]) => `${k}: ${v}`), 'controls') +
+      list('What the grader did:', r.actions, 'actions') +
+      list('Notes:', r.notes, 'notes') +
+      list('Errors the page printed or caused:', r.errors, 'errors') +
+      list('Blocked:', r.blocked, 'blocked') +
       '</div>').join('\n') + '</section>').join('\n');
+  const sortScript = `<script>
+for (const th of document.querySelectorAll('#grid thead th[data-sort]')) th.addEventListener('click', () => {
+  const k = th.dataset.sort, body = document.querySelector('#grid tbody'), desc = th.dataset.desc = th.dataset.desc === '1' ? '0' : '1';
+  const key = (tr) => k === 'name' ? tr.dataset.name : k === 'passes' ? -Number(tr.dataset.passes) : Number(tr.children[Number(k)].dataset.verdict);
+  [...body.rows].sort((a, b) => { const x = key(a), y = key(b); const c = x < y ? -1 : x > y ? 1 : 0; return desc === '1' ? c : -c; }).forEach((tr) => body.append(tr));
+});
+</script>`;
+  const totals = PARTS.map((p) => VERDICTS.map((v) => rows.filter((s) => s.parts.find((x) => x.part === p).verdict === v).length).join(' / '));
   writeFileSync(path.join(out, 'report.html'), `<!doctype html><html lang="en"><head><meta charset="utf-8"><title>Grading report</title>
-<style>body{font-family:system-ui,sans-serif;margin:1rem 2rem;color:#1d2330}table{border-collapse:collapse}td,th{border:1px solid #ccd;padding:.2rem .6rem;text-align:right}
-td:first-child{text-align:left}.pass{background:#e3f6e3}.fail{background:#fde4e4}.bad{background:#eee;color:#555}.images{display:flex;gap:.8rem;flex-wrap:wrap}
-figure{margin:0}img{max-width:300px;border:1px solid #ccd;image-rendering:pixelated}.errors li{color:#a00}.file{color:#556;font-family:monospace}</style></head><body>
-<h1>Grading report</h1><p>Each part and this site's reference part were opened in Chromium with time frozen and the same
-second of animation; the canvases were compared with pixelmatch (anti-aliasing aware). "object-only": the backgrounds
-differ, so each picture's background (from its corners) was masked out. Score: the mean share of differing pixels over
-the five parts, a part that did not run counting 100%. Sorted by score, best first.</p>
-<table><tr><th>submission</th><th>score</th>${PARTS.map((p) => `<th>${p}</th>`).join('')}</tr>
-${summary}</table>
-${details}</body></html>`);
+<style>body{font-family:system-ui,sans-serif;margin:1rem 2rem;color:#1d2330}table{border-collapse:collapse}td,th{border:1px solid #ccd;padding:.2rem .4rem;vertical-align:top}
+th[data-sort]{cursor:pointer;text-decoration:underline dotted}.num{text-align:right}.cell a{color:inherit;text-decoration:none;display:block}
+.cell.pass{background:#e3f6e3}.cell.review{background:#fff4d6}.cell.fail{background:#fde4e4}
+.badge{display:inline-block;padding:0 .4rem;border-radius:.6rem;font-size:.8rem;font-weight:600;color:#fff}.badge.pass{background:#2a7d2a}.badge.review{background:#a66b00}.badge.fail{background:#b3261e}
+.api{color:#556;font-size:.75rem;margin-left:.3rem}.thumbs{display:flex;gap:2px;margin-top:2px}.thumbs img{width:64px;height:64px;object-fit:contain;border:1px solid #ccd;background:#fff}
+.images{display:flex;gap:.8rem;flex-wrap:wrap}figure{margin:0}figure img{max-width:260px;border:1px solid #ccd;image-rendering:pixelated}
+.errors li{color:#a00}.file{color:#556;font-family:monospace}.part{border-top:1px solid #dde;padding:.3rem 0}</style></head><body>
+<h1>Grading report</h1><p>Each part was opened in Chromium (WebGL, or WebGPU on SwiftShader with its frames read back), with time
+frozen. The grader found its controls, stopped or sampled the orbit, coarsened and subdivided until the silhouette stopped
+changing, and judged the picture by what the slide's step asks for (a round sphere; normals as colours; diffuse shading for a
+fitted light; a highlight; sliders on the input event; shading per fragment). Verdicts: pass, review (a teacher should look),
+fail. Click a cell for its reasons and pictures; click a column head to sort.</p>
+<table id="grid"><thead><tr><th data-sort="name">submission</th><th data-sort="passes">passes</th>${PARTS.map((p, i) => `<th data-sort="${i + 2}">${p}</th>`).join('')}</tr></thead>
+<tbody>
+${grid}
+</tbody><tfoot><tr><th>pass / review / fail</th><td></td>${totals.map((t) => `<td>${t}</td>`).join('')}</tr></tfoot></table>
+${details}${sortScript}</body></html>`);
   return rows;
 }
 
@@ -133,12 +167,11 @@ function main() {
       for (const part of PARTS) {
         const cfg = rubric.parts[part] || {};
         const page = parts[part] && existsSync(path.join(s.root, parts[part])) ? parts[part] : null;
-        items.push({ name: s.name, part, root: s.root, page, actions: cfg.actions || [], referenceQuery: cfg.query || {},
-          threshold: cfg.threshold ?? rubric.threshold, resultFile: path.join(out, 'parts', safeName(s.name), `${part}.json`) });
+        items.push({ name: s.name, part, root: s.root, page, referenceQuery: cfg.referenceQuery || {}, resultFile: path.join(out, 'parts', safeName(s.name), `${part}.json`) });
       }
     }
     const planFile = path.join(out, 'plan.json');
-    writeFileSync(planFile, JSON.stringify({ repo, out, timeoutSeconds: rubric.timeoutSeconds, referenceSeconds: REFERENCE_SECONDS, items }, null, 1));
+    writeFileSync(planFile, JSON.stringify({ repo, out, rubric, timeoutSeconds: rubric.timeoutSeconds, referenceSeconds: REFERENCE_SECONDS, items }, null, 1));
     console.log(`grade: ${submissions.length} submission(s), ${items.length} parts; ${o.workers || 2} at a time, at most ${rubric.timeoutSeconds} s for each student page, and ${REFERENCE_SECONDS} s more for our reference`);
     const args = ['test', '-c', path.join(here, 'playwright.config.js')];
     if (o.shard) args.push('--shard', o.shard);
@@ -164,21 +197,19 @@ function main() {
   }
   for (const s of byName.values()) {
     for (const part of PARTS) {
-      if (!s.parts.some((p) => p.part === part)) s.parts.push({ name: s.name, part, status: 'not graded here', mismatch: null, rmse: null, pass: false, errors: [], blocked: [] });
+      if (!s.parts.some((p) => p.part === part)) s.parts.push({ name: s.name, part, status: 'not graded here', verdict: 'fail', reasons: ['not graded in this run'], api: null, actions: [], mismatch: null, rmse: null, pass: false, errors: [], blocked: [] });
     }
     s.parts.sort((a, b) => a.part.localeCompare(b.part));
   }
   const rows = writeReport(out, [...byName.values()]);
   if (o.batch) {
-    const csv = ['name,score,' + PARTS.map((p) => `${p}_status,${p}_mismatch`).join(',')]
-      .concat(rows.map((s) => [JSON.stringify(s.name), s.score.toFixed(4), ...PARTS.flatMap((p) => {
-        const r = s.parts.find((x) => x.part === p);
-        return [r.status, r.mismatch === null ? '' : r.mismatch.toFixed(4)];
-      })].join(','))).join('\n') + '\n';
+    const csv = ['name,passes,' + PARTS.join(',') + ',' + PARTS.map((p) => `${p}_reasons`).join(',')]
+      .concat(rows.map((s) => [JSON.stringify(s.name), s.passes, ...PARTS.map((p) => s.parts.find((x) => x.part === p).verdict),
+        ...PARTS.map((p) => JSON.stringify((s.parts.find((x) => x.part === p).reasons || []).filter((r) => /^(FAIL|REVIEW)|nothing|timeout|not |no /i.test(r)).join('; ')))].join(','))).join('\n') + '\n';
     writeFileSync(path.join(out, 'grades.csv'), csv);
   }
   for (const s of rows) {
-    console.log(`${s.name}: score ${(100 * s.score).toFixed(1)}% · ` + s.parts.map((p) => `${p.part} ${p.status === 'ok' ? `${(100 * p.mismatch).toFixed(1)}%` : p.status}`).join(', '));
+    console.log(`${s.name}: ${s.passes} of ${PARTS.length} pass · ` + s.parts.map((p) => `${p.part} ${p.verdict}${p.api ? ` (${p.api})` : ''}`).join(', '));
   }
   console.log(`grade: report at ${path.join(out, 'report.html')}`);
 }

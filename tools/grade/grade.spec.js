@@ -1,19 +1,26 @@
-// One test per part of the plan that tools/grade/grade.js wrote (GRADE_PLAN): open the student's
-// page and the reference's in Chromium with time frozen, let them draw, screenshot the canvas,
-// compare, and write the part's result (JSON and PNGs) for grade.js to gather into the report.
+// One test per part of the plan that tools/grade/grade.js wrote (GRADE_PLAN). For each part the
+// grader does what a teacher does by hand: open the page (time frozen, only the submission's own
+// files reachable), see which API it uses and what it draws, find its controls, stop or sample
+// the orbit, coarsen and subdivide until the silhouette stops changing, then judge the picture by
+// the properties the slide's step asks for (tools/grade/judge.js), and write a verdict with
+// reasons, the actions done, and the pictures (first, judged, our reference, difference).
 import { test } from '@playwright/test';
 import { readFileSync, writeFileSync, mkdirSync, statSync } from 'node:fs';
 import path from 'node:path';
 import { PNG } from 'pngjs';
 import { compareImages } from './compare.js';
+import { instrumentScript } from './instrument.js';
+import { webgpuCaptureScript, readWebGPUFrame } from '../webgpu-capture.js';
+import { analyse, samples, normalColours, diffuseFit, silhouetteChange, shadingChange, pictureChange } from './judge.js';
 
 const plan = JSON.parse(readFileSync(process.env.GRADE_PLAN, 'utf8'));
+const rubric = plan.rubric;
+const T = rubric.thresholds;
 const TYPES = { '.html': 'text/html', '.htm': 'text/html', '.js': 'text/javascript', '.mjs': 'text/javascript', '.css': 'text/css',
   '.json': 'application/json', '.png': 'image/png', '.jpg': 'image/jpeg', '.jpeg': 'image/jpeg', '.gif': 'image/gif', '.svg': 'image/svg+xml',
   '.vert': 'text/plain', '.frag': 'text/plain', '.glsl': 'text/plain', '.txt': 'text/plain', '.wgsl': 'text/plain' };
 const FROZEN = new Date('2026-01-05T09:00:00Z');
-const PIN = '[data-grade-canvas] { position: fixed !important; left: 0 !important; top: 0 !important; margin: 0 !important; ' +
-  'border: 0 !important; outline: none !important; z-index: 2147483647 !important; }';
+const fmt = (x, d = 2) => (x === null || x === undefined || Number.isNaN(x) ? '–' : Number(x).toFixed(d));
 
 /** Serves `root` at `origin` through the browser's request routing: nothing else is reachable. */
 async function confine(context, root, origin, log) {
@@ -48,100 +55,433 @@ async function confine(context, root, origin, log) {
   });
 }
 
-/** Runs the rubric's actions: click a button by its label, set a slider by its label. */
-async function act(page, actions, log) {
-  const toRegExp = (s) => {
-    const m = /^\/(.*)\/([a-z]*)$/.exec(s);
-    return m ? new RegExp(m[1], m[2]) : new RegExp(s.replace(/[.*+?^${}()|[\]\\]/g, '\\$&'), 'i');
-  };
-  for (const a of actions || []) {
-    try {
-      if (a.click) {
-        const target = page.getByRole('button', { name: toRegExp(a.click) }).first();
-        for (let k = 0; k < (a.times || 1); k++) {
-          await target.click({ timeout: 2000 });
-          await page.clock.runFor(100);
-        }
-      } else if (a.slider) {
-        await page.getByLabel(toRegExp(a.slider)).first().fill(String(a.value), { timeout: 2000 });
-        await page.clock.runFor(100);
-      } else if (a.check || a.uncheck) {
-        const box = page.getByRole('checkbox', { name: toRegExp(a.check || a.uncheck) }).first();
-        await (a.check ? box.check({ timeout: 2000 }) : box.uncheck({ timeout: 2000 }));
-        await page.clock.runFor(100);
-      }
-    } catch {
-      log.errors.push(`rubric action could not be done: ${JSON.stringify(a)}`);
-    }
-  }
-}
-
-/**
- * Opens `rel` under `root` with time frozen, lets it draw, and returns the largest canvas as PNG
- * bytes, or a status: 'no-canvas', 'error'.
- */
-async function capture(browser, root, rel, query, actions, log) {
+/** A page under the grader's eyes: the capture and instrument scripts in, time frozen. */
+async function openPage(browser, root, rel, query, log) {
   const origin = root === plan.repo ? 'http://reference.localhost' : 'http://submission.localhost';
-  const context = await browser.newContext({ viewport: { width: 900, height: 900 }, deviceScaleFactor: 1 });
+  const context = await browser.newContext({ viewport: { width: 1000, height: 1000 }, deviceScaleFactor: 1 });
+  await confine(context, root, origin, log);
+  await context.addInitScript(webgpuCaptureScript);
+  await context.addInitScript(instrumentScript);
+  const page = await context.newPage();
+  page.on('popup', (popup) => {
+    log.blocked.push(`popup: ${popup.url()}`);
+    popup.close().catch(() => {});
+  });
+  page.on('pageerror', (e) => log.errors.push(`page error: ${e.message}`));
+  page.on('console', (m) => { if (m.type() === 'error' && !/Failed to load resource/.test(m.text())) log.errors.push(`console: ${m.text()}`); });
+  page.on('dialog', (d) => { log.errors.push(`dialog: ${d.message()}`); d.dismiss().catch(() => {}); });
+  await page.clock.install({ time: FROZEN });
+  await page.clock.pauseAt(new Date(FROZEN.getTime() + 2000)); // from here time moves only when we say so
+  const url = `${origin}/${rel.split(path.sep).map(encodeURIComponent).join('/')}${query ? `?${query}` : ''}`;
+  let response;
   try {
-    await confine(context, root, origin, log);
-    const page = await context.newPage();
-    page.on('popup', (popup) => {
-      log.blocked.push(`popup: ${popup.url()}`);
-      popup.close().catch(() => {});
-    });
-    page.on('pageerror', (e) => log.errors.push(`page error: ${e.message}`));
-    page.on('console', (m) => { if (m.type() === 'error' && !/Failed to load resource/.test(m.text())) log.errors.push(`console: ${m.text()}`); });
-    page.on('dialog', (d) => { log.errors.push(`dialog: ${d.message()}`); d.dismiss().catch(() => {}); });
-    await page.clock.install({ time: FROZEN });
-    await page.clock.pauseAt(new Date(FROZEN.getTime() + 2000)); // from here time moves only when we say so
-    const url = `${origin}/${rel.split(path.sep).map(encodeURIComponent).join('/')}${query ? `?${query}` : ''}`;
-    const response = await page.goto(url, { waitUntil: 'load' });
-    if (!response || !response.ok()) return { status: 'error', why: `the page answered ${response ? response.status() : 'nothing'}` };
-    await page.waitForLoadState('networkidle').catch(() => {});
-    // frames run on the frozen clock: the same second of animation for every page
-    await page.clock.runFor(1000);
-    await act(page, actions, log);
-    const found = await page.evaluate(() => {
-      const all = [...document.querySelectorAll('canvas')].filter((c) => c.clientWidth > 0 && c.clientHeight > 0);
-      if (!all.length) return null;
-      const c = all.reduce((a, b) => (b.clientWidth * b.clientHeight > a.clientWidth * a.clientHeight ? b : a));
-      c.setAttribute('data-grade-canvas', '');
-      return { width: Math.round(c.clientWidth), height: Math.round(c.clientHeight), pixelWidth: c.width, pixelHeight: c.height };
-    });
-    if (!found) return { status: 'no-canvas' };
-    // let it settle: two screenshots 100 ms of frozen time apart that agree, three tries at most
-    let png = null;
-    for (let k = 0; k < 3; k++) {
-      const shot = await page.screenshot({ style: PIN, clip: { x: 0, y: 0, width: found.width, height: found.height } });
-      if (png && Buffer.compare(png, shot) === 0) break;
-      png = shot;
-      await page.clock.runFor(100);
-    }
-    return { status: 'ok', png, canvas: found };
-  } finally {
-    await context.close();
+    response = await page.goto(url, { waitUntil: 'load', timeout: (rubric.loadSeconds ?? 20) * 1000 });
+  } catch (err) {
+    if (!/Timeout/i.test(err.message)) throw err;
+    return { context, page, why: `it did not finish loading in ${rubric.loadSeconds ?? 20} s (a script that never returns?)` };
   }
+  if (!response || !response.ok()) return { context, page, why: `the page answered ${response ? response.status() : 'nothing'}` };
+  await page.waitForLoadState('networkidle', { timeout: 5000 }).catch(() => {});
+  return { context, page };
 }
 
-/** Resizes a PNG in the browser (its own resampling), to compare pictures of one size. */
-async function resize(browser, png, width, height) {
-  const page = await browser.newPage();
-  try {
-    const data = await page.evaluate(async ([b64, w, h]) => {
-      const bytes = Uint8Array.from(atob(b64), (ch) => ch.charCodeAt(0));
-      const bitmap = await createImageBitmap(new Blob([bytes], { type: 'image/png' }));
-      const canvas = new OffscreenCanvas(w, h);
-      const ctx = canvas.getContext('2d');
-      ctx.drawImage(bitmap, 0, 0, w, h);
-      return Array.from(ctx.getImageData(0, 0, w, h).data);
-    }, [png.toString('base64'), width, height]);
-    const out = new PNG({ width, height });
-    out.data = Buffer.from(data);
-    return out;
-  } finally {
-    await page.close();
+/** The canvas as { width, height, data } (RGBA), after the last WebGPU frame is copied; or null. */
+async function snap(page) {
+  await readWebGPUFrame(page);
+  const r = await page.evaluate(() => window.__grade.pixels());
+  if (!r) return null;
+  return { width: r.width, height: r.height, api: r.api, data: Buffer.from(r.rgba, 'base64') };
+}
+
+/** Lets `ms` of frozen time pass (animation frames run), and counts the wall time it took. */
+async function tick(ctx, ms) {
+  const t0 = Date.now();
+  // jump ahead (due timers and one animation frame fire once), then two frames at 60 Hz: a slow
+  // page with many loops is not made to draw every frame of the time skipped
+  if (ms > 40) await ctx.page.clock.fastForward(ms - 32);
+  await ctx.page.clock.runFor(Math.min(ms, 32));
+  await readWebGPUFrame(ctx.page);
+  ctx.busy += Date.now() - t0;
+}
+
+const re = (s) => new RegExp(s, 'i');
+/** The controls a teacher would use, by role: { subdivide, coarsen, levelSlider, orbit, depth, cull, clockwise, kd, ... }. */
+function roles(controls) {
+  const P = rubric.controls;
+  const out = {};
+  const take = (role, c) => { if (!out[role]) out[role] = c; };
+  for (const c of controls) {
+    const names = [c.id, c.name, c.text].filter(Boolean);
+    const is = (role) => names.some((t) => re(P[role]).test(t));
+    const clickable = ['button', 'submit', 'a', 'div', 'span'].includes(c.type) || c.type === 'image';
+    if (clickable) {
+      if (is('subdivide')) take('subdivide', c);
+      else if (is('coarsen')) take('coarsen', c);
+      else if (is('orbit')) take('orbit', c);
+      else if (is('depth')) take('depth', c);
+      else if (is('cull')) take('cull', c);
+      else if (is('clockwise')) take('clockwise', c);
+    } else if (c.type === 'checkbox') {
+      for (const role of ['orbit', 'depth', 'clockwise', 'cull']) if (is(role)) { take(role, c); break; }
+    } else if (c.type === 'range' || c.type === 'number' || c.type === 'select') {
+      if (is('levelSlider')) take('levelSlider', c);
+      else for (const role of ['kd', 'ks', 's', 'Le', 'La']) if (is(role)) { take(role, c); break; }
+    }
   }
+  return out;
+}
+
+/** Clicks a control; false when it is disabled or cannot be clicked (said in the actions). */
+async function click(ctx, c, what) {
+  const target = ctx.page.locator(`[data-grade-control="${c.index}"]`);
+  const name = `${what} ("${(c.text || c.id).slice(0, 40)}")`;
+  if (await target.isDisabled().catch(() => false)) {
+    ctx.actions.push(`${name} is disabled`);
+    return false;
+  }
+  try {
+    await target.click({ timeout: 3000 });
+  } catch (err) {
+    ctx.actions.push(`could not click ${name}: ${err.message.split('\n')[0]}`);
+    return false;
+  }
+  ctx.actions.push(`clicked ${name}`);
+  await tick(ctx, 100);
+  return true;
+}
+
+function png(img) {
+  const p = new PNG({ width: img.width, height: img.height });
+  img.data.copy(p.data);
+  return PNG.sync.write(p);
+}
+
+/** Brings the part to a comparable state and judges it. Returns { verdict, reasons, ... }. */
+async function gradeOpen(ctx, item, result) {
+  const { page } = ctx;
+  const must = new Set((rubric.parts[item.part] || {}).must || []);
+  const checks = []; // { level: 'pass'|'review'|'fail', reason }
+  const say = (level, reason) => checks.push({ level, reason });
+  await tick(ctx, 1000);
+  // a page may start drawing only after promises that take real time (shaders fetched, a WebGPU
+  // adapter and device): wait for its first draw call, within firstFrameSeconds
+  const waitUntil = Date.now() + (rubric.firstFrameSeconds ?? 10) * 1000;
+  for (let k = 0; Date.now() < waitUntil; k++) {
+    const state = await page.evaluate(() => ({ api: window.__grade.api, frames: window.__webgpuCapture ? window.__webgpuCapture.frames : 0,
+      adapter: window.__grade.adapter, draws: window.__grade.draws, errors: window.__grade.shaderErrors.length }));
+    if (state.draws > 0 && (state.api !== 'webgpu' || state.frames > 0)) break;
+    if (state.adapter === null || state.errors || (!state.api && k >= 20)) break;
+    if (k >= 10 && result.errors.some((e) => /^(page error|dialog)/.test(e))) break; // it threw or alerted: no need to wait longer
+    await new Promise((resolve) => setTimeout(resolve, 100));
+    await tick(ctx, 16); // one frame: the orbit's phase should depend on the machine's load as little as can be
+  }
+  const g = await page.evaluate(() => ({ api: window.__grade.api, draws: window.__grade.draws, shaderErrors: window.__grade.shaderErrors,
+    gpuErrors: window.__grade.gpuErrors, adapter: window.__grade.adapter }));
+  result.api = g.api;
+  const first = await snap(page);
+  if (!first) return { fail: 'no canvas on the page' };
+  result.canvas = { width: first.width, height: first.height };
+  ctx.images.first = first;
+  for (const e of g.shaderErrors) say('fail', e);
+  if (g.api === 'webgpu' && g.adapter === null) say('fail', 'no WebGPU adapter: the page could not start WebGPU');
+  let an = analyse(first, T);
+  const firstAn = an;
+  if (an.blank) {
+    const why = g.shaderErrors[0] || g.gpuErrors[0] || result.errors.find((e) => /page error|dialog/.test(e));
+    if (!g.api) return { fail: `drew nothing: the page never got a WebGL or WebGPU context${why ? ` (${why})` : ''}` };
+    if (!g.draws) return { fail: `drew nothing: the canvas is one colour, no draw call${why ? ` (${why})` : ''}` };
+    return { fail: `drew nothing visible: the canvas is one colour${why ? ` (${why})` : ''}` };
+  }
+
+  const controls = await page.evaluate(() => window.__grade.controls());
+  const R = roles(controls);
+  result.controls = Object.fromEntries(Object.entries(R).map(([k, c]) => [k, `${c.type} "${(c.text || c.id).slice(0, 40)}"${c.events.length ? ` (listens: ${c.events.join(', ')})` : ''}`]));
+
+  // ---- the orbit: is it moving? sample it, then stop it where the sphere is well lit ----
+  let cur = first;
+  await tick(ctx, 500);
+  let next = await snap(page);
+  const moving = pictureChange(cur, next) > 0.001;
+  cur = next;
+  let orbitToggles = false, stopped = !moving;
+  const shadedPart = must.has('diffuse');
+  const orbitFits = []; // the diffuse fit at each lit orbit position seen
+  const viewFits = []; // ... and at every lit view seen (the first one too)
+  const look = (im, orbiting = true) => { // the brightness spread; lit views' fits are kept
+    const a = analyse(im, T);
+    if (a.blank) return 0;
+    const fit = diffuseFit(samples(im, a, { max: 1500 }), T);
+    if (fit && fit.spread >= T.litSpread * 1.5 && a.roundness < 0.3) {
+      viewFits.push(fit);
+      if (orbiting) orbitFits.push(fit);
+    }
+    return fit ? fit.spread : 0;
+  };
+  if (shadedPart) look(first, false);
+  const sampleOrbit = async (im) => {
+    // the light may be behind the sphere at first: look along the orbit (a few positions at least)
+    // and a few positions at least, to see the lit side turn with the orbit (a light fixed in the world)
+    let k = 0;
+    for (; k < T.orbitSamples && (look(im) < T.litSpread * 1.5 || k < 2); k++) {
+      await tick(ctx, T.orbitSampleSeconds * 1000);
+      im = await snap(page);
+    }
+    ctx.actions.push(`sampled the orbit at ${k} positions ${fmt(T.orbitSampleSeconds, 1)} s apart (${orbitFits.length} lit)`);
+    return im;
+  };
+  if (moving) {
+    ctx.actions.push('the picture moves by itself (an orbit or animation)');
+    if (shadedPart) cur = await sampleOrbit(cur);
+    if (R.orbit) {
+      await click(ctx, R.orbit, 'the orbit control');
+      const a = await snap(page);
+      await tick(ctx, 400);
+      const b = await snap(page);
+      if (pictureChange(a, b) <= 0.001) {
+        orbitToggles = stopped = true;
+        ctx.actions.push('the orbit stopped');
+      } else ctx.actions.push('the picture still moves after the orbit control');
+      cur = b;
+    }
+  } else if (R.orbit && shadedPart) {
+    await click(ctx, R.orbit, 'the orbit control');
+    await tick(ctx, 400);
+    const b = await snap(page);
+    if (pictureChange(cur, b) > 0.001) {
+      orbitToggles = true;
+      ctx.actions.push('the orbit started');
+      await sampleOrbit(b);
+      await click(ctx, R.orbit, 'the orbit control again');
+      const c = await snap(page);
+      await tick(ctx, 300);
+      cur = await snap(page);
+      stopped = pictureChange(c, cur) <= 0.001;
+      if (stopped) ctx.actions.push('the orbit stopped');
+    }
+  }
+
+  // ---- the level: coarsen to the bottom, then subdivide until the silhouette stops changing ----
+  let last = { img: cur, an: analyse(cur, T) };
+  // coarsening goes on until the picture stops changing (the bottom level); subdividing until the
+  // silhouette does (the finest level that matters at this size)
+  const step = async (c, what, bound, settled) => {
+    const got = [];
+    for (let k = 0; k < bound; k++) {
+      if (!await click(ctx, c, what)) break;
+      const img = await snap(page);
+      const a = analyse(img, T);
+      const done = settled(last, { img, an: a });
+      last = { img, an: a };
+      got.push(last);
+      if (done) break;
+    }
+    return got;
+  };
+  const same = (a, b) => pictureChange(a.img, b.img) <= 0.0005;
+  const settledSilhouette = (a, b) => silhouetteChange(a.an, b.an) <= T.silhouetteSettled;
+  let ladder = [last];
+  let coarsened = false;
+  // (down first only where a coarse level is judged: P5's highlight per fragment)
+  if (R.coarsen && stopped && must.has('perFragment')) {
+    // down until the picture stops changing, or the silhouette is coarse (level 1 or so)
+    const down = await step(R.coarsen, 'Coarsen', T.maxCoarsenings, (a, b) => same(a, b) || b.an.blank || b.an.roundness > 2 * T.coarseRoundness);
+    ladder = [down.length ? down[down.length - 1] : last];
+    coarsened = down.length > 0;
+  }
+  if (R.subdivide) {
+    ladder.push(...await step(R.subdivide, 'Subdivide', T.maxSubdivisions + (coarsened ? T.maxCoarsenings : 0), settledSilhouette));
+  } else if (R.levelSlider && R.levelSlider.type === 'range') {
+    const c = R.levelSlider;
+    const lo = Number(c.min || 0), hi = Math.min(Number(c.max || 8), lo + T.maxSubdivisions);
+    ladder = [];
+    for (let v = lo; v <= hi; v++) {
+      await page.evaluate(([i, val]) => window.__grade.setValue(i, val), [c.index, v]);
+      await tick(ctx, 100);
+      const img = await snap(page);
+      const a = analyse(img, T);
+      const settled = ladder.length && silhouetteChange(ladder[ladder.length - 1].an, a) <= T.silhouetteSettled;
+      ladder.push({ img, an: a });
+      if (settled) break;
+    }
+    ctx.actions.push(`set the level slider from ${lo} up to ${lo + ladder.length - 1}`);
+  }
+  const judged = ladder[ladder.length - 1];
+  let img = judged.img;
+  an = judged.an;
+  ctx.images.judged = img;
+  if (must.has('subdivideControls')) {
+    if (R.subdivide || R.levelSlider) say('pass', 'has controls to subdivide');
+    else say('review', 'no button to subdivide or coarsen was found (the slide asks for them)');
+    if (R.subdivide && !R.coarsen && !R.levelSlider) say('review', 'no button to coarsen was found');
+  }
+
+  // ---- the sphere ----
+  if (an.blank) return { fail: 'the picture went blank after the controls were used', checks };
+  result.numbers = { radius: an.radius, roundness: an.roundness, fill: an.fill, coverage: an.coverage, firstRoundness: firstAn.roundness,
+    levelsSeen: ladder.length };
+  // a dark unlit side on a dark background: the outline is the lit edge's circle
+  const c = an.circle;
+  if (!(an.roundness <= T.roundness && an.fill >= T.fill) && c && c.roundness <= T.roundness && c.arc >= 180 && !an.touches) {
+    Object.assign(an, { cx: c.cx, cy: c.cy, radius: c.r, roundness: c.roundness, fill: 1 });
+    say('pass', `part of the sphere is as dark as the background: its outline was fitted to the lit edge (${c.arc}° of a circle)`);
+  }
+  if (an.radius < T.minRadiusPixels) say('review', `the sphere is very small on screen (${fmt(an.radius, 0)} px radius): hard to judge`);
+  else if (an.roundness <= T.roundness && an.fill >= T.fill) {
+    say('pass', `a round closed sphere (radius ${fmt(an.radius, 0)} px, roundness ${fmt(an.roundness, 3)})`);
+  } else if (an.touches) say('review', 'the object touches the canvas edge: its silhouette cannot be judged');
+  else say('fail', `the object is not a round closed sphere (roundness ${fmt(an.roundness, 3)}, fill ${fmt(an.fill)}${ladder.length > 1 ? ', after subdividing' : ''})`);
+  if (ladder.length > 2) {
+    const rs = ladder.map((s) => s.an.roundness).filter((r) => Number.isFinite(r));
+    if (rs[0] > rs[rs.length - 1] + 0.02) say('pass', `rounder with each level (roundness ${fmt(rs[0], 3)} → ${fmt(rs[rs.length - 1], 3)})`);
+  }
+
+  // ---- P1/P2: the normals as colours ----
+  if (must.has('normalColours') || must.has('frontFaces')) {
+    let nc = normalColours(samples(img, an));
+    const judgeFaces = () => nc && nc.det >= T.facingDeterminant && nc.residual <= T.facingResidual;
+    if (must.has('frontFaces') && nc && !judgeFaces()) {
+      // the page may start with the depth test off or culling on the wrong side: set them as the step ends
+      for (const [role, want] of [['depth', true], ['cull', true], ['clockwise', false]]) {
+        const c = R[role];
+        if (!c || (c.type === 'checkbox' && c.checked === want)) continue;
+        await click(ctx, c, role === 'clockwise' ? 'the clockwise-front-faces control' : `the ${role} control`);
+        img = await snap(page);
+        an = analyse(img, T);
+        if (an.blank) break;
+        nc = normalColours(samples(img, an));
+        ctx.images.judged = img;
+        if (judgeFaces()) break;
+      }
+    }
+    result.numbers.normals = nc;
+    if (!nc) say('fail', 'too little of the sphere to read its colours');
+    else if (nc.spread < T.normalsSpread) say('fail', 'the sphere is one colour: the normals are not used for the colour (0.5·n + 0.5)');
+    else if (nc.unitError > T.normalsUnitError) {
+      say('fail', `the colours are not 0.5·n + 0.5: 2c − 1 is not a unit vector (off by ${fmt(nc.unitError)} on average)`);
+    } else say('pass', `colours decode to unit normals 2c − 1 (off by ${fmt(nc.unitError, 3)})`);
+    if (must.has('frontFaces') && nc && nc.spread >= T.normalsSpread) {
+      if (judgeFaces()) say('pass', 'the visible colours are the normals facing the viewer: front faces only');
+      else if (nc.det < 0 && nc.residual <= T.facingResidual) say('fail', 'the inside of the far side shows (the normals face away from the viewer): the front faces are culled');
+      else say('fail', `back faces show through the front (normals do not vary smoothly across the picture, misfit ${fmt(nc.residual)}): depth test or culling missing`);
+    }
+  }
+
+  // ---- P3–P5: the reflection model ----
+  let fit = null;
+  if (must.has('diffuse') || must.has('highlight')) {
+    fit = diffuseFit(samples(img, an), T);
+    result.numbers.fit = fit && { r2: fit.r2, ambient: fit.ambient, diffuse: fit.diffuse, light: fit.light, highlightPeak: fit.highlightPeak, spread: fit.spread };
+    // lit on both sides shows where the light comes from the side: any view seen on the orbit
+    const twoSided = [fit, ...viewFits].filter(Boolean).find((f) => f.r2TwoSided > f.r2 + 0.03 && f.r2 < 0.97);
+    if (!fit) say('fail', 'too little of the sphere to read its shading');
+    else if (fit.spread < T.litSpread / 2) say('fail', 'the sphere is evenly bright: no diffuse shading to see (from any orbit position tried)');
+    else if (twoSided) {
+      say('fail', `the sphere is lit on both sides: brightness follows |n·w_i| (R² ${fmt(twoSided.r2TwoSided)}), not max(n·w_i, 0) (R² ${fmt(twoSided.r2)})`);
+    } else if (!must.has('highlight') && orbitFits.length && Math.min(...orbitFits.map((f) => f.r2)) < T.diffuseR2 - 0.1) {
+      const worst = orbitFits.reduce((a, b) => (b.r2 < a.r2 ? b : a));
+      say('fail', `brightness does not follow max(n·w_i, 0)·kd·Le + ambient at every orbit position (R² down to ${fmt(worst.r2)}): lit where it should be dark?`);
+    } else if (fit.r2 >= T.diffuseR2 && fit.diffuse >= T.diffuseMin) {
+      say('pass', `brightness follows max(n·w_i, 0)·kd·Le + ambient (R² ${fmt(fit.r2)}, fitted light ${fit.light.map((v) => fmt(v)).join(', ')})`);
+    } else say('fail', `brightness does not follow max(n·w_i, 0)·kd·Le + ambient for any light direction (R² ${fmt(fit.r2)})`);
+  }
+  if (shadedPart && orbitFits.length >= 2) {
+    const angle = (a, b) => (180 / Math.PI) * Math.acos(Math.min(1, Math.abs(a[0] * b[0] + a[1] * b[1] + a[2] * b[2])));
+    let turn = 0;
+    for (let i = 1; i < orbitFits.length; i++) turn = Math.max(turn, angle(orbitFits[0].light, orbitFits[i].light));
+    result.numbers.lightTurn = turn;
+    if (turn < T.lightTurnDegrees) {
+      say('review', `while the camera orbits, the lit side stays where it is on screen (the fitted light turns ${fmt(turn, 1)}°): the light moves with the camera (light and normals in different spaces?)`);
+    } else say('pass', `the lit side turns as the camera orbits (${fmt(turn, 0)}°): the light stays in the world`);
+  }
+  if (must.has('orbitToggle')) {
+    if (orbitToggles) say('pass', 'a control toggles the orbit on and off');
+    else if (R.orbit) {
+      say('review', 'an orbit control was found, but the picture does not change with it: the light moves with the camera (light and normals in different spaces?) or the orbit does not run');
+    }
+    else if (moving) say('review', 'the camera orbits, but no button toggles the orbit on/off (the slide asks for one)');
+    else say('review', 'no orbit: no moving camera and no button toggling it');
+  }
+  if (must.has('highlight') && fit) {
+    if (fit.highlightPeak >= T.highlightPeak) say('pass', `a specular highlight (up to ${fmt(100 * fit.highlightPeak, 0)}% of the way from the diffuse fit to white)`);
+    else say('fail', `no specular highlight: nothing brighter than the diffuse fit (${fmt(fit.highlightPeak)})`);
+  }
+
+  // ---- P4: the sliders ----
+  if (must.has('sliders')) {
+    const want = (rubric.parts[item.part] || {}).sliders || [];
+    const missing = want.filter((k) => !R[k]);
+    if (missing.length) say('review', `no slider found for ${missing.join(', ')} (the slide asks for sliders for kd, ks, s, Le, La)`);
+    else say('pass', `sliders for ${want.join(', ')}`);
+    const base = img;
+    const baseFit = fit;
+    let inputOk = 0, changeOnly = 0, dead = 0;
+    for (const k of want.filter((x) => R[x])) {
+      const c = R[k];
+      if (c.type !== 'range' && c.type !== 'number') continue;
+      const lo = Number(c.min || 0), hi = Number(c.max || 1);
+      const target = k === 's' ? (Number(c.value) > (lo + hi) / 2 ? lo : hi) : lo; // s: far from where it is; others: to the least
+      await page.evaluate(([i, v]) => window.__grade.setValue(i, v, ['input']), [c.index, target]);
+      await tick(ctx, 100);
+      let after = await snap(page);
+      let how = 'input';
+      if (pictureChange(base, after) <= T.sliderChange) {
+        await page.evaluate(([i, v]) => window.__grade.setValue(i, v, ['change']), [c.index, target]);
+        await tick(ctx, 100);
+        after = await snap(page);
+        how = pictureChange(base, after) > T.sliderChange ? 'change' : 'none';
+      }
+      ctx.actions.push(`set slider ${k} to ${target} (${how === 'none' ? 'no visible change' : `the picture changed on the ${how} event`})`);
+      if (how === 'input') inputOk++;
+      else if (how === 'change') changeOnly++;
+      else dead++;
+      if (how !== 'none' && baseFit && k === 'ks') {
+        const a = analyse(after, T);
+        const f = a.blank ? null : diffuseFit(samples(after, a), T);
+        if (k === 'ks' && f && f.highlightPeak >= baseFit.highlightPeak * 0.5 && f.highlightPeak >= T.highlightPeak) {
+          say('review', `ks at ${target} leaves the highlight as it was (${fmt(f.highlightPeak)}): is ks used in the specular term?`);
+        }
+      }
+      // back to where it was (drawn with the next slider's frame, or the last one below)
+      await page.evaluate(([i, v]) => window.__grade.setValue(i, v, ['input', 'change']), [c.index, c.value]);
+    }
+    await tick(ctx, 100);
+    if (must.has('sliderInputEvent') && changeOnly) say('review', `${changeOnly} slider(s) update the picture only on the change event, not while sliding (the slide asks for the input event)`);
+    else if (must.has('sliderInputEvent') && inputOk) say('pass', 'the sliders update the picture on the input event');
+    if (must.has('sliderEffects') && dead) say('review', `${dead} slider(s) change nothing in the picture`);
+  }
+
+  // ---- P5: the highlight per fragment, seen at a coarse level ----
+  if (must.has('perFragment') && fit) {
+    const coarse = stopped ? ladder.find((s) => !s.an.blank && s.an.roundness < T.coarseRoundness && s !== judged) : null;
+    const frag = await page.evaluate(() => {
+      const g = window.__grade;
+      const fs = g.glsl.filter((s) => /gl_FragColor|out\s+vec4/.test(s) && !/gl_Position/.test(s));
+      // a WGSL fragment entry point and the functions it calls
+      const wg = g.wgsl.map((s) => {
+        const body = s.split(/@fragment/)[1] || '';
+        const called = [...body.matchAll(/([A-Za-z_]\w*)\s*\(/g)].map((m) => m[1]);
+        return body + called.map((name) => (s.split(new RegExp(`fn\\s+${name}\\s*\\(`))[1] || '').split(/\n}\s*\n/)[0]).join('\n');
+      });
+      return [...fs, ...wg].some((s) => /pow\s*\(/.test(s));
+    });
+    if (coarse && coarse.img.width === judged.img.width) {
+      const change = shadingChange(coarse.img, coarse.an, judged.img, judged.an);
+      result.numbers.coarseShadingChange = change;
+      ctx.images.coarse = coarse.img;
+      if (change !== null && change <= T.phongCoarseChange) say('pass', `the shading at a coarse level (roundness ${fmt(coarse.an.roundness)}) stays as smooth as at the finest (RMS ${fmt(change, 3)}): per fragment`);
+      else say('fail', `the highlight follows the triangles at a coarse level (RMS ${fmt(change, 3)} from the finest): shading is per vertex, not per fragment`);
+    } else if (frag) say('review', 'no coarse level to compare; the fragment shader evaluates the specular term (pow), so probably per fragment');
+    else say('fail', 'no coarse level to compare, and no pow() in the fragment shader: the model seems evaluated per vertex');
+  }
+  if (!stopped && moving) say('review', 'the orbit could not be stopped: pictures were judged while moving');
+  return { checks };
+}
+
+function verdictOf(checks, fail) {
+  if (fail) return 'fail';
+  if (checks.some((c) => c.level === 'fail')) return 'fail';
+  if (checks.some((c) => c.level === 'review')) return 'review';
+  return 'pass';
 }
 
 function save(item, result) {
@@ -151,46 +491,81 @@ function save(item, result) {
 
 for (const item of plan.items) {
   test(`${item.name} ${item.part}`, async ({ browser }, testInfo) => {
-    const result = { name: item.name, part: item.part, file: item.page, status: 'timeout', mismatch: null, rmse: null,
-      pass: false, comparison: null, notes: [], errors: [], blocked: [], images: null };
+    const result = { name: item.name, part: item.part, file: item.page, status: 'timeout', verdict: 'fail', api: null,
+      reasons: ['the page did not finish within the time bound (it never returns, or is far too slow)'], actions: [], controls: {},
+      numbers: {}, mismatch: null, rmse: null, pass: false, comparison: null, notes: [], errors: [], blocked: [], images: null };
     save(item, result); // what stays if the page never lets go: a timeout
     if (!item.page) {
-      result.status = 'missing';
-      result.errors.push(`no page for ${item.part} was found in the submission`);
+      Object.assign(result, { status: 'missing', reasons: [`no page for ${item.part} was found in the submission`] });
       return save(item, result);
     }
-    const sub = await capture(browser, item.root, item.page, '', item.actions, result);
-    if (sub.status !== 'ok') {
-      result.status = sub.status;
-      if (sub.why) result.errors.push(sub.why);
-      return save(item, result);
+    const started = Date.now();
+    const ctx = { busy: 0, actions: result.actions, images: {} };
+    let outcome;
+    let opened;
+    try {
+      opened = await openPage(browser, item.root, item.page, '', result);
+      Object.assign(ctx, opened);
+      if (opened.why) outcome = { fail: `the page could not be opened: ${opened.why}` };
+      else outcome = await gradeOpen(ctx, item, result);
+    } catch (err) {
+      if (/Test ended|Target page, context or browser has been closed/.test(err.message)) throw err; // the time bound: stays 'timeout'
+      // the grader's own trouble with this page: never a pass on it, a teacher looks
+      outcome = { checks: [{ level: 'review', reason: `the grader could not finish on this page: ${err.message.split('\n')[0]}` }] };
+    } finally {
+      if (opened) await opened.context.close().catch(() => {});
     }
-    // the reference at the student's canvas size, on a time budget of its own: the rubric's
-    // bound is for the student's page, and our page must not eat it on a busy machine
-    testInfo.setTimeout(testInfo.timeout + plan.referenceSeconds * 1000);
-    const refLog = { errors: [], blocked: [] };
-    const { width, height } = sub.canvas;
-    // our own defaults (orbit on from angle 0, like most students' first frame) unless the rubric says otherwise
-    const query = new URLSearchParams({ api: 'webgl2', size: width, height, ...item.referenceQuery });
-    const ref = await capture(browser, plan.repo, `${item.part}/index.html`, query.toString(), item.actions, refLog);
-    if (ref.status !== 'ok') throw new Error(`the reference ${item.part} could not be captured: ${ref.status} ${refLog.errors.join('; ')}`);
-    const refImg = PNG.sync.read(ref.png);
-    let subImg = PNG.sync.read(sub.png);
-    let resized = null;
-    if (subImg.width !== refImg.width || subImg.height !== refImg.height) {
-      resized = `the submission's ${subImg.width}×${subImg.height} canvas was resized to the reference's ${refImg.width}×${refImg.height}`;
-      subImg = await resize(browser, sub.png, refImg.width, refImg.height);
-    }
-    const cmp = compareImages(refImg, subImg);
-    if (resized) cmp.notes.unshift(resized);
-    Object.assign(result, { status: 'ok', mismatch: cmp.mismatch, rmse: cmp.rmse, comparison: cmp.comparison, notes: cmp.notes,
-      mismatchFull: cmp.mismatchFull, mismatchObject: cmp.mismatchObject, pass: cmp.mismatch <= item.threshold });
+    const checks = outcome.checks || [];
+    const reasons = [];
+    if (outcome.fail) reasons.push(outcome.fail);
+    for (const lvl of ['fail', 'review', 'pass']) for (const c of checks) if (c.level === lvl) reasons.push(lvl === 'pass' ? c.reason : `${lvl.toUpperCase()}: ${c.reason}`);
+    const seconds = (Date.now() - started) / 1000;
+    if (seconds > rubric.slowSeconds) reasons.push(`slow: ${fmt(seconds, 0)} s to grade (${fmt(ctx.busy / 1000, 0)} s drawing frames) on a software renderer`);
+    const pageErrors = result.errors.filter((e) => /page error/.test(e));
+    if (!outcome.fail && pageErrors.length) reasons.push(`the page reported errors: ${pageErrors[0]}`);
+    result.verdict = verdictOf(checks, outcome.fail);
+    result.reasons = reasons;
+    result.status = outcome.fail ? 'failed' : 'ok';
+    result.pass = result.verdict === 'pass';
+    result.seconds = seconds;
     const dir = path.dirname(item.resultFile);
     const stem = path.basename(item.resultFile, '.json');
-    writeFileSync(path.join(dir, `${stem}-reference.png`), PNG.sync.write(cmp.reference));
-    writeFileSync(path.join(dir, `${stem}-submission.png`), PNG.sync.write(cmp.submission));
-    writeFileSync(path.join(dir, `${stem}-diff.png`), PNG.sync.write(cmp.diff));
-    result.images = { reference: `${stem}-reference.png`, submission: `${stem}-submission.png`, diff: `${stem}-diff.png` };
+    result.images = {};
+    for (const [k, im] of Object.entries(ctx.images)) {
+      writeFileSync(path.join(dir, `${stem}-${k}.png`), png(im));
+      result.images[k] = `${stem}-${k}.png`;
+    }
     save(item, result);
+
+    // our reference at the student's size and level, beside theirs: evidence, not the verdict
+    if (rubric.reference && ctx.images.judged && !outcome.fail) {
+      testInfo.setTimeout(testInfo.timeout + plan.referenceSeconds * 1000);
+      const refLog = { errors: [], blocked: [] };
+      const { width, height } = ctx.images.judged;
+      const query = new URLSearchParams({ api: 'webgl2', size: width, height, orbit: 0, ...item.referenceQuery });
+      let ref = null;
+      try {
+        const r = await openPage(browser, plan.repo, `${item.part}/index.html`, query.toString(), refLog);
+        try {
+          if (!r.why) {
+            await r.page.clock.runFor(500);
+            ref = await snap(r.page);
+          }
+        } finally {
+          await r.context.close().catch(() => {});
+        }
+      } catch (err) {
+        result.notes.push(`our reference could not be drawn: ${err.message.split('\n')[0]}`);
+      }
+      if (ref && ref.width === width && ref.height === height) {
+        const cmp = compareImages(PNG.sync.read(png(ref)), PNG.sync.read(png(ctx.images.judged)));
+        Object.assign(result, { mismatch: cmp.mismatch, rmse: cmp.rmse, comparison: cmp.comparison, mismatchFull: cmp.mismatchFull, mismatchObject: cmp.mismatchObject });
+        result.notes.push(...cmp.notes, 'the reference is our page at the same canvas size; the difference is evidence, the verdict comes from the checks');
+        writeFileSync(path.join(dir, `${stem}-reference.png`), PNG.sync.write(cmp.reference));
+        writeFileSync(path.join(dir, `${stem}-diff.png`), PNG.sync.write(cmp.diff));
+        Object.assign(result.images, { reference: `${stem}-reference.png`, diff: `${stem}-diff.png` });
+      } else if (ref) result.notes.push(`our reference drew ${ref.width}×${ref.height}, not ${width}×${height}: not compared`);
+      save(item, result);
+    }
   });
 }

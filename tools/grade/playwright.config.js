@@ -1,7 +1,9 @@
 // The grader's own Playwright Test run: one test per part (tools/grade/grade.spec.js), its workers,
 // its --shard for splitting a class over machines, its reporters (blob for merge-reports, list).
+// Chromium gets a SwiftShader WebGPU adapter too: hand-ins come in both APIs.
 import { defineConfig } from '@playwright/test';
 import { CHROMIUM, CHROMIUM_ARGS } from '../browser.js';
+import { WEBGPU_ARGS } from '../webgpu-capture.js';
 
 const plan = process.env.GRADE_PLAN ? JSON.parse(await import('node:fs').then((fs) => fs.readFileSync(process.env.GRADE_PLAN, 'utf8'))) : { timeoutSeconds: 30, out: 'out/grade' };
 
@@ -17,6 +19,6 @@ export default defineConfig({
   use: {
     deviceScaleFactor: 1,
     viewport: { width: 900, height: 900 },
-    launchOptions: { executablePath: CHROMIUM, args: CHROMIUM_ARGS },
+    launchOptions: { executablePath: CHROMIUM, args: [...CHROMIUM_ARGS, ...WEBGPU_ARGS] },
   },
 });

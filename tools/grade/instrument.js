@@ -1,0 +1,127 @@
+// What the grader watches on a student's page, as an init script (runs before the page's own
+// scripts, changes none of its files): which API the page asked for, shader and adapter
+// failures, which events each control listens to, and a read-back of the canvas in either API
+// (WebGL contexts get preserveDrawingBuffer so the last frame can be read at any time; WebGPU
+// frames come from tools/webgpu-capture.js, which must be added first).
+export function instrumentScript() {
+  const g = { api: null, apis: [], draws: 0, shaderErrors: [], gpuErrors: [], adapter: undefined, wgsl: [], glsl: [] };
+  Object.defineProperty(window, '__grade', { value: g, enumerable: false });
+  const apiOf = { webgl: 'webgl', 'experimental-webgl': 'webgl', webgl2: 'webgl2', webgpu: 'webgpu' };
+  const realGetContext = HTMLCanvasElement.prototype.getContext;
+  HTMLCanvasElement.prototype.getContext = function (type, attrs, ...rest) {
+    const api = apiOf[type];
+    if (api && api !== 'webgpu') attrs = { ...(attrs || {}), preserveDrawingBuffer: true };
+    const ctx = realGetContext.call(this, type, attrs, ...rest);
+    if (api && ctx) {
+      g.api = api;
+      if (!g.apis.includes(api)) g.apis.push(api);
+      this.setAttribute('data-grade-api', api);
+    }
+    return ctx;
+  };
+  for (const proto of [window.WebGLRenderingContext, window.WebGL2RenderingContext].filter(Boolean).map((c) => c.prototype)) {
+    const { compileShader, linkProgram, shaderSource, drawArrays, drawElements } = proto;
+    proto.shaderSource = function (shader, source) {
+      g.glsl.push(String(source).slice(0, 20000));
+      return shaderSource.call(this, shader, source);
+    };
+    proto.compileShader = function (shader) {
+      compileShader.call(this, shader);
+      if (!this.getShaderParameter(shader, this.COMPILE_STATUS) && !this.isContextLost()) {
+        g.shaderErrors.push(`shader does not compile: ${(this.getShaderInfoLog(shader) || '').trim()}`);
+      }
+    };
+    proto.linkProgram = function (program) {
+      linkProgram.call(this, program);
+      if (!this.getProgramParameter(program, this.LINK_STATUS) && !this.isContextLost()) {
+        g.shaderErrors.push(`program does not link: ${(this.getProgramInfoLog(program) || '').trim()}`);
+      }
+    };
+    proto.drawArrays = function (...a) { g.draws++; return drawArrays.apply(this, a); };
+    proto.drawElements = function (...a) { g.draws++; return drawElements.apply(this, a); };
+  }
+  if (navigator.gpu && window.GPUAdapter) {
+    const gpu = navigator.gpu, requestAdapter = gpu.requestAdapter.bind(gpu);
+    gpu.requestAdapter = async (...a) => {
+      const adapter = await requestAdapter(...a);
+      g.adapter = adapter ? 'ok' : null;
+      if (!adapter) g.gpuErrors.push('requestAdapter() gave no adapter');
+      return adapter;
+    };
+    const requestDevice = GPUAdapter.prototype.requestDevice;
+    GPUAdapter.prototype.requestDevice = async function (...a) {
+      const device = await requestDevice.apply(this, a);
+      device.addEventListener('uncapturederror', (e) => { if (g.gpuErrors.length < 20) g.gpuErrors.push(`WebGPU: ${e.error.message}`); });
+      return device;
+    };
+    const createShaderModule = GPUDevice.prototype.createShaderModule;
+    GPUDevice.prototype.createShaderModule = function (desc) {
+      const module = createShaderModule.call(this, desc);
+      g.wgsl.push(String(desc && desc.code).slice(0, 20000));
+      module.getCompilationInfo().then((info) => {
+        for (const m of info.messages) if (m.type === 'error') g.shaderErrors.push(`WGSL does not compile (line ${m.lineNum}): ${m.message}`);
+      }, () => {});
+      return module;
+    };
+    const draw = GPURenderPassEncoder.prototype.draw, drawIndexed = GPURenderPassEncoder.prototype.drawIndexed;
+    GPURenderPassEncoder.prototype.draw = function (...a) { g.draws++; return draw.apply(this, a); };
+    GPURenderPassEncoder.prototype.drawIndexed = function (...a) { g.draws++; return drawIndexed.apply(this, a); };
+  } else {
+    g.adapter = null;
+  }
+  // which events each control listens to (addEventListener, or on<event> properties/attributes)
+  const add = EventTarget.prototype.addEventListener;
+  EventTarget.prototype.addEventListener = function (type, ...rest) {
+    if (this instanceof Element) {
+      const set = this.__gradeEvents || (this.__gradeEvents = new Set());
+      set.add(type);
+    }
+    return add.call(this, type, ...rest);
+  };
+
+  /** The target canvas (the largest visible one) as base64 RGBA, composited over white. */
+  g.pixels = () => {
+    const all = [...document.querySelectorAll('canvas')].filter((c) => c.width > 0 && c.height > 0 && c.getClientRects().length);
+    if (!all.length) return null;
+    const canvas = all.reduce((a, b) => (b.width * b.height > a.width * a.height ? b : a));
+    const copy = document.createElement('canvas');
+    copy.width = canvas.width;
+    copy.height = canvas.height;
+    const c2 = copy.getContext('2d');
+    c2.fillStyle = '#fff';
+    c2.fillRect(0, 0, copy.width, copy.height);
+    c2.drawImage(canvas, 0, 0);
+    const data = c2.getImageData(0, 0, copy.width, copy.height).data;
+    let s = '';
+    for (let k = 0; k < data.length; k += 0x8000) s += String.fromCharCode.apply(null, data.subarray(k, k + 0x8000));
+    return { width: copy.width, height: copy.height, api: canvas.getAttribute('data-grade-api'), rgba: btoa(s) };
+  };
+
+  /** The page's controls with what a teacher would read on them. */
+  g.controls = () => {
+    const els = [...document.querySelectorAll('button, input, select, [role=button], a[onclick]')];
+    return els.map((el, index) => {
+      el.setAttribute('data-grade-control', String(index));
+      const labels = el.labels ? [...el.labels].map((l) => l.textContent) : [];
+      const prev = el.previousElementSibling && /^(LABEL|SPAN|B|P)$/.test(el.previousElementSibling.tagName) ? el.previousElementSibling.textContent : '';
+      const parentText = el.parentElement && el.parentElement.tagName === 'LABEL' ? el.parentElement.textContent : '';
+      const type = el.tagName === 'INPUT' ? (el.type || 'text') : el.tagName.toLowerCase();
+      const text = [el.textContent, el.value && el.tagName !== 'INPUT' ? '' : '', el.getAttribute('aria-label'), el.title, ...labels, parentText, prev]
+        .filter(Boolean).join(' ').replace(/\s+/g, ' ').trim();
+      const events = [...(el.__gradeEvents || [])];
+      for (const ev of ['click', 'input', 'change']) if (el['on' + ev] && !events.includes(ev)) events.push(ev);
+      return { index, type, id: el.id || '', name: el.name || '', text: type === 'submit' || type === 'button' ? (el.value + ' ' + text).trim() : text,
+        value: el.value, min: el.min, max: el.max, step: el.step, checked: el.checked, disabled: el.disabled, events,
+        visible: el.getClientRects().length > 0, options: el.tagName === 'SELECT' ? [...el.options].map((o) => o.value) : undefined };
+    }).filter((c) => c.visible && !['hidden', 'text', 'number', 'color', 'file'].includes(c.type) || c.type === 'number');
+  };
+
+  /** Sets a range/number input and sends only the events asked for (default: input, then change). */
+  g.setValue = (index, value, events = ['input', 'change']) => {
+    const el = document.querySelector(`[data-grade-control="${index}"]`);
+    if (!el) return false;
+    el.value = String(value);
+    for (const ev of events) el.dispatchEvent(new Event(ev, { bubbles: true }));
+    return true;
+  };
+}

@@ -1,0 +1,305 @@
+// Judging a picture by the properties of the slide's step, not by its pixels against ours:
+// students pick their own camera, canvas, background, light and material. An image is
+// { width, height, data } (RGBA bytes). Everything here is plain arithmetic, no browser.
+
+/** The background (the commonest border colour), the object's mask and its silhouette. */
+export function analyse(img, rubric = {}) {
+  const { width: w, height: h, data } = img;
+  const tol = rubric.backgroundTolerance ?? 30;
+  const counts = new Map();
+  const border = [];
+  for (let x = 0; x < w; x++) border.push([x, 0], [x, h - 1]);
+  for (let y = 0; y < h; y++) border.push([0, y], [w - 1, y]);
+  for (const [x, y] of border) {
+    const o = 4 * (y * w + x);
+    const key = (data[o] >> 2) << 16 | (data[o + 1] >> 2) << 8 | (data[o + 2] >> 2);
+    counts.set(key, (counts.get(key) || 0) + 1);
+  }
+  const top = [...counts.entries()].sort((a, b) => b[1] - a[1])[0][0];
+  const bg = [(top >> 16 & 63) * 4 + 2, (top >> 8 & 63) * 4 + 2, (top & 63) * 4 + 2];
+  const n = w * h;
+  const raw = new Uint8Array(n);
+  let colours = new Set();
+  for (let p = 0; p < n; p++) {
+    const o = 4 * p;
+    if (colours.size < 3) colours.add(data[o] << 16 | data[o + 1] << 8 | data[o + 2]);
+    if (Math.abs(data[o] - bg[0]) + Math.abs(data[o + 1] - bg[1]) + Math.abs(data[o + 2] - bg[2]) > tol) raw[p] = 1;
+  }
+  // the largest 4-connected component is the object (text or a second canvas element aside)
+  const label = new Int32Array(n);
+  let best = 0, bestLabel = 0, next = 0;
+  const stack = [];
+  for (let p = 0; p < n; p++) {
+    if (!raw[p] || label[p]) continue;
+    next++;
+    let size = 0;
+    stack.push(p);
+    label[p] = next;
+    while (stack.length) {
+      const q = stack.pop();
+      size++;
+      const x = q % w, y = (q - x) / w;
+      for (const r of [x > 0 ? q - 1 : -1, x < w - 1 ? q + 1 : -1, y > 0 ? q - w : -1, y < h - 1 ? q + w : -1]) {
+        if (r >= 0 && raw[r] && !label[r]) { label[r] = next; stack.push(r); }
+      }
+    }
+    if (size > best) { best = size; bestLabel = next; }
+  }
+  const mask = new Uint8Array(n);
+  let sx = 0, sy = 0;
+  for (let p = 0; p < n; p++) {
+    if (label[p] === bestLabel && best) { mask[p] = 1; sx += p % w; sy += Math.floor(p / w); }
+  }
+  const area = best;
+  const result = { width: w, height: h, bg, area, coverage: area / n, oneColour: colours.size === 1, mask };
+  if (area < Math.max(30, (rubric.minCoverage ?? 0.002) * n)) return { ...result, blank: true };
+  const cx = sx / area + 0.5, cy = sy / area + 0.5;
+  // radial profile: the farthest object pixel along 72 rays from the centroid
+  const rmax = Math.hypot(w, h);
+  const radii = [];
+  for (let k = 0; k < 72; k++) {
+    const a = (2 * Math.PI * k) / 72, dx = Math.cos(a), dy = Math.sin(a);
+    let last = 0;
+    for (let t = 0; t < rmax; t += 0.5) {
+      const x = Math.floor(cx + t * dx), y = Math.floor(cy + t * dy);
+      if (x < 0 || y < 0 || x >= w || y >= h) break;
+      if (mask[y * w + x]) last = t + 0.5;
+    }
+    radii.push(last);
+  }
+  const mean = radii.reduce((s, r) => s + r, 0) / radii.length;
+  const roundness = (Math.max(...radii) - Math.min(...radii)) / mean;
+  const R = Math.sqrt(area / Math.PI);
+  const fill = area / (Math.PI * mean * mean);
+  const touches = radii.some((r, k) => {
+    const a = (2 * Math.PI * k) / 72;
+    const x = cx + r * Math.cos(a), y = cy + r * Math.sin(a);
+    return x < 1.5 || y < 1.5 || x > w - 1.5 || y > h - 1.5;
+  });
+  const circle = fitCircle(img, mask, bg, tol);
+  return { ...result, blank: false, cx, cy, R, radius: mean, roundness, fill, touches, circle };
+}
+
+/**
+ * A circle through the object's outline where it stands out clearly from the background (a
+ * sphere's unlit side may be as dark as a dark background: then only the lit edge is outline).
+ * Kåsa's least-squares fit; roundness = spread of the edge's distances from the centre over the
+ * radius; arc = the degrees of the circle that edge covers.
+ */
+export function fitCircle(img, mask, bg, tol) {
+  const { width: w, height: h, data } = img;
+  const pts = [];
+  for (let y = 1; y < h - 1; y++) {
+    for (let x = 1; x < w - 1; x++) {
+      const p = y * w + x;
+      if (!mask[p] || (mask[p - 1] && mask[p + 1] && mask[p - w] && mask[p + w])) continue;
+      const o = 4 * p;
+      if (Math.abs(data[o] - bg[0]) + Math.abs(data[o + 1] - bg[1]) + Math.abs(data[o + 2] - bg[2]) > 2.5 * tol) pts.push([x + 0.5, y + 0.5]);
+    }
+  }
+  if (pts.length < 12) return null;
+  // x² + y² + D x + E y + F = 0
+  const A = [[0, 0, 0], [0, 0, 0], [0, 0, 0]], b = [0, 0, 0];
+  for (const [x, y] of pts) {
+    const row = [x, y, 1], z = -(x * x + y * y);
+    for (let i = 0; i < 3; i++) { b[i] += row[i] * z; for (let j = 0; j < 3; j++) A[i][j] += row[i] * row[j]; }
+  }
+  const [D, E, F] = solve3(A, b);
+  const cx = -D / 2, cy = -E / 2, r = Math.sqrt(Math.max(0, cx * cx + cy * cy - F));
+  if (!(r > 0)) return null;
+  const d = pts.map(([x, y]) => Math.hypot(x - cx, y - cy));
+  const sorted = [...d].sort((a, c) => a - c);
+  // the spread of the middle 96% (a stray pixel or two aside)
+  const lo = sorted[Math.floor(0.02 * sorted.length)], hi = sorted[Math.ceil(0.98 * sorted.length) - 1];
+  const bins = new Set(pts.map(([x, y]) => Math.floor(((Math.atan2(y - cy, x - cx) + Math.PI) / (2 * Math.PI)) * 36) % 36));
+  return { cx, cy, r, roundness: (hi - lo) / r, arc: bins.size * 10, points: pts.length };
+}
+
+/** Interior samples: pixel colour (0..1) and the view-space normal a sphere has there. */
+export function samples(img, an, { maxRho = 0.85, max = 4000 } = {}) {
+  const { width: w, data } = img;
+  const out = [];
+  const r = an.radius;
+  const x0 = Math.max(0, Math.floor(an.cx - r)), x1 = Math.min(w - 1, Math.ceil(an.cx + r));
+  const y0 = Math.max(0, Math.floor(an.cy - r)), y1 = Math.min(img.height - 1, Math.ceil(an.cy + r));
+  const step = Math.max(1, Math.floor(Math.sqrt(((x1 - x0 + 1) * (y1 - y0 + 1)) / max)));
+  for (let y = y0; y <= y1; y += step) {
+    for (let x = x0; x <= x1; x += step) {
+      const p = y * w + x;
+      if (!an.mask[p]) continue;
+      const nx = (x + 0.5 - an.cx) / r, ny = -(y + 0.5 - an.cy) / r, rho2 = nx * nx + ny * ny;
+      if (rho2 > maxRho * maxRho) continue;
+      const o = 4 * p;
+      out.push({ x, y, n: [nx, ny, Math.sqrt(1 - rho2)], c: [data[o] / 255, data[o + 1] / 255, data[o + 2] / 255] });
+    }
+  }
+  return out;
+}
+
+function solve3(A, b) {
+  const det = (m) => m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+    m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+  const d = det(A);
+  if (Math.abs(d) < 1e-12) return [0, 0, 0];
+  return [0, 1, 2].map((k) => det(A.map((row, i) => row.map((v, j) => (j === k ? b[i] : v)))) / d);
+}
+const det3 = (m) => m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+  m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+
+/**
+ * P1/P2: do the colours decode to unit normals d = 2c − 1, and is d a rotation of the normal a
+ * sphere has at that pixel (front faces) or a reflection of it (the inside of the far side)?
+ */
+export function normalColours(pts) {
+  if (pts.length < 20) return null;
+  let lenErr = 0;
+  const mean = [0, 0, 0];
+  for (const s of pts) {
+    const d = s.c.map((v) => 2 * v - 1);
+    s.d = d;
+    lenErr += Math.abs(Math.hypot(...d) - 1);
+    for (let k = 0; k < 3; k++) mean[k] += s.c[k] / pts.length;
+  }
+  let spread = 0;
+  for (const s of pts) spread += s.c.reduce((a, v, k) => a + (v - mean[k]) ** 2, 0);
+  spread = Math.sqrt(spread / pts.length);
+  // least squares d ≈ M n, row by row
+  const NtN = [[0, 0, 0], [0, 0, 0], [0, 0, 0]];
+  const Ntd = [[0, 0, 0], [0, 0, 0], [0, 0, 0]];
+  for (const s of pts) {
+    for (let i = 0; i < 3; i++) {
+      for (let j = 0; j < 3; j++) { NtN[i][j] += s.n[i] * s.n[j]; Ntd[i][j] += s.n[i] * s.d[j]; }
+    }
+  }
+  const M = [0, 1, 2].map((row) => solve3(NtN, [0, 1, 2].map((i) => Ntd[i][row])));
+  let res = 0;
+  for (const s of pts) {
+    for (let row = 0; row < 3; row++) res += (s.d[row] - (M[row][0] * s.n[0] + M[row][1] * s.n[1] + M[row][2] * s.n[2])) ** 2;
+  }
+  return { unitError: lenErr / pts.length, spread, residual: Math.sqrt(res / pts.length), det: det3(M) };
+}
+
+const luminance = (c) => (c[0] + c[1] + c[2]) / 3;
+
+function fibonacciDirections(n) {
+  const out = [];
+  for (let k = 0; k < n; k++) {
+    const z = 1 - (2 * (k + 0.5)) / n, r = Math.sqrt(1 - z * z), a = k * Math.PI * (3 - Math.sqrt(5));
+    out.push([r * Math.cos(a), r * Math.sin(a), z]);
+  }
+  return out;
+}
+const DIRS = fibonacciDirections(500);
+
+function fitDirection(pts, use, l, twoSided = false) {
+  // brightness ≈ a + b max(n·l, 0) (or a + b |n·l|, lit on both sides): linear in (a, b) for a given l
+  const f = twoSided ? Math.abs : (v) => Math.max(0, v);
+  let n = 0, sx = 0, sy = 0, sxx = 0, sxy = 0;
+  for (let i = 0; i < pts.length; i++) {
+    if (!use[i]) continue;
+    const s = pts[i];
+    const x = f(s.n[0] * l[0] + s.n[1] * l[1] + s.n[2] * l[2]), y = s.y;
+    n++; sx += x; sy += y; sxx += x * x; sxy += x * y;
+  }
+  const den = n * sxx - sx * sx;
+  const b = den > 1e-9 ? (n * sxy - sx * sy) / den : 0;
+  const a = (sy - b * sx) / n;
+  let sse = 0;
+  for (let i = 0; i < pts.length; i++) {
+    if (!use[i]) continue;
+    const s = pts[i];
+    const x = f(s.n[0] * l[0] + s.n[1] * l[1] + s.n[2] * l[2]);
+    sse += (s.y - a - b * x) ** 2;
+  }
+  return { a, b, sse, l };
+}
+
+/**
+ * P3–P5: fit brightness = ambient + diffuse·max(n·w_i, 0) for some light direction w_i, leaving
+ * out pixels much brighter than the fit (a highlight) on a second pass. Returns the fit's R²
+ * (over the pixels fitted), the light direction, and the highlight those bright pixels make.
+ */
+export function diffuseFit(pts, rubric = {}) {
+  if (pts.length < 20) return null;
+  for (const s of pts) s.y = luminance(s.c);
+  const meanY = pts.reduce((a, s) => a + s.y, 0) / pts.length;
+  const sst = pts.reduce((a, s) => a + (s.y - meanY) ** 2, 0);
+  let use = pts.map(() => true);
+  let best = null;
+  const highlightMargin = rubric.highlightMargin ?? 0.12;
+  for (let pass = 0; pass < 2; pass++) {
+    best = null;
+    for (const l of DIRS) {
+      const f = fitDirection(pts, use, l);
+      if (f.b >= 0 && (!best || f.sse < best.sse)) best = f;
+    }
+    // refine around the best direction
+    for (let step = 0.1; step > 0.005; step /= 2) {
+      for (const d of [[1, 0, 0], [-1, 0, 0], [0, 1, 0], [0, -1, 0], [0, 0, 1], [0, 0, -1]]) {
+        const l = best.l.map((v, k) => v + step * d[k]), len = Math.hypot(...l);
+        const f = fitDirection(pts, use, l.map((v) => v / len));
+        if (f.b >= 0 && f.sse < best.sse) best = f;
+      }
+    }
+    if (pass === 0) {
+      use = pts.map((s) => s.y - (best.a + best.b * Math.max(0, s.n[0] * best.l[0] + s.n[1] * best.l[1] + s.n[2] * best.l[2])) < highlightMargin * 0.7);
+    }
+  }
+  const used = use.filter(Boolean).length;
+  const meanU = pts.reduce((a, s, i) => a + (use[i] ? s.y : 0), 0) / Math.max(1, used);
+  const sstU = pts.reduce((a, s, i) => a + (use[i] ? (s.y - meanU) ** 2 : 0), 0);
+  // the highlight: how far above the diffuse fit a pixel is, as a share of the headroom left to
+  // white there (a highlight on a bright diffuse patch saturates at 1 and cannot rise far)
+  let peak = 0, bright = 0;
+  for (const s of pts) {
+    const pred = best.a + best.b * Math.max(0, s.n[0] * best.l[0] + s.n[1] * best.l[1] + s.n[2] * best.l[2]);
+    const r = s.y - pred;
+    if (r < (rubric.highlightMinRise ?? 0.06)) continue;
+    const share = Math.min(1, r / Math.max(0.1, 1 - pred));
+    if (share > peak) peak = share;
+    if (r > highlightMargin || share > 0.8) bright++;
+  }
+  // the same pixels under a two-sided model: a page lit on both sides (|n·w_i|) fits it better
+  let twoSided = null;
+  for (const l of DIRS) {
+    const f = fitDirection(pts, use, l, true);
+    if (f.b >= 0 && (!twoSided || f.sse < twoSided.sse)) twoSided = f;
+  }
+  return { r2: sstU > 1e-9 ? 1 - best.sse / sstU : 0, r2TwoSided: sstU > 1e-9 ? 1 - twoSided.sse / sstU : 0, rms: Math.sqrt(best.sse / Math.max(1, used)), ambient: best.a, diffuse: best.b,
+    light: best.l, spread: Math.sqrt(sst / pts.length), highlightPeak: peak, highlightShare: bright / pts.length, fitted: used / pts.length };
+}
+
+/**
+ * How much the silhouette changed between two pictures: the relative change of its area, or of
+ * its roundness, whichever is more (pixel flips along the edge alone do not count).
+ */
+export function silhouetteChange(a, b) {
+  if (!a || !b || a.width !== b.width || a.height !== b.height || a.blank || b.blank) return a && b && a.blank && b.blank ? 0 : 1;
+  return Math.max(Math.abs(a.area - b.area) / Math.max(a.area, b.area), Math.abs(a.roundness - b.roundness) / 3);
+}
+
+/** RMS difference of brightness between two pictures over the pixels inside both objects. */
+export function shadingChange(imgA, anA, imgB, anB, maxRho = 0.8) {
+  let sum = 0, n = 0;
+  const w = imgA.width;
+  for (let p = 0; p < anA.mask.length; p++) {
+    if (!anA.mask[p] || !anB.mask[p]) continue;
+    const x = p % w, y = (p - x) / w;
+    if (Math.hypot(x + 0.5 - anB.cx, y + 0.5 - anB.cy) > maxRho * anB.radius) continue;
+    const o = 4 * p;
+    const ya = (imgA.data[o] + imgA.data[o + 1] + imgA.data[o + 2]) / 765, yb = (imgB.data[o] + imgB.data[o + 1] + imgB.data[o + 2]) / 765;
+    sum += (ya - yb) ** 2;
+    n++;
+  }
+  return n ? Math.sqrt(sum / n) : null;
+}
+
+/** Whether two pictures differ anywhere (more than rounding). */
+export function pictureChange(a, b) {
+  if (!a || !b || a.width !== b.width || a.height !== b.height) return 1;
+  let diff = 0;
+  for (let o = 0; o < a.data.length; o += 4) {
+    if (Math.abs(a.data[o] - b.data[o]) + Math.abs(a.data[o + 1] - b.data[o + 1]) + Math.abs(a.data[o + 2] - b.data[o + 2]) > 6) diff++;
+  }
+  return diff / (a.width * a.height);
+}
