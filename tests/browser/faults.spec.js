@@ -2,6 +2,7 @@
 // from the URL), a lost and restored WebGL context (WebGPU: device), a long orbit, and thousands of
 // level changes and slider moves (no new buffer, no heap growth, no GL error). All three APIs.
 import { test, expect, open, scene, canvasPixels, errorAgainstReference, waitForFrame, anotherPage } from './fixtures.js';
+import { SHADING_RMSE } from '../../common/sphere.js';
 
 const PARAMS = {
   '/WP04P2/': ['level', 'size', 'depth', 'cull', 'cw'],
@@ -110,6 +111,9 @@ test('a long orbit: α stays in [0, 2π), the same angle gives the same picture,
   await fresh.waitForFunction(() => window.scene && window.scene.frame >= 1);
   const again = await canvasPixels(fresh);
   expect(Buffer.compare(Buffer.from(stopped.data), Buffer.from(again.data))).toBe(0);
+  // and it is the right picture: the exact render at that angle, within Gouraud's measured error
+  const stats = await errorAgainstReference(page);
+  expect(stats.rmse * 255, `interior RMSE at α = ${s.angle.toFixed(3)}, level ${s.level}`).toBeLessThanOrEqual(SHADING_RMSE.gouraud[s.level] + 0.5);
 });
 
 test('1,000 level changes and 1,000 slider moves: no new buffer, no heap growth, no GL error', async ({ page }) => {
