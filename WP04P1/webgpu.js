@@ -20,7 +20,7 @@ async function main() {
 
   // GPU set-up: the pipeline, the one vertex buffer, the uniform buffer and its bind group. It
   // runs once; again only if the device is lost.
-  let device, context, pipeline, vBuffer, uBlock, bindGroup;
+  let device, context, pipeline, vBuffer, uBlock, bindGroup, renderPass;
   async function init(gpu) {
     ({ device, context } = gpu);
     const module = await createShaderModule(device, wgsl);
@@ -34,6 +34,9 @@ async function main() {
     vBuffer = device.createBuffer({ label: 'sphere vertices', size: vertexBytes(MAX_LEVEL), usage: GPUBufferUsage.VERTEX | GPUBufferUsage.COPY_DST });
     uBlock = createUniformBuffer(device, wgsl.code, 'uniforms');
     bindGroup = device.createBindGroup({ layout: pipeline.getBindGroupLayout(0), entries: [{ binding: 0, resource: { buffer: uBlock.buffer } }] });
+    // The render pass, described once: a frame only names the canvas's texture of the moment
+    const [r, g, b, a] = BACKGROUND;
+    renderPass = { colorAttachments: [{ view: null, loadOp: 'clear', clearValue: { r, g, b, a }, storeOp: 'store' }] };
   }
 
   // A level change rewrites the one buffer (slide "Replacing an object")
@@ -46,13 +49,11 @@ async function main() {
   }
 
   // ---- set-up ends here; drawing (on demand: nothing moves) ----
-  const [r, g, b, a] = BACKGROUND;
   function draw() {
     setUniforms(device, uBlock, uniforms);
     const encoder = device.createCommandEncoder();
-    const pass = encoder.beginRenderPass({
-      colorAttachments: [{ view: context.getCurrentTexture().createView(), loadOp: 'clear', clearValue: { r, g, b, a }, storeOp: 'store' }],
-    });
+    renderPass.colorAttachments[0].view = context.getCurrentTexture().createView();
+    const pass = encoder.beginRenderPass(renderPass);
     pass.setPipeline(pipeline);
     pass.setBindGroup(0, bindGroup);
     pass.setVertexBuffer(0, vBuffer);

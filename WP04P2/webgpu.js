@@ -22,12 +22,12 @@ async function main() {
   // GPU set-up: the pipeline, the one vertex buffer, the uniform buffer and its bind group. It
   // runs once; again only if the device is lost.
   const msaaCount = Number(state.msaa);
-  let device, context, module, format, layout, vBuffer, uBlock, bindGroup, depthTexture, msaaTexture;
-  const pipelines = new Map();
+  let device, context, module, format, layout, vBuffer, uBlock, bindGroup, msaaTexture, renderPass;
+  const pipelines = []; // by depth · 4 + cull · 2 + cw
   async function init(gpu) {
     ({ device, context, format } = gpu);
     module = await createShaderModule(device, wgsl);
-    pipelines.clear();
+    pipelines.length = 0;
     // one bind group layout (the uniform buffer) shared by every pipeline
     const bindGroupLayout = device.createBindGroupLayout({ label: 'uniforms', entries: [
       { binding: 0, visibility: GPUShaderStage.VERTEX | GPUShaderStage.FRAGMENT, buffer: {} }] });
@@ -36,15 +36,21 @@ async function main() {
     uBlock = createUniformBuffer(device, wgsl.code, 'uniforms');
     bindGroup = device.createBindGroup({ layout: bindGroupLayout, entries: [{ binding: 0, resource: { buffer: uBlock.buffer } }] });
     // A canvas-sized depth texture (and colour target, when multisampling), as the slides make them
-    depthTexture = device.createTexture({ label: 'depth', size: [canvas.width, canvas.height], format: 'depth24plus', sampleCount: msaaCount, usage: GPUTextureUsage.RENDER_ATTACHMENT });
+    const depthTexture = device.createTexture({ label: 'depth', size: [canvas.width, canvas.height], format: 'depth24plus', sampleCount: msaaCount, usage: GPUTextureUsage.RENDER_ATTACHMENT });
     msaaTexture = msaaCount > 1 ? device.createTexture({ label: 'multisampled colour', size: [canvas.width, canvas.height], format, sampleCount: msaaCount, usage: GPUTextureUsage.RENDER_ATTACHMENT }) : null;
+    // The render pass, described once: a frame only names the canvas's texture of the moment
+    const [r, g, b, a] = BACKGROUND;
+    renderPass = {
+      colorAttachments: [{ view: msaaTexture?.createView(), loadOp: 'clear', clearValue: { r, g, b, a }, storeOp: 'store' }],
+      depthStencilAttachment: { view: depthTexture.createView(), depthLoadOp: 'clear', depthClearValue: 1.0, depthStoreOp: 'store' },
+    };
   }
   // Hidden surface removal: keep the nearest fragment (depthCompare 'less'), skip triangles facing
   // away (cullMode 'back'); frontFace says which winding faces the viewer
   function pipelineFor(depth, cull, cw) {
-    const key = `${depth} ${cull} ${cw}`;
-    if (!pipelines.has(key)) {
-      pipelines.set(key, device.createRenderPipeline({
+    const key = (depth ? 4 : 0) + (cull ? 2 : 0) + (cw ? 1 : 0);
+    if (!pipelines[key]) {
+      pipelines[key] = device.createRenderPipeline({
         label: `WP04P2 sphere: depth test ${depth ? 'on' : 'off'}, cull ${cull ? 'back' : 'none'}, front ${cw ? 'cw' : 'ccw'}`,
         layout,
         vertex: { module, entryPoint: 'main_vs', buffers: [{ arrayStride: 12, attributes: [{ shaderLocation: 0, offset: 0, format: 'float32x3' }] }] },
@@ -52,9 +58,9 @@ async function main() {
         primitive: { topology: 'triangle-list', frontFace: cw ? 'cw' : 'ccw', cullMode: cull ? 'back' : 'none' },
         multisample: { count: msaaCount },
         depthStencil: { depthWriteEnabled: depth, depthCompare: depth ? 'less' : 'always', format: 'depth24plus' },
-      }));
+      });
     }
-    return pipelines.get(key);
+    return pipelines[key];
   }
 
   // A level change rewrites the one buffer (slide "Replacing an object")
@@ -67,16 +73,13 @@ async function main() {
   }
 
   // ---- set-up ends here; drawing (on demand: nothing moves) ----
-  const [r, g, b, a] = BACKGROUND;
   function draw() {
     setUniforms(device, uBlock, uniforms);
     const encoder = device.createCommandEncoder();
-    const canvasView = context.getCurrentTexture().createView();
-    const pass = encoder.beginRenderPass({
-      colorAttachments: [{ view: msaaTexture ? msaaTexture.createView() : canvasView, resolveTarget: msaaTexture ? canvasView : undefined,
-        loadOp: 'clear', clearValue: { r, g, b, a }, storeOp: 'store' }],
-      depthStencilAttachment: { view: depthTexture.createView(), depthLoadOp: 'clear', depthClearValue: 1.0, depthStoreOp: 'store' },
-    });
+    const colour = renderPass.colorAttachments[0];
+    // with multisampling the pass resolves into the canvas; without, it draws there
+    colour[msaaTexture ? 'resolveTarget' : 'view'] = context.getCurrentTexture().createView();
+    const pass = encoder.beginRenderPass(renderPass);
     pass.setPipeline(pipelineFor(state.depth, state.cull, state.cw));
     pass.setBindGroup(0, bindGroup);
     pass.setVertexBuffer(0, vBuffer);

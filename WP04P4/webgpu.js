@@ -25,7 +25,7 @@ async function main() {
   // GPU set-up: the pipeline, the one vertex buffer, the uniform buffer and its bind group. It
   // runs once; again only if the device is lost.
   const msaaCount = Number(state.msaa);
-  let device, context, pipeline, vBuffer, uBlock, bindGroup, depthTexture, msaaTexture;
+  let device, context, pipeline, vBuffer, uBlock, bindGroup, msaaTexture, renderPass;
   async function init(gpu) {
     ({ device, context } = gpu);
     const module = await createShaderModule(device, wgsl);
@@ -43,8 +43,14 @@ async function main() {
     uBlock = createUniformBuffer(device, wgsl.code, 'uniforms');
     bindGroup = device.createBindGroup({ layout: pipeline.getBindGroupLayout(0), entries: [{ binding: 0, resource: { buffer: uBlock.buffer } }] });
     // A canvas-sized depth texture (and colour target, when multisampling), as the slides make them
-    depthTexture = device.createTexture({ label: 'depth', size: [canvas.width, canvas.height], format: 'depth24plus', sampleCount: msaaCount, usage: GPUTextureUsage.RENDER_ATTACHMENT });
+    const depthTexture = device.createTexture({ label: 'depth', size: [canvas.width, canvas.height], format: 'depth24plus', sampleCount: msaaCount, usage: GPUTextureUsage.RENDER_ATTACHMENT });
     msaaTexture = msaaCount > 1 ? device.createTexture({ label: 'multisampled colour', size: [canvas.width, canvas.height], format: gpu.format, sampleCount: msaaCount, usage: GPUTextureUsage.RENDER_ATTACHMENT }) : null;
+    // The render pass, described once: a frame only names the canvas's texture of the moment
+    const [r, g, b, a] = BACKGROUND;
+    renderPass = {
+      colorAttachments: [{ view: msaaTexture?.createView(), loadOp: 'clear', clearValue: { r, g, b, a }, storeOp: 'store' }],
+      depthStencilAttachment: { view: depthTexture.createView(), depthLoadOp: 'clear', depthClearValue: 1.0, depthStoreOp: 'store' },
+    };
   }
 
   // A level change rewrites the one buffer (slide "Replacing an object")
@@ -57,7 +63,6 @@ async function main() {
   }
 
   // ---- set-up ends here; drawing: tick() calls draw() in every animation frame while orbiting ----
-  const [r, g, b, a] = BACKGROUND;
   function draw() {
     // e = (r sin α, 0, r cos α); V = lookAt(e, at, up)
     camera.eye[0] = EYE_DISTANCE * Math.sin(state.angle);
@@ -67,12 +72,10 @@ async function main() {
     uniforms.blinnPhong = state.model === 'blinn-phong';
     setUniforms(device, uBlock, uniforms, state);
     const encoder = device.createCommandEncoder();
-    const canvasView = context.getCurrentTexture().createView();
-    const pass = encoder.beginRenderPass({
-      colorAttachments: [{ view: msaaTexture ? msaaTexture.createView() : canvasView, resolveTarget: msaaTexture ? canvasView : undefined,
-        loadOp: 'clear', clearValue: { r, g, b, a }, storeOp: 'store' }],
-      depthStencilAttachment: { view: depthTexture.createView(), depthLoadOp: 'clear', depthClearValue: 1.0, depthStoreOp: 'store' },
-    });
+    const colour = renderPass.colorAttachments[0];
+    // with multisampling the pass resolves into the canvas; without, it draws there
+    colour[msaaTexture ? 'resolveTarget' : 'view'] = context.getCurrentTexture().createView();
+    const pass = encoder.beginRenderPass(renderPass);
     pass.setPipeline(pipeline);
     pass.setBindGroup(0, bindGroup);
     pass.setVertexBuffer(0, vBuffer);

@@ -59,12 +59,11 @@ export async function openStep({ exercise, params, shading = 'normals', rmse = n
    * @param {() => void} lesson.draw draws one frame from `state`
    */
   async function start({ init, setLevel, draw }) {
-    const autoNote = rmse ? 'the least level that looks round at %d px and shades within 1/255'
-      : 'the least level that looks round at %d px';
     const usual = autoLevel(state, { shading: rmse });
+    const usualNote = `the least level that looks round at ${canvas.height} px${rmse ? ' and shades within 1/255' : ''}`;
     function applyLevel() {
       scene.vertices = setLevel(state.level);
-      showLevel(state.level, scene.vertices, state.level === usual ? autoNote.replace('%d', canvas.height) : '');
+      showLevel(state.level, scene.vertices, state.level === usual ? usualNote : '');
     }
 
     // A control changed a value: into the state, the URL, the scene, and a new frame
