@@ -84,18 +84,52 @@ export function tetrahedronSphere(level, positions) {
   return count;
 }
 
-let store = new Float32Array(0);
+// Each level is built once per page and kept: all nine together are 4/3 of the largest (12.6 MB).
+const built = [];
+const queued = new Set();
+
+function build(level) {
+  const mesh = new Float32Array(3 * vertexCount(level));
+  tetrahedronSphere(level, mesh);
+  return mesh;
+}
+
+// The levels next to the one shown are built while the browser is idle, so that Subdivide and
+// Coarsen only upload (in Node, with no idle callbacks, they are built when asked for).
+function buildAhead(level) {
+  if (typeof requestIdleCallback !== 'function') return;
+  for (const next of [level + 1, level - 1]) {
+    if (next < 0 || next > MAX_LEVEL || built[next] || queued.has(next)) continue;
+    queued.add(next);
+    requestIdleCallback(() => {
+      built[next] ??= build(next);
+      queued.delete(next);
+    }, { timeout: 1000 });
+  }
+}
 
 /**
- * The sphere at `level` in one reused Float32Array, grown only when a higher level than ever
- * before is asked for. The returned view is valid until the next call.
+ * The sphere at `level`: built on the first call for that level and kept, and its neighbouring
+ * levels built ahead in idle time. The same array comes back every time: do not write into it.
  * @returns {Float32Array} 3·vertexCount(level) floats
  */
 export function sphereMesh(level) {
-  const floats = 3 * vertexCount(level);
-  if (store.length < floats) store = new Float32Array(floats);
-  tetrahedronSphere(level, store);
-  return store.subarray(0, floats);
+  if (!Number.isInteger(level) || level < 0 || level > MAX_LEVEL) {
+    throw new RangeError(`sphere level must be an integer from 0 to ${MAX_LEVEL}, not ${level}`);
+  }
+  const mesh = built[level] ??= build(level);
+  buildAhead(level);
+  return mesh;
+}
+
+/** For the bench and tests: which levels are built (true) and which are still to come (false). */
+export function builtLevels() {
+  return Array.from({ length: MAX_LEVEL + 1 }, (_, level) => built[level] !== undefined);
+}
+
+/** For the bench: forget every built level, as a page that has just opened. */
+export function forgetMeshes() {
+  built.length = 0;
 }
 
 /**

@@ -28,9 +28,10 @@
  * @property {() => Promise<string>} capture draws once; returns the target, RGBA bytes, row 0 at the
  *   top, as base64 (copyTextureToBuffer, mapAsync)
  * @property {() => object} scene the view, as lab/bench-page.js's scene() gives it
- * @property {(level: number, repeats: number) => Promise<{ours: number[], classic: number[], bound: number[]}>} levelChange
- *   times one level change `repeats` times three ways, each to the end of the upload (awaiting
- *   onSubmittedWorkDone): ours (sphereMesh + writeBuffer into the one buffer), classic (the
+ * @property {(level: number, repeats: number) => Promise<{ours: number[], cold: number[], classic: number[], bound: number[]}>} levelChange
+ *   times one level change `repeats` times four ways, each to the end of the upload (awaiting
+ *   onSubmittedWorkDone): ours (a click: the level built ahead in idle time, one writeBuffer into
+ *   the one buffer), cold (sphereMesh built on the spot + writeBuffer), classic (the
  *   textbook's vec4 arrays, flattened, into a new buffer each time, the old one destroyed), bound
  *   (the same bytes copied by one flat loop into a reused array + writeBuffer). ms per change.
  *   Leaves the mesh at `level`.
@@ -42,7 +43,7 @@ import { lookAt, mat3, mat4, normalMatrix, perspectiveZO } from '../common/math.
 import { MAX_LEVEL, sphereMesh, vertexBytes } from '../common/sphere.js';
 import { createShaderModule, createUniformBuffer, loadWGSL, setUniforms } from '../common/gpu.js';
 import { run } from '../common/page.js';
-import { classicSphere, faceCentroids } from './meshes.js';
+import { arriveByClick, arriveCold, classicSphere, idle, faceCentroids } from './meshes.js';
 import { BACKGROUND, EYE_DISTANCE, FOVY } from '../common/course.js';
 
 const FORMAT = 'rgba8unorm';
@@ -197,18 +198,18 @@ async function main() {
         cullFace: true, level, canvas: { width: size, height: size } };
     },
     async levelChange(lvl, repeats) {
-      const ours = [], classic = [], bound = [];
+      const ours = [], cold = [], classic = [], bound = [];
       const source = sphereMesh(lvl).slice();
       const copy = new Float32Array(source.length);
       const boundBuffer = device.createBuffer({ label: 'bound', size: source.byteLength, usage: GPUBufferUsage.VERTEX | GPUBufferUsage.COPY_DST });
       let classicBuffer = null;
+      const show = (positions) => device.queue.writeBuffer(positionBuffer, 0, positions);
       for (let k = 0; k < repeats; k++) {
-        let t0 = performance.now();
-        device.queue.writeBuffer(positionBuffer, 0, sphereMesh(lvl));
-        await sync();
-        ours.push(performance.now() - t0);
+        ours.push(await arriveByClick(lvl, show, sync));
+        cold.push(await arriveCold(lvl, show, sync));
 
-        t0 = performance.now();
+        await idle();
+        let t0 = performance.now();
         const data = classicSphere(lvl);
         if (classicBuffer) classicBuffer.destroy();
         classicBuffer = device.createBuffer({ label: 'classic', size: data.byteLength, usage: GPUBufferUsage.VERTEX | GPUBufferUsage.COPY_DST });
@@ -216,6 +217,7 @@ async function main() {
         await sync();
         classic.push(performance.now() - t0);
 
+        await idle();
         t0 = performance.now();
         for (let i = 0; i < source.length; i++) copy[i] = source[i];
         device.queue.writeBuffer(boundBuffer, 0, copy);
@@ -225,7 +227,7 @@ async function main() {
       boundBuffer.destroy();
       classicBuffer?.destroy();
       this.setMesh(lvl);
-      return { ours, classic, bound };
+      return { ours, cold, classic, bound };
     },
     async gpuErrors() {
       await sync();

@@ -2,7 +2,8 @@
 //  - classicSphere: the textbook way, arrays of vec4 objects pushed one by one, then flattened;
 //  - indexedSphere: shared vertices (2·4^n + 2 instead of 12·4^n) and an index list, the same
 //    triangles in the same order and winding, for gl.drawElements.
-import { MAX_LEVEL, TETRAHEDRON } from '../common/sphere.js';
+// And the two level changes a page makes (arriveByClick, arriveCold), for both bench pages.
+import { MAX_LEVEL, TETRAHEDRON, builtLevels, forgetMeshes, sphereMesh } from '../common/sphere.js';
 
 const { corners: CORNERS, faces: FACES } = TETRAHEDRON; // counter-clockwise seen from outside
 
@@ -89,4 +90,42 @@ export function faceCentroids(positions, count, out) {
     }
   }
   return out;
+}
+
+/**
+ * Resolves when the browser is next idle. Every level-change time starts after one: the first
+ * upload after an idle spell costs about 0.3 ms more here than one right after another, so all
+ * four ways are timed from the same start, as a click comes after a pause.
+ */
+export function idle() {
+  return new Promise((resolve) => requestIdleCallback(resolve));
+}
+
+/**
+ * A click on Subdivide (Coarsen at level 0) as a page just opened makes it, first visit included:
+ * forget every built level, show the level before (`show(mesh)` uploads it), let the browser be
+ * idle as it is between two clicks, so that common/sphere.js builds `level` ahead, then time the
+ * click: `show(sphereMesh(level))` to the end of the upload (`sync`). ms.
+ */
+export async function arriveByClick(level, show, sync) {
+  forgetMeshes();
+  show(sphereMesh(level > 0 ? level - 1 : 1));
+  await sync();
+  for (let k = 0; k < 100 && !builtLevels()[level]; k++) await idle();
+  if (!builtLevels()[level]) throw new Error(`level ${level} was not built ahead in 100 idle periods`);
+  await idle();
+  const t0 = performance.now();
+  show(sphereMesh(level));
+  await sync();
+  return performance.now() - t0;
+}
+
+/** A jump to a level nobody built yet (the URL, or a level no click led next to): built on the spot. ms. */
+export async function arriveCold(level, show, sync) {
+  forgetMeshes();
+  await idle();
+  const t0 = performance.now();
+  show(sphereMesh(level));
+  await sync();
+  return performance.now() - t0;
 }

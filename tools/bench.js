@@ -42,8 +42,8 @@ const OPTIONS = { quick: { type: 'boolean' }, out: { type: 'string' }, 'no-publi
 
 /** How much to measure: the quick run is for tests and a first look, the full one is published. */
 const PLANS = {
-  quick: { sizes: [128], maxLevel: 5, frames: 5, warmup: 2, repeats: 3, orbitSize: 128, angles: 12, changeLevels: 6 },
-  full: { sizes: [256, 512], maxLevel: 8, frames: 15, warmup: 3, repeats: 5, orbitSize: 256, angles: 90, changeLevels: 8 },
+  quick: { sizes: [128], maxLevel: 5, frames: 5, warmup: 2, repeats: 3, changeRepeats: 5, orbitSize: 128, angles: 12, changeLevels: 6 },
+  full: { sizes: [256, 512], maxLevel: 8, frames: 15, warmup: 3, repeats: 5, changeRepeats: 15, orbitSize: 256, angles: 90, changeLevels: 8 },
 };
 const METHODS = ['flat', 'gouraud', 'phong'];
 /** The stability run's material: its highlight never clamps (kd + ks + ka La = 0.94). */
@@ -177,11 +177,11 @@ async function measureLevelChanges(page, plan) {
   const levelChange = [], indexed = [];
   for (let level = 0; level <= plan.changeLevels; level++) {
     progress(`level change ${level}`);
-    const t = await page.evaluate(([l, r]) => window.bench.levelChange(l, r), [level, plan.repeats]);
-    const ours = median(t.ours), classic = median(t.classic), bound = median(t.bound);
+    const t = await page.evaluate(([l, r]) => window.bench.levelChange(l, r), [level, plan.changeRepeats]);
+    const ours = median(t.ours), cold = median(t.cold), classic = median(t.classic), bound = median(t.bound);
     levelChange.push({ level, vertices: 12 * 4 ** level, bytes: 36 * 4 ** level * 4,
-      oursMs: round(ours), classicMs: round(classic), boundMs: round(bound),
-      classicOverOurs: round(classic / ours, 2), oursOverBound: round(ours / bound, 2) });
+      oursMs: round(ours), coldMs: round(cold), classicMs: round(classic), boundMs: round(bound),
+      classicOverOurs: round(classic / ours, 2), oursOverBound: round(ours / bound, 2), coldOverBound: round(cold / bound, 2) });
 
     progress(`indexed ${level}`);
     await page.evaluate(([l]) => window.bench.setMesh(l, 'arrays'), [level]);
@@ -201,16 +201,17 @@ async function measureLevelChanges(page, plan) {
 
 /**
  * The level change in WebGPU, level by level, added to the WebGL rows of `levelChange`: ours
- * (sphereMesh + queue.writeBuffer into the one buffer made for the largest level), classic and
+ * (a click: the level built ahead, one queue.writeBuffer into the one buffer made for the
+ * largest level), cold (built on the spot), classic and
  * the copy-only bound, each timed to the end of the upload (queue.onSubmittedWorkDone).
  */
 async function measureGPULevelChanges(page, plan, levelChange) {
   for (const row of levelChange) {
     progress(`webgpu level change ${row.level}`);
-    const t = await page.evaluate(([l, r]) => window.bench.levelChange(l, r), [row.level, plan.repeats]);
-    const ours = median(t.ours), classic = median(t.classic), bound = median(t.bound);
-    Object.assign(row, { gpuOursMs: round(ours), gpuClassicMs: round(classic), gpuBoundMs: round(bound),
-      gpuClassicOverOurs: round(classic / ours, 2), gpuOursOverBound: round(ours / bound, 2) });
+    const t = await page.evaluate(([l, r]) => window.bench.levelChange(l, r), [row.level, plan.changeRepeats]);
+    const ours = median(t.ours), cold = median(t.cold), classic = median(t.classic), bound = median(t.bound);
+    Object.assign(row, { gpuOursMs: round(ours), gpuColdMs: round(cold), gpuClassicMs: round(classic), gpuBoundMs: round(bound),
+      gpuClassicOverOurs: round(classic / ours, 2), gpuOursOverBound: round(ours / bound, 2), gpuColdOverBound: round(cold / bound, 2) });
   }
 }
 

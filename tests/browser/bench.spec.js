@@ -48,8 +48,8 @@ test('bench --quick: every method and level in WebGL 2 and WebGPU, errors that f
   }
   expect(r.levelChange.map((l) => l.level)).toEqual([0, 1, 2, 3, 4, 5, 6]);
   for (const l of r.levelChange) {
-    expect(l.oursMs * l.classicMs * l.boundMs).toBeGreaterThan(0);
-    expect(l.gpuOursMs * l.gpuClassicMs * l.gpuBoundMs, `WebGPU level ${l.level}`).toBeGreaterThan(0);
+    expect(l.oursMs * l.coldMs * l.classicMs * l.boundMs).toBeGreaterThan(0);
+    expect(l.gpuOursMs * l.gpuColdMs * l.gpuClassicMs * l.gpuBoundMs, `WebGPU level ${l.level}`).toBeGreaterThan(0);
   }
   expect(r.indexed.every((x) => x.pixelsEqual)).toBe(true);
   expect(r.indexed.map((x) => x.vertices)).toEqual([0, 1, 2, 3, 4, 5, 6].map((n) => 2 * 4 ** n + 2));

@@ -16,7 +16,7 @@ function get(path, host = '127.0.0.1') {
     const req = http.request({ host, port, path, method: 'GET' }, (res) => {
       let body = '';
       res.on('data', (c) => { body += c; });
-      res.on('end', () => resolve({ status: res.statusCode, body }));
+      res.on('end', () => resolve({ status: res.statusCode, body, headers: res.headers }));
     });
     req.on('error', reject);
     req.end();
@@ -54,4 +54,13 @@ test('it listens on the loopback address only', async () => {
       throw new Error('refused'); // ECONNREFUSED: nothing listens there
     }), /refused/);
   }
+});
+
+test('the bench pages, and only they, are cross-origin isolated (fine timers)', async () => {
+  for (const path of ['/lab/bench.html?size=128', '/lab/bench-gpu.html', '/lab/bench-page.js']) {
+    const { headers } = await get(path);
+    assert.equal(headers['cross-origin-opener-policy'], 'same-origin', path);
+    assert.equal(headers['cross-origin-embedder-policy'], 'require-corp', path);
+  }
+  for (const path of ['/', '/lab/', '/WP04P5/']) assert.equal((await get(path)).headers['cross-origin-embedder-policy'], undefined, path);
 });

@@ -3,7 +3,7 @@
 // MAX_DEVIATION as measured, and chooseLevel's least level for a silhouette and a shading error.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { tetrahedronSphere, sphereMesh, vertexCount, vertexBytes, chooseLevel, MAX_DEVIATION, MAX_LEVEL, SHADING_RMSE } from '../../common/sphere.js';
+import { tetrahedronSphere, sphereMesh, builtLevels, forgetMeshes, vertexCount, vertexBytes, chooseLevel, MAX_DEVIATION, MAX_LEVEL, SHADING_RMSE } from '../../common/sphere.js';
 
 test('vertex count is 4·4^n·3 at every level', () => {
   for (let n = 0; n <= MAX_LEVEL; n++) {
@@ -64,13 +64,37 @@ test('bad levels and short arrays throw a clear RangeError', () => {
   assert.throws(() => tetrahedronSphere(2, new Float32Array(10)), /needs 576 floats/);
 });
 
-test('sphereMesh reuses one array and grows it only for a higher level', () => {
+test('sphereMesh builds each level once and gives back the same array', () => {
+  forgetMeshes();
   const a = sphereMesh(3);
-  const b = sphereMesh(2);
-  assert.equal(a.buffer, b.buffer, 'a lower level reuses the same storage');
-  const c = sphereMesh(5);
-  const d = sphereMesh(4);
-  assert.equal(c.buffer, d.buffer);
+  assert.deepEqual(builtLevels(), [false, false, false, true, false, false, false, false, false], 'only the level asked for (no idle time in Node)');
+  assert.equal(sphereMesh(2).length, 3 * vertexCount(2));
+  assert.equal(sphereMesh(3), a, 'the second visit is the same array');
+  assert.throws(() => sphereMesh(9), /integer from 0 to 8/);
+  assert.throws(() => sphereMesh(-1), RangeError);
+});
+
+test('sphereMesh builds the neighbouring levels ahead when the browser is idle', () => {
+  const idle = [];
+  globalThis.requestIdleCallback = (callback) => idle.push(callback);
+  try {
+    forgetMeshes();
+    sphereMesh(4);
+    assert.equal(idle.length, 2, 'levels 5 and 3 are queued');
+    sphereMesh(4);
+    assert.equal(idle.length, 2, 'queued once, not again on the next call');
+    for (const callback of idle.splice(0)) callback();
+    assert.deepEqual(builtLevels(), [false, false, false, true, true, true, false, false, false]);
+    const five = sphereMesh(5);
+    const fresh = new Float32Array(five.length);
+    tetrahedronSphere(5, fresh);
+    assert.deepEqual(five, fresh, 'the level built ahead is the sphere at that level');
+    sphereMesh(8);
+    assert.equal(idle.length, 2, 'level 6 from 5, and level 7 from 8; nothing above the top');
+  } finally {
+    delete globalThis.requestIdleCallback;
+    forgetMeshes();
+  }
 });
 
 test('MAX_DEVIATION is what the mesh measures: 1 − the least distance to a triangle plane', () => {
