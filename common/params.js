@@ -55,9 +55,9 @@ export const PARAMETERS = {
   },
 };
 
-/** The level chooseLevel picks for a step's canvas height (or size) and shading. */
+/** The level chooseLevel picks for a step's canvas height (or size), shading and shininess (when read already). */
 export function autoLevel(values, step = {}) {
-  return chooseLevel(values.height ?? values.size, FOVY, EYE_DISTANCE, { shading: step.shading ?? null }).level;
+  return chooseLevel(values.height ?? values.size, FOVY, EYE_DISTANCE, { shading: step.shading ?? null, shininess: values.s }).level;
 }
 
 const TRUE = new Set(['1', 'true', 'on', 'yes']);

@@ -6,6 +6,8 @@
 // Winding: every triangle is counter-clockwise seen from outside, so gl.CULL_FACE with the
 // default gl.frontFace(gl.CCW) removes the far side (the book's own face order is clockwise).
 
+import { MAX_DEVIATION, SHININESS, SHADING_TABLE } from './shading-table.js';
+
 /** The largest level the exercises offer: 12·4^8 = 786,432 vertices, 9.4 MB of positions. */
 export const MAX_LEVEL = 8;
 
@@ -132,49 +134,52 @@ export function forgetMeshes() {
   built.length = 0;
 }
 
-/**
- * How far the mesh at each level falls inside the unit sphere at worst: 1 − the least distance
- * from the origin to a triangle's plane (measured from the mesh; a unit test re-measures it).
- */
-export const MAX_DEVIATION = [6.6667e-1, 4.2265e-1, 1.8350e-1, 5.7191e-2, 1.5268e-2, 3.8835e-3,
-  9.7513e-4, 2.4408e-4, 6.1035e-5];
+// The measured numbers chooseLevel rests on are written by `npm run calibrate` (tools/calibrate.js).
+export { MAX_DEVIATION, SHININESS, SHADING_TABLE };
+
+/** The material the tables' default rows hold: the exercises' default shininess. */
+const DEFAULT_SHININESS = 40;
 
 /**
- * How far each lighting method's shading is off at each level: the interior RMSE, in 8-bit steps
- * (1 = 1/255), against the exact render with the silhouette left out, for the exercises' default
- * view and material (light along the view, kd 0.8, ks 0.5, s 40, Le 1, La 0.2). Measured in
- * Chromium at 128, 256 and 512 px, the largest of the three kept: it hardly depends on the size.
- * 0.29 is what rounding to 8 bits alone costs. A browser test re-measures the levels it picks.
- *  - diffuse: Gouraud, diffuse and ambient only (WP04P3)
- *  - gouraud: Gouraud with the Phong reflection model (WP04P4): highlights need more triangles
- *  - phong:   Phong shading (WP04P5)
+ * How far a lighting step's shading is off at `level` for shininess `s`, in 8-bit steps (1 =
+ * 1/255), from SHADING_TABLE: 'diffuse' (WP04P3), 'gouraud' (WP04P4) or 'phong' (WP04P5). Between
+ * two measured shininess values, the larger error of the two (the error does not always grow with
+ * s); above the last one, the last row.
  */
-export const SHADING_RMSE = {
-  diffuse: [122.89, 69.67, 27.11, 8.34, 2.25, 0.64, 0.32, 0.29, 0.29],
-  gouraud: [124.45, 70.56, 28.35, 9.36, 3.17, 1.35, 0.48, 0.30, 0.29],
-  phong: [62.92, 33.75, 12.80, 4.53, 1.32, 0.43, 0.29, 0.29, 0.29],
-};
+export function shadingRmse(shading, level, s = DEFAULT_SHININESS) {
+  const table = SHADING_TABLE[shading];
+  if (!table) throw new RangeError(`shading must be one of ${Object.keys(SHADING_TABLE).join(', ')}, not ${shading}`);
+  if (shading === 'diffuse') return table[level];
+  const above = SHININESS.findIndex((x) => x >= s);
+  if (above === -1) return table[SHININESS.length - 1][level];
+  if (SHININESS[above] === s || above === 0) return table[above][level];
+  return Math.max(table[above - 1][level], table[above][level]);
+}
+
+/** SHADING_TABLE at the default shininess (s = 40), level by level: { diffuse, gouraud, phong }. */
+export const SHADING_RMSE = Object.fromEntries(Object.keys(SHADING_TABLE).map((shading) =>
+  [shading, SHADING_TABLE.diffuse.map((_, level) => shadingRmse(shading, level))]));
 
 /**
  * Model no more than the scene needs: the least level whose silhouette is within `tolerancePx`
  * pixels of the true sphere's, for a unit sphere `distance` from the eye seen with a vertical
  * field of view `fovy` (degrees) on a canvas `height` pixels high, and, given a `shading` method,
- * whose shading error (SHADING_RMSE) is within `toleranceRmse` 8-bit steps.
+ * whose shading error (shadingRmse, for the material's `shininess`) is within `toleranceRmse` 8-bit steps.
  * The silhouette's radius on screen is R = f·tan(asin(r/d)) with f = (height/2)/tan(fovy/2);
  * a mesh that falls δ inside the sphere moves it by about δ·dR/dr = δ·f·d²/(d²−1)^(3/2) pixels.
- * @param {{tolerancePx?: number, shading?: 'diffuse' | 'gouraud' | 'phong' | null, toleranceRmse?: number}} [options]
+ * @param {{tolerancePx?: number, shading?: 'diffuse' | 'gouraud' | 'phong' | null, shininess?: number, toleranceRmse?: number}} [options]
  * @returns {{level: number, errorPx: number, radiusPx: number, rmse: number | null, limit: 'silhouette' | 'shading' | 'max'}}
  *   errorPx and rmse at that level; limit: what set the level
  */
-export function chooseLevel(height, fovy, distance, { tolerancePx = 0.5, shading = null, toleranceRmse = 1 } = {}) {
-  if (shading !== null && !(shading in SHADING_RMSE)) {
-    throw new RangeError(`chooseLevel: shading must be one of ${Object.keys(SHADING_RMSE).join(', ')} or null, not ${shading}`);
+export function chooseLevel(height, fovy, distance, { tolerancePx = 0.5, shading = null, shininess = DEFAULT_SHININESS, toleranceRmse = 1 } = {}) {
+  if (shading !== null && !(shading in SHADING_TABLE)) {
+    throw new RangeError(`chooseLevel: shading must be one of ${Object.keys(SHADING_TABLE).join(', ')} or null, not ${shading}`);
   }
   const f = height / 2 / Math.tan((fovy * Math.PI) / 360);
   const d2 = distance * distance;
   const radiusPx = f * Math.tan(Math.asin(Math.min(1, 1 / distance)));
   const pxPerUnit = d2 > 1 ? (f * d2) / Math.pow(d2 - 1, 1.5) : Infinity;
-  const rmseAt = (level) => (shading === null ? null : SHADING_RMSE[shading][level]);
+  const rmseAt = (level) => (shading === null ? null : shadingRmse(shading, level, shininess));
   for (let level = 0; level <= MAX_LEVEL; level++) {
     const errorPx = MAX_DEVIATION[level] * pxPerUnit;
     const round = errorPx < tolerancePx;

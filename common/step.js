@@ -14,7 +14,8 @@ import { AT, EYE_DISTANCE, FOVY, ORBIT_SPEED, UP } from './course.js';
 import { makeControls, showLevel, showValue } from './controls.js';
 import { requestGPU } from './gpu.js';
 import { createContext, notify, onContextLoss, showError, writeQuery } from './page.js';
-import { PARAMETERS, autoLevel, defaultOf, readParams, wrapAngle } from './params.js';
+import { PARAMETERS, defaultOf, readParams, wrapAngle } from './params.js';
+import { MAX_LEVEL, chooseLevel } from './sphere.js';
 
 /**
  * Reads the step's parameters from the URL, sizes the canvas and creates its context.
@@ -23,7 +24,7 @@ import { PARAMETERS, autoLevel, defaultOf, readParams, wrapAngle } from './param
  * @param {string[]} step.params the parameters it has besides api and size (common/params.js)
  * @param {'normals'|'gouraud'|'phong'} [step.shading] as window.scene says it (default 'normals')
  * @param {'diffuse'|'gouraud'|'phong'} [step.rmse] which shading errors chooseLevel weighs
- *   (common/sphere.js SHADING_RMSE); none: the silhouette alone sets the level
+ *   (common/sphere.js shadingRmse, at the material's shininess); none: the silhouette alone sets the level
  * @param {boolean} [step.webgpu] the step's WebGPU script: a device instead of a WebGL context
  * @returns {Promise<{gl: WebGLRenderingContext|WebGL2RenderingContext|null, gpu: object|null,
  *   api: string, canvas: HTMLCanvasElement, state: Object, camera: Object, scene: Object, start: Function}>}
@@ -59,11 +60,22 @@ export async function openStep({ exercise, params, shading = 'normals', rmse = n
    * @param {() => void} lesson.draw draws one frame from `state`
    */
   async function start({ init, setLevel, draw }) {
-    const usual = autoLevel(state, { shading: rmse });
-    const usualNote = `the least level that looks round at ${canvas.height} px${rmse ? ' and shades within 1/255' : ''}`;
     function applyLevel() {
       scene.vertices = setLevel(state.level);
-      showLevel(state.level, scene.vertices, state.level === usual ? usualNote : '');
+      showNeeds();
+    }
+    // Model no more than the scene needs: which level this size (and material) needs, beside the
+    // level; a hint only, the level stays the one chosen
+    function showNeeds() {
+      const needs = chooseLevel(canvas.height, FOVY, EYE_DISTANCE, { shading: rmse, shininess: state.s });
+      const px = `${canvas.height} px`, material = 's' in state ? `s = ${state.s}` : 'diffuse light';
+      let note = '';
+      if (state.level === needs.level && needs.limit !== 'max') note = `the least level that looks round at ${px}${rmse ? ' and shades within 1/255' : ''}`;
+      else if (rmse && needs.rmse > 1) note = `no level shades s = ${state.s} within 1/255 at ${px}: level ${MAX_LEVEL} is ${needs.rmse.toFixed(1)}/255 off`;
+      else if (rmse && state.level < needs.level && needs.limit === 'silhouette') note = `level ${needs.level} is the least that looks round at ${px}`;
+      else if (rmse && state.level < needs.level) note = `${material} needs level ${needs.level} at ${px} to shade within 1/255`;
+      else if (rmse) note = `level ${needs.level} is enough for ${material} at ${px}`;
+      showLevel(state.level, scene.vertices, note);
     }
 
     // A control changed a value: into the state, the URL, the scene, and a new frame
@@ -76,6 +88,7 @@ export async function openStep({ exercise, params, shading = 'normals', rmse = n
       }
       state[name] = value;
       if (name === 'level') applyLevel();
+      if (name === 's') showNeeds();
       changed();
     }
     makeControls(PARAMETERS, state, onInput);

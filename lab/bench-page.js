@@ -1,6 +1,7 @@
 // The browser end of the bench: lab/bench.html loads this module, and tools/bench.js (npm run
 // bench) drives it through window.bench, documented below. It draws nothing by itself.
-// Methods: flat (one normal per face), gouraud (WP04P4's shaders), phong (WP04P5's shaders),
+// Methods: flat (one normal per face), diffuse (WP04P3's shaders: Gouraud, diffuse light only),
+// gouraud (WP04P4's shaders), phong (WP04P5's shaders),
 // impostor (one quad, ray–sphere per fragment), all with the same camera, light and material as
 // the exercises' default view. Layouts: the slides' drawArrays, or shared vertices + drawElements.
 
@@ -20,7 +21,7 @@
  *   drawArrays plus the face centroids for flat shading, 'indexed' is lab/meshes.js's
  *   indexedSphere for drawElements. Returns the vertex count, the bytes of positions (and of
  *   indices), and for 'indexed' the index size in bits (16 or 32).
- * @property {(method: 'flat'|'gouraud'|'phong'|'impostor') => void} setMethod the program to draw with
+ * @property {(method: 'flat'|'diffuse'|'gouraud'|'phong'|'impostor') => void} setMethod the program to draw with
  * @property {(angle: number) => void} setAngle the orbit angle α in radians: eye = (3 sin α, 0, 3 cos α)
  * @property {(material: {kd?: number, ka?: number, ks?: number, s?: number}) => void} setMaterial
  *   changes some of the material; the shaders take ka = kd, so give ka equal to kd or scene()
@@ -59,6 +60,7 @@ async function main() {
   const uint32 = api === 'webgl2' || !!gl.getExtension('OES_element_index_uint');
 
   const programs = {
+    diffuse: await loadProgram(gl, '../WP04P3/shader.vert', '../WP04P3/shader.frag'),
     gouraud: await loadProgram(gl, '../WP04P4/shader.vert', '../WP04P4/shader.frag'),
     phong: await loadProgram(gl, '../WP04P5/shader.vert', '../WP04P5/shader.frag'),
     flat: await loadProgram(gl, 'flat.vert', '../WP04P4/shader.frag'),
@@ -205,7 +207,10 @@ async function main() {
     },
     /** The scene as the pages publish it, for the reference renderer. */
     scene() {
-      return { camera: JSON.parse(JSON.stringify(camera)), light, material, model: 'phong', shading: method,
+      // WP04P3 (diffuse) has neither ambient nor specular light
+      const diffuse = method === 'diffuse';
+      return { camera: JSON.parse(JSON.stringify(camera)), model: 'phong', shading: diffuse ? 'gouraud' : method,
+        light: diffuse ? { position: light.position, Le: light.Le } : light, material: diffuse ? { kd: material.kd } : material,
         cullFace: true, level, canvas: { width: canvas.width, height: canvas.height } };
     },
     /**

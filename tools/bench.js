@@ -23,7 +23,7 @@ import { toRGBA8 } from './reference/png.js';
 import { PNG } from 'pngjs';
 import { CHROMIUM_ARGS, canvasScreenshot, launchChromium, startServer } from './browser.js';
 import { WEBGPU_ARGS } from './webgpu-capture.js';
-import { UsageError, parseOptions } from './cli.js';
+import { UsageError, parseOptions, progressLine } from './cli.js';
 import { chooseLevel } from '../common/sphere.js';
 import { EDGE_CASES, STEP } from './edge-cases.js';
 
@@ -65,17 +65,7 @@ const quantile = (xs, q) => {
 const round = (x, d = 4) => (x === null || x === undefined ? x : Number(x.toFixed(d)));
 const rms = (xs) => Math.sqrt(xs.reduce((s, x) => s + x * x, 0) / xs.length);
 
-let lastLine = '';
-let lastPrinted = 0;
-function progress(text) {
-  lastLine = text;
-  if (process.stderr.isTTY) {
-    process.stderr.write(`\r[bench] ${text}`.padEnd(80));
-  } else if (Date.now() - lastPrinted > 2000) { // a log file gets a line every 2 s at most
-    lastPrinted = Date.now();
-    process.stderr.write(`[bench] ${text}\n`);
-  }
-}
+const progress = progressLine('bench');
 
 /** window.bench.capture()'s base64 RGBA as an image for the error measures. */
 function decode(base64, width, height) {
@@ -401,6 +391,6 @@ async function main(argv) {
 
 main(process.argv.slice(2)).then((code) => { process.exitCode = code; }, (err) => {
   process.stderr.write('\n');
-  console.error(`bench: failed during "${lastLine}": ${err.message}`);
+  console.error(`bench: failed during "${progress.last}": ${err.message}`);
   process.exitCode = 1;
 });

@@ -38,3 +38,23 @@ export function wholeNumber(text, label, min, max) {
   }
   return n;
 }
+
+/**
+ * A progress line for a long run, on stderr: rewritten in place on a terminal, and in a log file
+ * a line every 2 s at most. `progress(text)` shows it; `progress.last` is the last text shown.
+ * @param {string} name the command's name, e.g. "bench"
+ */
+export function progressLine(name) {
+  let printed = 0;
+  const progress = (text) => {
+    progress.last = text;
+    if (process.stderr.isTTY) {
+      process.stderr.write(`\r[${name}] ${text}`.padEnd(80));
+    } else if (Date.now() - printed > 2000) {
+      printed = Date.now();
+      process.stderr.write(`[${name}] ${text}\n`);
+    }
+  };
+  progress.last = '';
+  return progress;
+}

@@ -3,7 +3,8 @@
 // MAX_DEVIATION as measured, and chooseLevel's least level for a silhouette and a shading error.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { tetrahedronSphere, sphereMesh, builtLevels, forgetMeshes, vertexCount, vertexBytes, chooseLevel, MAX_DEVIATION, MAX_LEVEL, SHADING_RMSE } from '../../common/sphere.js';
+import { tetrahedronSphere, sphereMesh, builtLevels, forgetMeshes, vertexCount, vertexBytes, chooseLevel, MAX_DEVIATION, MAX_LEVEL, SHADING_RMSE, SHADING_TABLE, SHININESS, shadingRmse } from '../../common/sphere.js';
+import { meshDeviation } from '../../tools/reference/measure.js';
 
 test('vertex count is 4·4^n·3 at every level', () => {
   for (let n = 0; n <= MAX_LEVEL; n++) {
@@ -99,16 +100,23 @@ test('sphereMesh builds the neighbouring levels ahead when the browser is idle',
 
 test('MAX_DEVIATION is what the mesh measures: 1 − the least distance to a triangle plane', () => {
   for (let n = 0; n <= MAX_LEVEL; n++) {
-    const p = sphereMesh(n);
-    let least = 1;
-    for (let i = 0; i < p.length; i += 9) {
-      const ux = p[i + 3] - p[i], uy = p[i + 4] - p[i + 1], uz = p[i + 5] - p[i + 2];
-      const vx = p[i + 6] - p[i], vy = p[i + 7] - p[i + 1], vz = p[i + 8] - p[i + 2];
-      const nx = uy * vz - uz * vy, ny = uz * vx - ux * vz, nz = ux * vy - uy * vx;
-      least = Math.min(least, (nx * p[i] + ny * p[i + 1] + nz * p[i + 2]) / Math.hypot(nx, ny, nz));
-    }
-    assert.ok(Math.abs(1 - least - MAX_DEVIATION[n]) / MAX_DEVIATION[n] < 2e-3, `level ${n}: ${1 - least} vs ${MAX_DEVIATION[n]}`);
+    const measured = meshDeviation(sphereMesh(n));
+    assert.ok(Math.abs(measured - MAX_DEVIATION[n]) / MAX_DEVIATION[n] < 2e-3, `level ${n}: ${measured} vs ${MAX_DEVIATION[n]}`);
   }
+});
+
+test('shadingRmse reads the table at the material\'s shininess, the larger of two rows between them', () => {
+  const k40 = SHININESS.indexOf(40), k80 = SHININESS.indexOf(80);
+  assert.equal(shadingRmse('gouraud', 4, 40), SHADING_TABLE.gouraud[k40][4]);
+  assert.equal(shadingRmse('gouraud', 4), SHADING_TABLE.gouraud[k40][4], 's = 40 by default');
+  assert.equal(shadingRmse('phong', 3, 60), Math.max(SHADING_TABLE.phong[k40][3], SHADING_TABLE.phong[k80][3]));
+  assert.equal(shadingRmse('phong', 5, 1e4), SHADING_TABLE.phong.at(-1)[5], 'above the last row: the last row');
+  assert.equal(shadingRmse('diffuse', 2, 500), SHADING_TABLE.diffuse[2], 'no shininess in diffuse light');
+  assert.deepEqual(SHADING_RMSE.phong, SHADING_TABLE.phong[k40]);
+  assert.throws(() => shadingRmse('flat', 2), /one of diffuse, gouraud, phong/);
+  // the material sets the level: at 128 px Gouraud shading needs level 6 for s = 40, 5 for s = 10
+  assert.equal(chooseLevel(128, 45, 3, { shading: 'gouraud', shininess: 40 }).level, 6);
+  assert.equal(chooseLevel(128, 45, 3, { shading: 'gouraud', shininess: 10 }).level, 5);
 });
 
 test('chooseLevel: the least level with a silhouette error under half a pixel', () => {

@@ -98,6 +98,31 @@ export function compareToReference(image, ref, options = {}) {
 }
 
 /**
+ * The shading error of a picture, the measure of SHADING_RMSE (common/shading-table.js), the
+ * lab and the tests alike: interior RMSE in 8-bit steps (1 = 1/255) with the silhouette left out
+ * (interior "both": a pixel counts where picture and reference both show the sphere on its 3×3).
+ */
+export function shadingError(image, ref) {
+  return compareToReference(image, ref, { interior: 'both' }).rmse * 255;
+}
+
+/**
+ * How far a mesh of the unit sphere falls inside it at worst (MAX_DEVIATION): 1 − the least
+ * distance from the origin to one of its triangles' planes.
+ * @param {Float32Array} p x,y,z per vertex, three vertices per triangle
+ */
+export function meshDeviation(p) {
+  let least = 1;
+  for (let i = 0; i < p.length; i += 9) {
+    const ux = p[i + 3] - p[i], uy = p[i + 4] - p[i + 1], uz = p[i + 5] - p[i + 2];
+    const vx = p[i + 6] - p[i], vy = p[i + 7] - p[i + 1], vz = p[i + 8] - p[i + 2];
+    const nx = uy * vz - uz * vy, ny = uz * vx - ux * vz, nz = ux * vy - uy * vx;
+    least = Math.min(least, (nx * p[i] + ny * p[i + 1] + nz * p[i + 2]) / Math.hypot(nx, ny, nz));
+  }
+  return 1 - least;
+}
+
+/**
  * How far, in pixels, a picture's silhouette strays at worst from the true one, for a camera that
  * looks at the sphere's centre (camera.at = 0): the true silhouette is then the circle of radius
  * R = (height / 2) tan(asin(1 / ‖eye‖)) / tan(fovy / 2) about the picture's centre, and the answer

@@ -1,0 +1,182 @@
+#!/usr/bin/env node
+// npm run calibrate: measures the numbers chooseLevel rests on and writes them to
+// common/shading-table.js (MAX_DEVIATION, SHININESS, SHADING_TABLE). Nobody edits that file by
+// hand; tests/browser/calibration.spec.js re-measures every entry of it.
+//
+//  - MAX_DEVIATION[level]: measured from the mesh itself (meshDeviation), in Node.
+//  - SHADING_TABLE: each lighting step's shaders (lab/bench.html draws with WP04P3's, WP04P4's and
+//    WP04P5's own) at every level and, for the two with a highlight, every shininess in SHININESS,
+//    against the exact reference, by shadingError (the lab's and the tests' measure too), at each
+//    canvas size; the largest over the sizes is kept.
+import { writeFileSync } from 'node:fs';
+import path from 'node:path';
+import { fileURLToPath } from 'node:url';
+import { renderReference } from './reference/render.js';
+import { meshDeviation, shadingError } from './reference/measure.js';
+import { CHROMIUM_ARGS, launchChromium, startServer } from './browser.js';
+import { UsageError, parseOptions, progressLine, wholeNumber } from './cli.js';
+import { MAX_LEVEL, sphereMesh } from '../common/sphere.js';
+
+const root = path.dirname(path.dirname(fileURLToPath(import.meta.url)));
+const TABLE = path.join(root, 'common/shading-table.js');
+const HELP = `usage: npm run calibrate -- [--sizes 128,256,512] [--out FILE]
+Measures how far each lighting step's shading is from the exact picture at every subdivision
+level (and, with a highlight, every shininess the table holds), and how far the mesh falls inside
+the sphere, and writes them to common/shading-table.js, which chooseLevel and the pages' level
+hint read. Takes about two minutes.
+  --sizes LIST  canvas sizes in px to measure at; the largest error over them is kept (default 128,256,512)
+  --out FILE    where to write the table (default common/shading-table.js)
+exit codes: 0 done, 1 it failed (the message says why), 2 bad usage`;
+
+/** The shininess values the table is measured at: the slider's range, 0 to 500, denser where it changes fastest. */
+export const SHININESS = [0, 1, 2, 5, 10, 20, 40, 80, 160, 320, 500];
+
+const progress = progressLine('calibrate');
+const round = (x, d) => Number(x.toFixed(d));
+
+/**
+ * Every entry of the shading table at one canvas size, in the bench page: { diffuse: [level],
+ * gouraud: [k][level], phong: [k][level] } with k the index in `shininess`.
+ * @param {import('playwright-core').Page} page lab/bench.html at that size, ready
+ * @param {number} size
+ * @param {number[]} shininess
+ * @param {number[]} levels
+ */
+export async function measureShading(page, size, shininess, levels, say = () => {}) {
+  const capture = async () => ({ width: size, height: size, data: Buffer.from(await page.evaluate(() => window.bench.capture()), 'base64') });
+  const errorAt = async (method, level, ref) => {
+    await page.evaluate(([m, l]) => { window.bench.setMesh(l); window.bench.setMethod(m); }, [method, level]);
+    return shadingError(await capture(), ref);
+  };
+  const referenceOf = async (method) => {
+    await page.evaluate(([m]) => window.bench.setMethod(m), [method]);
+    return renderReference(await page.evaluate(() => window.bench.scene()), size, size);
+  };
+  const table = { diffuse: [], gouraud: [], phong: [] };
+  const diffuseRef = await referenceOf('diffuse');
+  for (const level of levels) table.diffuse.push(await errorAt('diffuse', level, diffuseRef));
+  for (const [k, s] of shininess.entries()) {
+    say(`${size} px, s = ${s} (${k + 1}/${shininess.length})`);
+    await page.evaluate(([x]) => window.bench.setMaterial({ s: x }), [s]);
+    const ref = await referenceOf('phong'); // the exact picture: the same for both methods
+    for (const method of ['gouraud', 'phong']) {
+      const row = [];
+      for (const level of levels) row.push(await errorAt(method, level, ref));
+      table[method].push(row);
+    }
+  }
+  await page.evaluate(() => window.bench.setMaterial({ s: 40 }));
+  const glError = await page.evaluate(() => window.bench.glError());
+  if (glError) throw new Error(`gl.getError() = 0x${glError.toString(16)} while measuring`);
+  return table;
+}
+
+/** Opens lab/bench.html at `size` px in WebGL 2 and waits for it. */
+export async function openBenchPage(browser, base, size) {
+  const page = await browser.newPage({ viewport: { width: size + 40, height: size + 200 }, deviceScaleFactor: 1 });
+  const problems = [];
+  page.on('pageerror', (e) => problems.push(e.message));
+  await page.goto(`${base}/lab/bench.html?size=${size}`);
+  await page.waitForFunction(() => window.benchReady || document.querySelector('#messages .error'), null, { timeout: 60_000 });
+  const error = await page.evaluate(() => document.querySelector('#messages .error')?.textContent);
+  if (error || problems.length) throw new Error(`the bench page failed: ${error || problems.join('; ')}`);
+  return page;
+}
+
+/** The table module's text. */
+function tableModule({ maxDeviation, table, sizes, browser, seconds }) {
+  const rows = (xs) => `[${xs.map((x) => round(x, 2)).join(', ')}]`;
+  const perShininess = (method) => `[\n${table[method].map((row, k) => `    ${rows(row)}, // s = ${SHININESS[k]}`).join('\n')}\n  ]`;
+  return `// Written by \`npm run calibrate\` (tools/calibrate.js) on ${new Date().toISOString().slice(0, 10)}, measured in
+// ${browser} at ${sizes.join(', ')} px in ${seconds} s. Do not edit: run the command again.
+// tests/browser/calibration.spec.js re-measures every entry.
+
+/**
+ * How far the mesh at each level falls inside the unit sphere at worst: 1 − the least distance
+ * from the origin to a triangle's plane (tools/reference/measure.js meshDeviation).
+ */
+export const MAX_DEVIATION = [${maxDeviation.map((x) => x.toExponential(4)).join(', ')}];
+
+/** The shininess values of SHADING_TABLE's rows. */
+export const SHININESS = [${SHININESS.join(', ')}];
+
+/**
+ * How far each lighting step's shading is off at each level, in 8-bit steps (1 = 1/255): the
+ * interior RMSE against the exact render with the silhouette left out (shadingError), for the
+ * exercises' default view (eye (0, 0, 3), light along the view, kd 0.8, ks 0.5, Le 1, La 0.2),
+ * the largest over the canvas sizes above. 0.29 is what rounding to 8 bits alone costs.
+ *  - diffuse[level]: WP04P3 (Gouraud, diffuse light only: no shininess)
+ *  - gouraud[k][level]: WP04P4 (Gouraud, the Phong reflection model) with s = SHININESS[k]
+ *  - phong[k][level]: WP04P5 (Phong shading) with s = SHININESS[k]
+ */
+export const SHADING_TABLE = {
+  diffuse: ${rows(table.diffuse)},
+  gouraud: ${perShininess('gouraud')},
+  phong: ${perShininess('phong')},
+};
+`;
+}
+
+/** The options, checked: { sizes, out } or { help: true }. Throws a UsageError. */
+function readOptions(argv) {
+  const opt = parseOptions(argv, { sizes: { type: 'string' }, out: { type: 'string' } });
+  if (opt.help) return opt;
+  const sizes = (opt.sizes ?? '128,256,512').split(',').map((x) => wholeNumber(x.trim(), '--sizes', 16, 2048));
+  return { sizes, out: path.resolve(opt.out ?? TABLE) };
+}
+
+async function main(argv) {
+  let opt;
+  try {
+    opt = readOptions(argv);
+  } catch (err) {
+    if (!(err instanceof UsageError)) throw err;
+    console.error(`calibrate: ${err.message}\n\n${HELP}`);
+    return 2;
+  }
+  if (opt.help) {
+    console.log(HELP);
+    return 0;
+  }
+  const started = Date.now();
+  const levels = Array.from({ length: MAX_LEVEL + 1 }, (_, l) => l);
+  progress('the mesh');
+  const maxDeviation = levels.map((l) => meshDeviation(sphereMesh(l)));
+  const server = await startServer(root);
+  let browser = null;
+  try {
+    browser = await launchChromium({ args: CHROMIUM_ARGS });
+    let table = null;
+    const bySize = {};
+    for (const size of opt.sizes) {
+      const page = await openBenchPage(browser, server.url, size);
+      bySize[size] = await measureShading(page, size, SHININESS, levels, progress);
+      await page.close();
+      const max = (a, b) => (Array.isArray(a) ? a.map((x, k) => max(x, b[k])) : Math.max(a, b));
+      table = table ? Object.fromEntries(Object.entries(table).map(([m, t]) => [m, max(t, bySize[size][m])])) : bySize[size];
+    }
+    // how much the sizes differ: what a test that re-measures at one size must allow
+    let spread = 0;
+    for (const size of opt.sizes) {
+      const flat = (t) => [t.diffuse, ...t.gouraud, ...t.phong].flat();
+      const a = flat(bySize[size]), b = flat(table);
+      for (let k = 0; k < a.length; k++) spread = Math.max(spread, (b[k] - a[k]) / Math.max(b[k], 1));
+    }
+    const seconds = Math.round((Date.now() - started) / 1000);
+    writeFileSync(opt.out, tableModule({ maxDeviation, table, sizes: opt.sizes, browser: `Chromium ${browser.version()}`, seconds }));
+    process.stderr.write(`\r[calibrate] done in ${seconds} s`.padEnd(80) + '\n');
+    console.log(`calibrate: wrote ${path.relative(process.cwd(), opt.out) || opt.out}; the sizes differ by at most ${(100 * spread).toFixed(1)}% of an entry (of 1/255 below 1)`);
+    return 0;
+  } finally {
+    await browser?.close();
+    server.stop();
+  }
+}
+
+if (process.argv[1] && path.resolve(process.argv[1]) === fileURLToPath(import.meta.url)) {
+  main(process.argv.slice(2)).then((code) => { process.exitCode = code; }, (err) => {
+    process.stderr.write('\n');
+    console.error(`calibrate: failed during "${progress.last}": ${err.message}`);
+    process.exitCode = 1;
+  });
+}
