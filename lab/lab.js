@@ -1,5 +1,7 @@
 // The lab page: charts and tables from lab/results.json (written by npm run bench).
 import { run, notify } from '../common/page.js';
+import { SHININESS, chooseLevel } from '../common/sphere.js';
+import { EYE_DISTANCE, FOVY } from '../common/course.js';
 
 const COLOURS = { flat: '#8d6e63', gouraud: '#e65100', phong: '#1565c0', impostor: '#2e7d32' };
 const NAMES = { flat: 'flat (per triangle)', gouraud: 'Gouraud (WP04P4)', phong: 'Phong shading (WP04P5)', impostor: 'exact impostor' };
@@ -155,6 +157,15 @@ async function main() {
     const e = r.edgeCases.find((x) => x.case === name && x.method === method);
     return e ? `${(e.rmse / STEP).toFixed(2)}/255${e.fails ? ` <b>fails</b>: ${e.fails}` : ''}` : '';
   };
+  // The level each material needs, from the calibrated table (no bench results needed)
+  const SIZES = [128, 256, 512];
+  const needs = (size, shading, shininess) => {
+    const c = chooseLevel(size, FOVY, EYE_DISTANCE, { shading, shininess });
+    return c.rmse > 1 ? `${c.level}+` : c.level;
+  };
+  table('needs', ['material', ...SIZES.map((x) => `Gouraud (WP04P4) ${x} px`), ...SIZES.map((x) => `Phong shading (WP04P5) ${x} px`)],
+    [['diffuse light (WP04P3)', ...SIZES.map((x) => needs(x, 'diffuse')), '', '', ''],
+      ...SHININESS.map((s) => [`s = ${s}`, ...SIZES.map((x) => needs(x, 'gouraud', s)), ...SIZES.map((x) => needs(x, 'phong', s))])]);
   table('edge-cases', ['case', 'Gouraud (WP04P4)', 'Phong shading (WP04P5)'], cases.map((c) => [c, cell(c, 'gouraud'), cell(c, 'phong')]));
   window.labReady = true;
 }

@@ -18,7 +18,7 @@ import os from 'node:os';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { renderReference } from './reference/render.js';
-import { compareToReference, silhouetteErrorPx } from './reference/measure.js';
+import { compareToReference, shadingError, silhouetteErrorPx } from './reference/measure.js';
 import { toRGBA8 } from './reference/png.js';
 import { PNG } from 'pngjs';
 import { CHROMIUM_ARGS, canvasScreenshot, launchChromium, startServer } from './browser.js';
@@ -130,6 +130,8 @@ async function measureMethod(page, plan, { api, method, level, size, ref, refSce
   return {
     api, method, level, size, msMedian: round(median(times)), msP25: round(quantile(times, 0.25)), msP75: round(quantile(times, 0.75)),
     rmse: round(stats.rmse, 6), maxError: round(stats.maxError, 6), silhouetteMismatch: stats.silhouetteMismatch,
+    // the measure of common/shading-table.js (npm run calibrate): silhouette aside, in 8-bit steps
+    shadingError: round(shadingError(img, ref), 3),
     silhouetteErrorPx: round(silhouetteErrorPx(img, ref, refScene), 3), spherePixels: stats.spherePixels,
   };
 }
@@ -269,6 +271,8 @@ async function measureEdgeCases(browser, base) {
       const why = [stats.nanLike && 'NaN-black pixels', stats.saturated && 'saturates', stats.rmse > 2 * STEP && 'error over 2/255'].filter(Boolean);
       rows.push({ case: c.name, method: step === 'WP04P4' ? 'gouraud' : 'phong', level: scene.level,
         rmse: round(stats.rmse, 6), maxError: round(stats.maxError, 6), silhouetteMismatch: stats.silhouetteMismatch,
+    // the measure of common/shading-table.js (npm run calibrate): silhouette aside, in 8-bit steps
+    shadingError: round(shadingError(img, ref), 3),
         nanLike: stats.nanLike, saturated: stats.saturated, fails: why.join(', ') });
     }
   }

@@ -95,7 +95,9 @@ test('the lab page draws its charts and tables from the committed results', asyn
   await expect(page.locator('#speed-accuracy canvas')).toBeVisible();
   await expect(page.locator('#claim p')).toHaveCount(4);
   await expect(page.locator('#claim')).toContainText('Gouraud (WP04P4)');
-  for (const id of ['api-table', 'level-table', 'stability', 'indexed', 'edge-cases']) expect(await page.locator(`#${id} tr`).count(), id).toBeGreaterThan(2);
+  for (const id of ['api-table', 'level-table', 'stability', 'indexed', 'edge-cases', 'needs']) expect(await page.locator(`#${id} tr`).count(), id).toBeGreaterThan(2);
+  // the level each material needs, from the calibrated table: s = 40 at 128 px is WP04P4's default level
+  await expect(page.locator('#needs tr', { hasText: 's = 40' })).toContainText(`s = 40${chooseLevel(128, 45, 3, { shading: 'gouraud' }).level}`);
   await expect(page.locator('#indexed')).not.toContainText('NO');
   await expect(page.locator('#level-table')).toContainText('WebGPU ours ms');
   await expect(page.locator('#speed-accuracy canvas')).toHaveAttribute('aria-label', /milliseconds per frame/);
