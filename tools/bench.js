@@ -23,7 +23,7 @@ import { toRGBA8 } from './reference/png.js';
 import { PNG } from 'pngjs';
 import { CHROMIUM_ARGS, canvasScreenshot, launchChromium, startServer } from './browser.js';
 import { WEBGPU_ARGS } from './webgpu-capture.js';
-import { UsageError, parseOptions, progressLine } from './cli.js';
+import { parseOptions, progressLine, runCommand } from './cli.js';
 import { chooseLevel } from '../common/sphere.js';
 import { EDGE_CASES, STEP } from './edge-cases.js';
 
@@ -271,8 +271,6 @@ async function measureEdgeCases(browser, base) {
       const why = [stats.nanLike && 'NaN-black pixels', stats.saturated && 'saturates', stats.rmse > 2 * STEP && 'error over 2/255'].filter(Boolean);
       rows.push({ case: c.name, method: step === 'WP04P4' ? 'gouraud' : 'phong', level: scene.level,
         rmse: round(stats.rmse, 6), maxError: round(stats.maxError, 6), silhouetteMismatch: stats.silhouetteMismatch,
-    // the measure of common/shading-table.js (npm run calibrate): silhouette aside, in 8-bit steps
-    shadingError: round(shadingError(img, ref), 3),
         nanLike: stats.nanLike, saturated: stats.saturated, fails: why.join(', ') });
     }
   }
@@ -361,20 +359,8 @@ async function runBench(browser, base, { plan, quick, started }) {
   return results;
 }
 
-/** Runs the command; returns its exit code. */
-async function main(argv) {
-  let opt;
-  try {
-    opt = readOptions(argv);
-  } catch (err) {
-    if (!(err instanceof UsageError)) throw err;
-    console.error(`bench: ${err.message}\n\n${HELP}`);
-    return 2;
-  }
-  if (opt.help) {
-    console.log(HELP);
-    return 0;
-  }
+/** Runs the whole bench with the options read; returns its exit code. */
+async function bench(opt) {
   const { quick, outDir, publish } = opt;
   const started = Date.now();
   const server = await startServer(root);
@@ -393,8 +379,4 @@ async function main(argv) {
   }
 }
 
-main(process.argv.slice(2)).then((code) => { process.exitCode = code; }, (err) => {
-  process.stderr.write('\n');
-  console.error(`bench: failed during "${progress.last}": ${err.message}`);
-  process.exitCode = 1;
-});
+runCommand({ name: 'bench', help: HELP, readOptions, run: bench, progress });

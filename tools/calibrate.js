@@ -14,7 +14,7 @@ import { fileURLToPath } from 'node:url';
 import { renderReference } from './reference/render.js';
 import { meshDeviation, shadingError } from './reference/measure.js';
 import { CHROMIUM_ARGS, launchChromium, startServer } from './browser.js';
-import { UsageError, parseOptions, progressLine, wholeNumber } from './cli.js';
+import { isMainScript, parseOptions, progressLine, runCommand, wholeNumber } from './cli.js';
 import { MAX_LEVEL, sphereMesh } from '../common/sphere.js';
 
 const root = path.dirname(path.dirname(fileURLToPath(import.meta.url)));
@@ -125,19 +125,8 @@ function readOptions(argv) {
   return { sizes, out: path.resolve(opt.out ?? TABLE) };
 }
 
-async function main(argv) {
-  let opt;
-  try {
-    opt = readOptions(argv);
-  } catch (err) {
-    if (!(err instanceof UsageError)) throw err;
-    console.error(`calibrate: ${err.message}\n\n${HELP}`);
-    return 2;
-  }
-  if (opt.help) {
-    console.log(HELP);
-    return 0;
-  }
+/** Measures and writes the table; returns the exit code. */
+async function calibrate(opt) {
   const started = Date.now();
   const levels = Array.from({ length: MAX_LEVEL + 1 }, (_, l) => l);
   progress('the mesh');
@@ -173,10 +162,4 @@ async function main(argv) {
   }
 }
 
-if (process.argv[1] && path.resolve(process.argv[1]) === fileURLToPath(import.meta.url)) {
-  main(process.argv.slice(2)).then((code) => { process.exitCode = code; }, (err) => {
-    process.stderr.write('\n');
-    console.error(`calibrate: failed during "${progress.last}": ${err.message}`);
-    process.exitCode = 1;
-  });
-}
+if (isMainScript(import.meta.url)) runCommand({ name: 'calibrate', help: HELP, readOptions, run: calibrate, progress });

@@ -1,5 +1,7 @@
 // What the command-line tools share: node:util parseArgs with --help, and one kind of error for
 // bad usage, which each command reports with its help text and exit code 2.
+import { realpathSync } from 'node:fs';
+import { fileURLToPath } from 'node:url';
 import { parseArgs } from 'node:util';
 
 /** Bad usage: an unknown option, a missing or bad value. The command exits with code 2. */
@@ -57,4 +59,42 @@ export function progressLine(name) {
   };
   progress.last = '';
   return progress;
+}
+
+/** Whether the module at `moduleUrl` (its import.meta.url) is the script node was started with; importing it, as a test does, runs nothing. */
+export function isMainScript(moduleUrl) {
+  if (!process.argv[1]) return false;
+  try {
+    return realpathSync(process.argv[1]) === realpathSync(fileURLToPath(moduleUrl));
+  } catch {
+    return false;
+  }
+}
+
+/**
+ * Runs a command-line tool the same way for all: the options read by `readOptions` (a UsageError
+ * prints it with the help, exit code 2), --help prints the help (0), otherwise `run(options)`
+ * gives the exit code; a failure prints "name: failed during <progress>: message" (1).
+ * @param {{name: string, help: string, readOptions: (argv: string[]) => object, run: (opt: object) => number|Promise<number>, progress?: {last: string}}} tool
+ */
+export async function runCommand({ name, help, readOptions, run, progress }, argv = process.argv.slice(2)) {
+  let opt;
+  try {
+    opt = readOptions(argv);
+  } catch (err) {
+    if (!(err instanceof UsageError)) throw err;
+    console.error(`${name}: ${err.message}\n\n${help}`);
+    return (process.exitCode = 2);
+  }
+  if (opt.help) {
+    console.log(help);
+    return (process.exitCode = 0);
+  }
+  try {
+    return (process.exitCode = await run(opt));
+  } catch (err) {
+    if (progress) process.stderr.write('\n');
+    console.error(`${name}: ${progress?.last ? `failed during "${progress.last}": ` : ''}${err.message}`);
+    return (process.exitCode = 1);
+  }
 }

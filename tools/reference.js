@@ -2,12 +2,11 @@
 // node tools/reference.js: the exact reference of a saved window.scene as a PNG, and optionally its
 // comparison with a canvas screenshot. The renderer is tools/reference/render.js, the error
 // measures tools/reference/measure.js, the PNG files tools/reference/png.js.
-import { readFileSync, realpathSync } from 'node:fs';
-import { fileURLToPath } from 'node:url';
+import { readFileSync } from 'node:fs';
 import { renderReference } from './reference/render.js';
 import { compareToReference } from './reference/measure.js';
 import { readPNG, writePNG } from './reference/png.js';
-import { UsageError, parseOptions, wholeNumber } from './cli.js';
+import { UsageError, isMainScript, parseOptions, runCommand, wholeNumber } from './cli.js';
 
 const HELP = `usage: node tools/reference.js --scene scene.json [--width N --height N] --out ref.png [--compare shot.png]
 
@@ -55,51 +54,24 @@ function readScene(path) {
   }
 }
 
-/** Runs the command; returns its exit code. */
-function main(argv) {
-  let opt;
-  try {
-    opt = readOptions(argv);
-  } catch (err) {
-    if (!(err instanceof UsageError)) throw err;
-    console.error(`reference: ${err.message}\n\n${HELP}`);
+/** Renders (and compares) with the options read; returns the exit code. */
+function reference(opt) {
+  const scene = readScene(opt.scene);
+  const shot = opt.compare ? readPNG(opt.compare) : null;
+  const width = opt.width ?? scene?.canvas?.width ?? shot?.width;
+  const height = opt.height ?? scene?.canvas?.height ?? shot?.height;
+  if (width === undefined || height === undefined) {
+    console.error('reference: the scene has no canvas size: give --width and --height');
     return 2;
   }
-  if (opt.help) {
-    console.log(HELP);
-    return 0;
+  const ref = renderReference(scene, width, height);
+  if (opt.out) {
+    writePNG(opt.out, ref);
+    const covered = ref.coverage.reduce((a, v) => a + v, 0);
+    console.error(`reference: wrote ${opt.out} (${width}×${height}, the sphere covers ${covered} pixels)`);
   }
-  try {
-    const scene = readScene(opt.scene);
-    const shot = opt.compare ? readPNG(opt.compare) : null;
-    const width = opt.width ?? scene?.canvas?.width ?? shot?.width;
-    const height = opt.height ?? scene?.canvas?.height ?? shot?.height;
-    if (width === undefined || height === undefined) {
-      console.error('reference: the scene has no canvas size: give --width and --height');
-      return 2;
-    }
-    const ref = renderReference(scene, width, height);
-    if (opt.out) {
-      writePNG(opt.out, ref);
-      const covered = ref.coverage.reduce((a, v) => a + v, 0);
-      console.error(`reference: wrote ${opt.out} (${width}×${height}, the sphere covers ${covered} pixels)`);
-    }
-    if (shot) console.log(JSON.stringify(compareToReference(shot, ref), null, 2));
-    return 0;
-  } catch (err) {
-    console.error(`reference: ${err.message}`);
-    return 1;
-  }
+  if (shot) console.log(JSON.stringify(compareToReference(shot, ref), null, 2));
+  return 0;
 }
 
-/** Whether this file is the script node was started with (importing it, as a test does, runs nothing). */
-function isMainScript() {
-  if (!process.argv[1]) return false;
-  try {
-    return realpathSync(process.argv[1]) === realpathSync(fileURLToPath(import.meta.url));
-  } catch {
-    return false;
-  }
-}
-
-if (isMainScript()) process.exitCode = main(process.argv.slice(2));
+if (isMainScript(import.meta.url)) runCommand({ name: 'reference', help: HELP, readOptions, run: reference });
