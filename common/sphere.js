@@ -97,16 +97,20 @@ function build(level) {
 }
 
 // The levels next to the one shown are built while the browser is idle, so that Subdivide and
-// Coarsen only upload (in Node, with no idle callbacks, they are built when asked for).
+// Coarsen only upload (in Node, with no idle callbacks, they are built when asked for). Idle
+// means after the click's upload and frame: an idle callback asked for at once can run while the
+// upload itself is still awaited (WebGPU's onSubmittedWorkDone leaves the main thread idle) and
+// delay the frame the click asked for. A timer, not an animation frame, so no frame is asked for.
+const AHEAD_DELAY_MS = 50;
 function buildAhead(level) {
   if (typeof requestIdleCallback !== 'function') return;
   for (const next of [level + 1, level - 1]) {
     if (next < 0 || next > MAX_LEVEL || built[next] || queued.has(next)) continue;
     queued.add(next);
-    requestIdleCallback(() => {
+    setTimeout(() => requestIdleCallback(() => {
       built[next] ??= build(next);
       queued.delete(next);
-    }, { timeout: 1000 });
+    }, { timeout: 1000 }), AHEAD_DELAY_MS);
   }
 }
 

@@ -43,7 +43,7 @@ import { lookAt, mat3, mat4, normalMatrix, perspectiveZO } from '../common/math.
 import { MAX_LEVEL, sphereMesh, vertexBytes } from '../common/sphere.js';
 import { createShaderModule, createUniformBuffer, loadWGSL, setUniforms } from '../common/gpu.js';
 import { run } from '../common/page.js';
-import { arriveByClick, arriveCold, classicSphere, idle, faceCentroids } from './meshes.js';
+import { arriveByClick, arriveCold, classicSphere, settle, faceCentroids } from './meshes.js';
 import { BACKGROUND, EYE_DISTANCE, FOVY } from '../common/course.js';
 
 const FORMAT = 'rgba8unorm';
@@ -208,7 +208,7 @@ async function main() {
         ours.push(await arriveByClick(lvl, show, sync));
         cold.push(await arriveCold(lvl, show, sync));
 
-        await idle();
+        await settle();
         let t0 = performance.now();
         const data = classicSphere(lvl);
         if (classicBuffer) classicBuffer.destroy();
@@ -217,7 +217,7 @@ async function main() {
         await sync();
         classic.push(performance.now() - t0);
 
-        await idle();
+        await settle();
         t0 = performance.now();
         for (let i = 0; i < source.length; i++) copy[i] = source[i];
         device.queue.writeBuffer(boundBuffer, 0, copy);

@@ -44,7 +44,7 @@ import { lookAt, mat3, mat4, normalMatrix, perspective } from '../common/math.js
 import { MAX_LEVEL, sphereMesh, vertexBytes } from '../common/sphere.js';
 import { loadProgram } from '../common/shaders.js';
 import { createContext, run } from '../common/page.js';
-import { arriveByClick, arriveCold, classicSphere, idle, faceCentroids, indexedSphere } from './meshes.js';
+import { arriveByClick, arriveCold, classicSphere, settle, faceCentroids, indexedSphere } from './meshes.js';
 import { BACKGROUND, EYE_DISTANCE, FOVY } from '../common/course.js';
 
 
@@ -233,7 +233,7 @@ async function main() {
         ours.push(await arriveByClick(lvl, show, sync));
         cold.push(await arriveCold(lvl, show, sync));
 
-        await idle();
+        await settle();
         let t0 = performance.now();
         const data = classicSphere(lvl);
         if (classicBuffer) gl.deleteBuffer(classicBuffer);
@@ -243,7 +243,7 @@ async function main() {
         sync();
         classic.push(performance.now() - t0);
 
-        await idle();
+        await settle();
         t0 = performance.now();
         for (let i = 0; i < source.length; i++) target[i] = source[i];
         gl.bindBuffer(gl.ARRAY_BUFFER, boundBuffer);

@@ -92,13 +92,20 @@ export function faceCentroids(positions, count, out) {
   return out;
 }
 
-/**
- * Resolves when the browser is next idle. Every level-change time starts after one: the first
- * upload after an idle spell costs about 0.3 ms more here than one right after another, so all
- * four ways are timed from the same start, as a click comes after a pause.
- */
+/** Resolves when the browser is next idle. */
 export function idle() {
   return new Promise((resolve) => requestIdleCallback(resolve));
+}
+
+/**
+ * The pause before every timed level change, the same for every way measured: 80 ms (about the
+ * least time between two clicks; common/sphere.js builds ahead from 50 ms on), then an idle
+ * period. A change timed after a short pause and another after a long one would differ by how
+ * long the GPU side took to wake up (0.1 against 0.5 ms here), not by their own work.
+ */
+export async function settle() {
+  await new Promise((resolve) => setTimeout(resolve, 80));
+  await idle();
 }
 
 /**
@@ -111,9 +118,9 @@ export async function arriveByClick(level, show, sync) {
   forgetMeshes();
   show(sphereMesh(level > 0 ? level - 1 : 1));
   await sync();
-  for (let k = 0; k < 100 && !builtLevels()[level]; k++) await idle();
-  if (!builtLevels()[level]) throw new Error(`level ${level} was not built ahead in 100 idle periods`);
-  await idle();
+  for (let k = 0; k < 20 && !builtLevels()[level]; k++) await settle();
+  if (!builtLevels()[level]) throw new Error(`level ${level} was not built ahead in 20 pauses between clicks`);
+  await settle();
   const t0 = performance.now();
   show(sphereMesh(level));
   await sync();
@@ -123,7 +130,7 @@ export async function arriveByClick(level, show, sync) {
 /** A jump to a level nobody built yet (the URL, or a level no click led next to): built on the spot. ms. */
 export async function arriveCold(level, show, sync) {
   forgetMeshes();
-  await idle();
+  await settle();
   const t0 = performance.now();
   show(sphereMesh(level));
   await sync();

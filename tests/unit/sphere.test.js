@@ -75,14 +75,21 @@ test('sphereMesh builds each level once and gives back the same array', () => {
   assert.throws(() => sphereMesh(-1), RangeError);
 });
 
-test('sphereMesh builds the neighbouring levels ahead when the browser is idle', () => {
+test('sphereMesh builds the neighbouring levels ahead, when idle after the click\'s upload and frame', (t) => {
+  t.mock.timers.enable({ apis: ['setTimeout'] });
   const idle = [];
   globalThis.requestIdleCallback = (callback) => idle.push(callback);
+  const later = () => t.mock.timers.tick(25); // two calls: past the 50 ms the click's frame gets
   try {
     forgetMeshes();
     sphereMesh(4);
+    later();
+    assert.equal(idle.length, 0, 'no idle callback is asked for while the click\'s upload and frame may still be under way');
+    later();
     assert.equal(idle.length, 2, 'levels 5 and 3 are queued');
     sphereMesh(4);
+    later();
+    later();
     assert.equal(idle.length, 2, 'queued once, not again on the next call');
     for (const callback of idle.splice(0)) callback();
     assert.deepEqual(builtLevels(), [false, false, false, true, true, true, false, false, false]);
@@ -91,6 +98,8 @@ test('sphereMesh builds the neighbouring levels ahead when the browser is idle',
     tetrahedronSphere(5, fresh);
     assert.deepEqual(five, fresh, 'the level built ahead is the sphere at that level');
     sphereMesh(8);
+    later();
+    later();
     assert.equal(idle.length, 2, 'level 6 from 5, and level 7 from 8; nothing above the top');
   } finally {
     delete globalThis.requestIdleCallback;
