@@ -4,13 +4,14 @@
 // hand; tests/browser/calibration.spec.js re-measures every entry of it.
 //
 //  - MAX_DEVIATION[level]: measured from the mesh itself (meshDeviation), in Node.
-//  - SHADING_TABLE: each lighting step's shaders (lab/bench.html draws with WP04P3's, WP04P4's and
-//    WP04P5's own) at every level and, for the two with a highlight, every shininess in SHININESS,
-//    against the exact reference, by shadingError (the lab's and the tests' measure too), at each
-//    canvas size; the largest over the sizes is kept.
+//  - SHADING_BY_SIZE: each lighting step's shaders (lab/bench.html draws with WP04P3's, WP04P4's
+//    and WP04P5's own) at every level and, for the two with a highlight, every shininess in
+//    SHININESS, against the exact reference, by shadingError (the lab's and the tests' measure
+//    too), at each canvas size. SHADING_TABLE, what chooseLevel reads, is the largest over the
+//    sizes, taken when the module loads: every number in the file is a measurement.
 import { writeFileSync } from 'node:fs';
 import path from 'node:path';
-import { fileURLToPath } from 'node:url';
+import { fileURLToPath, pathToFileURL } from 'node:url';
 import { renderReference } from './reference/render.js';
 import { meshDeviation, shadingError } from './reference/measure.js';
 import { CHROMIUM_ARGS, launchChromium, startServer } from './browser.js';
@@ -24,9 +25,11 @@ Measures how far each lighting step's shading is from the exact picture at every
 level (and, with a highlight, every shininess the table holds), and how far the mesh falls inside
 the sphere, and writes them to common/shading-table.js, which chooseLevel and the pages' level
 hint read. Takes about two minutes.
-  --sizes LIST  canvas sizes in px to measure at; the largest error over them is kept (default 128,256,512)
+  --sizes LIST  canvas sizes in px to measure at, each kept; chooseLevel reads the largest (default 128,256,512)
   --out FILE    where to write the table (default common/shading-table.js)
-exit codes: 0 done, 1 it failed (the message says why), 2 bad usage`;
+  --check       measure, and compare with the table instead of writing it (exit 1 if an entry differs
+                by more than 0.02/255)
+exit codes: 0 done, 1 it failed or (--check) the table differs (the message says why), 2 bad usage`;
 
 /** The shininess values the table is measured at: the slider's range, 0 to 500, denser where it changes fastest. */
 export const SHININESS = [0, 1, 2, 5, 10, 20, 40, 80, 160, 320, 500];
@@ -84,12 +87,17 @@ export async function openBenchPage(browser, base, size) {
 }
 
 /** The table module's text. */
-function tableModule({ maxDeviation, table, sizes, browser, seconds }) {
+function tableModule({ maxDeviation, bySize, sizes, browser, seconds }) {
   const rows = (xs) => `[${xs.map((x) => round(x, 2)).join(', ')}]`;
-  const perShininess = (method) => `[\n${table[method].map((row, k) => `    ${rows(row)}, // s = ${SHININESS[k]}`).join('\n')}\n  ]`;
+  const perShininess = (table, method) => `[\n${table[method].map((row, k) => `      ${rows(row)}, // s = ${SHININESS[k]}`).join('\n')}\n    ]`;
+  const oneSize = (size) => `  ${size}: {
+    diffuse: ${rows(bySize[size].diffuse)},
+    gouraud: ${perShininess(bySize[size], 'gouraud')},
+    phong: ${perShininess(bySize[size], 'phong')},
+  },`;
   return `// Written by \`npm run calibrate\` (tools/calibrate.js) on ${new Date().toISOString().slice(0, 10)}, measured in
 // ${browser} at ${sizes.join(', ')} px in ${seconds} s. Do not edit: run the command again.
-// tests/browser/calibration.spec.js re-measures every entry.
+// tests/browser/calibration.spec.js (and \`npm run calibrate -- --check\`) re-measure every entry.
 
 /**
  * How far the mesh at each level falls inside the unit sphere at worst: 1 − the least distance
@@ -97,32 +105,50 @@ function tableModule({ maxDeviation, table, sizes, browser, seconds }) {
  */
 export const MAX_DEVIATION = [${maxDeviation.map((x) => x.toExponential(4)).join(', ')}];
 
-/** The shininess values of SHADING_TABLE's rows. */
+/** The shininess values of the shading tables' rows. */
 export const SHININESS = [${SHININESS.join(', ')}];
 
 /**
- * How far each lighting step's shading is off at each level, in 8-bit steps (1 = 1/255): the
- * interior RMSE against the exact render with the silhouette left out (shadingError), for the
- * exercises' default view (eye (0, 0, 3), light along the view, kd 0.8, ks 0.5, Le 1, La 0.2),
- * the largest over the canvas sizes above. 0.29 is what rounding to 8 bits alone costs.
+ * How far each lighting step's shading is off at each level, in 8-bit steps (1 = 1/255), at each
+ * canvas size: the interior RMSE against the exact render with the silhouette left out
+ * (shadingError), for the exercises' default view (eye (0, 0, 3), light along the view, kd 0.8,
+ * ks 0.5, Le 1, La 0.2). 0.29 is what rounding to 8 bits alone costs.
  *  - diffuse[level]: WP04P3 (Gouraud, diffuse light only: no shininess)
  *  - gouraud[k][level]: WP04P4 (Gouraud, the Phong reflection model) with s = SHININESS[k]
  *  - phong[k][level]: WP04P5 (Phong shading) with s = SHININESS[k]
  */
-export const SHADING_TABLE = {
-  diffuse: ${rows(table.diffuse)},
-  gouraud: ${perShininess('gouraud')},
-  phong: ${perShininess('phong')},
+export const SHADING_BY_SIZE = {
+${sizes.map(oneSize).join('\n')}
 };
+
+const largest = (a, b) => (typeof a === 'number' ? Math.max(a, b)
+  : Array.isArray(a) ? a.map((x, k) => largest(x, b[k])) : Object.fromEntries(Object.keys(a).map((m) => [m, largest(a[m], b[m])])));
+/** SHADING_BY_SIZE's largest entry over the sizes, entry by entry: what chooseLevel reads. */
+export const SHADING_TABLE = Object.values(SHADING_BY_SIZE).reduce((table, t) => largest(table, t));
 `;
+}
+
+/** Every entry of \`expected\` (one size of SHADING_BY_SIZE) against \`measured\`: the ones that differ by more than \`tolerance\`. */
+export function compareShading(measured, expected, tolerance = 0.02) {
+  const wrong = [];
+  const rows = [['diffuse', measured.diffuse, expected.diffuse]];
+  for (const method of ['gouraud', 'phong']) {
+    SHININESS.forEach((s, k) => rows.push([`${method} s = ${s}`, measured[method][k], expected[method][k]]));
+  }
+  for (const [name, got, table] of rows) {
+    got.forEach((m, level) => {
+      if (!(Math.abs(m - table[level]) <= tolerance)) wrong.push(`${name} level ${level}: measured ${m.toFixed(2)}, table ${table[level]}`);
+    });
+  }
+  return wrong;
 }
 
 /** The options, checked: { sizes, out } or { help: true }. Throws a UsageError. */
 function readOptions(argv) {
-  const opt = parseOptions(argv, { sizes: { type: 'string' }, out: { type: 'string' } });
+  const opt = parseOptions(argv, { sizes: { type: 'string' }, out: { type: 'string' }, check: { type: 'boolean' } });
   if (opt.help) return opt;
   const sizes = (opt.sizes ?? '128,256,512').split(',').map((x) => wholeNumber(x.trim(), '--sizes', 16, 2048));
-  return { sizes, out: path.resolve(opt.out ?? TABLE) };
+  return { sizes, out: path.resolve(opt.out ?? TABLE), check: !!opt.check };
 }
 
 /** Measures and writes the table; returns the exit code. */
@@ -135,26 +161,30 @@ async function calibrate(opt) {
   let browser = null;
   try {
     browser = await launchChromium({ args: CHROMIUM_ARGS });
-    let table = null;
     const bySize = {};
     for (const size of opt.sizes) {
       const page = await openBenchPage(browser, server.url, size);
       bySize[size] = await measureShading(page, size, SHININESS, levels, progress);
       await page.close();
-      const max = (a, b) => (Array.isArray(a) ? a.map((x, k) => max(x, b[k])) : Math.max(a, b));
-      table = table ? Object.fromEntries(Object.entries(table).map(([m, t]) => [m, max(t, bySize[size][m])])) : bySize[size];
-    }
-    // how much the sizes differ: what a test that re-measures at one size must allow
-    let spread = 0;
-    for (const size of opt.sizes) {
-      const flat = (t) => [t.diffuse, ...t.gouraud, ...t.phong].flat();
-      const a = flat(bySize[size]), b = flat(table);
-      for (let k = 0; k < a.length; k++) spread = Math.max(spread, (b[k] - a[k]) / Math.max(b[k], 1));
     }
     const seconds = Math.round((Date.now() - started) / 1000);
-    writeFileSync(opt.out, tableModule({ maxDeviation, table, sizes: opt.sizes, browser: `Chromium ${browser.version()}`, seconds }));
     process.stderr.write(`\r[calibrate] done in ${seconds} s`.padEnd(80) + '\n');
-    console.log(`calibrate: wrote ${path.relative(process.cwd(), opt.out) || opt.out}; the sizes differ by at most ${(100 * spread).toFixed(1)}% of an entry (of 1/255 below 1)`);
+    if (opt.check) {
+      const { SHADING_BY_SIZE, MAX_DEVIATION } = await import(pathToFileURL(opt.out).href);
+      const wrong = maxDeviation.flatMap((d, l) => (Math.abs(d - MAX_DEVIATION[l]) <= 1e-4 * d ? [] : [`MAX_DEVIATION level ${l}: measured ${d}, table ${MAX_DEVIATION[l]}`]));
+      for (const size of opt.sizes) {
+        if (!SHADING_BY_SIZE[size]) wrong.push(`${size} px: not in the table`);
+        else wrong.push(...compareShading(bySize[size], SHADING_BY_SIZE[size]).map((w) => `${size} px, ${w}`));
+      }
+      if (wrong.length) {
+        console.error(`calibrate: ${wrong.length} entries of ${path.relative(process.cwd(), opt.out)} differ from what was measured:\n  ${wrong.join('\n  ')}`);
+        return 1;
+      }
+      console.log(`calibrate: every entry at ${opt.sizes.join(', ')} px is what was measured (within 0.02/255)`);
+      return 0;
+    }
+    writeFileSync(opt.out, tableModule({ maxDeviation, bySize, sizes: opt.sizes, browser: `Chromium ${browser.version()}`, seconds }));
+    console.log(`calibrate: wrote ${path.relative(process.cwd(), opt.out) || opt.out}`);
     return 0;
   } finally {
     await browser?.close();
