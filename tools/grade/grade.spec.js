@@ -535,6 +535,32 @@ async function judgeShininessZero(ctx, c, img, an, fit, result, say) {
   } else say('pass', `s = ${lo} leaves no dark spots inside the sphere (pow(0, 0) guarded)`);
 }
 
+/**
+ * Our reference's light, as the judge fitted the student's (P3–P5): the fitted direction toward the
+ * light is in view space, and our page at angle 0 has view = world (eye on +z), so a directional
+ * light shines along −l; a near point light with 1/r² sits at d·l (our sphere is a unit sphere,
+ * as the fit's). The level stays ours for the canvas size: a student's own level is not known.
+ */
+function referenceLight(result) {
+  const fit = result.numbers && result.numbers.fit;
+  if (!fit || !fit.light) return {};
+  const pl = result.numbers.pointLight;
+  const xyz = (v) => ({ lx: fmt(v[0], 3), ly: fmt(v[1], 3), lz: fmt(v[2], 3) });
+  if (pl && nearPointLight(pl) === 'falloff') return { light: 'point', ...xyz(pl.falloff.light.map((v) => v * pl.falloff.distance)) };
+  return { light: 'directional', ...xyz(fit.light.map((v) => -v)) };
+}
+/** The state our reference was drawn at, for report.json: its light (and where it came from) and level. */
+function referenceStateOf(query, scene) {
+  const q = Object.fromEntries(query.entries());
+  return {
+    level: scene && Number.isFinite(scene.level) ? scene.level : null,
+    levelFrom: 'ours: the least level that looks round and shades within tolerance at this canvas size (the student\'s level is not known)',
+    light: q.light ? { kind: q.light, xyz: [q.lx, q.ly, q.lz].map(Number) } : null,
+    lightFrom: q.light ? 'the light direction (or near point light) the judge fitted to the judged picture, in our view at angle 0' : 'none (no lit step)',
+    query: query.toString(),
+  };
+}
+
 function verdictOf(checks, fail) {
   if (fail) return 'fail';
   if (checks.some((c) => c.level === 'fail')) return 'fail';
@@ -600,7 +626,8 @@ for (const item of plan.items) {
       testInfo.setTimeout(testInfo.timeout + plan.referenceSeconds * 1000);
       const refLog = { errors: [], blocked: [] };
       const { width, height } = ctx.images.judged;
-      const query = new URLSearchParams({ api: 'webgl2', size: width, height, orbit: 0, ...item.referenceQuery });
+      const fitted = referenceLight(result);
+      const query = new URLSearchParams({ api: 'webgl2', size: width, height, orbit: 0, ...(fitted.light ? { angle: 0 } : {}), ...fitted, ...item.referenceQuery });
       let ref = null;
       try {
         const r = await openPage(browser, plan.repo, `${item.part}/index.html`, query.toString(), refLog);
@@ -608,6 +635,8 @@ for (const item of plan.items) {
           if (!r.why) {
             await r.page.clock.runFor(500);
             ref = await snap(r.page);
+            const scene = await r.page.evaluate(() => window.scene || null).catch(() => null);
+            result.referenceState = referenceStateOf(query, scene);
           }
         } finally {
           await r.context.close().catch(() => {});
@@ -618,7 +647,7 @@ for (const item of plan.items) {
       if (ref && ref.width === width && ref.height === height) {
         const cmp = compareImages(PNG.sync.read(png(ref)), PNG.sync.read(png(ctx.images.judged)));
         Object.assign(result, { mismatch: cmp.mismatch, rmse: cmp.rmse, comparison: cmp.comparison, mismatchFull: cmp.mismatchFull, mismatchObject: cmp.mismatchObject });
-        result.notes.push(...cmp.notes, 'the reference is our page at the same canvas size; the difference is evidence, the verdict comes from the checks');
+        result.notes.push(...cmp.notes, `the reference is our page at the same canvas size${result.referenceState && result.referenceState.light ? ', lit from the fitted light' : ''}; the difference is evidence, the verdict comes from the checks`);
         writeFileSync(path.join(dir, `${stem}-reference.png`), PNG.sync.write(cmp.reference));
         writeFileSync(path.join(dir, `${stem}-diff.png`), PNG.sync.write(cmp.diff));
         Object.assign(result.images, { reference: `${stem}-reference.png`, diff: `${stem}-diff.png` });
