@@ -106,6 +106,7 @@ function writeReport(out, submissions) {
       (r.images ? `<div class="images">${['first', 'coarse', 'judged', 'reference', 'diff'].filter((k) => r.images[k]).map((k) => `<figure>${img(s, r, k)}<figcaption>${{ first: 'first frame', coarse: 'a coarse level', judged: 'judged (submission)', reference: 'our reference', diff: 'difference' }[k]}</figcaption></figure>`).join('')}</div>` : '') +
       (r.numbers && Object.keys(r.numbers).length ? `<details><summary>numbers</summary><pre>${esc(JSON.stringify(r.numbers, (k, v) => (typeof v === 'number' ? Number(v.toFixed(4)) : v), 1))}</pre></details>` : '') +
       (r.mismatch !== null && r.mismatch !== undefined ? `<p>Against our reference: ${(100 * r.mismatch).toFixed(1)}% of pixels differ (${esc(r.comparison)}), RMSE ${(255 * r.rmse).toFixed(1)}/255 (evidence only).</p>` : '') +
+      (r.referenceState ? `<p>Our reference drawn at level ${esc(String(r.referenceState.level))}${r.referenceState.light ? `, a ${esc(r.referenceState.light.kind)} light at (${esc(r.referenceState.light.xyz.join(', '))}) as fitted to the student's picture` : ''}.</p>` : '') +
       list('Controls found:', Object.entries(r.controls || {}).map(([k, v]) => `${k}: ${v}`), 'controls') +
       list('What the grader did:', r.actions, 'actions') +
       list('Notes:', r.notes, 'notes') +

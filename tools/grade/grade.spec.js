@@ -11,7 +11,7 @@ import { PNG } from 'pngjs';
 import { compareImages } from './compare.js';
 import { instrumentScript } from './instrument.js';
 import { webgpuCaptureScript, readWebGPUFrame } from '../webgpu-capture.js';
-import { analyse, samples, normalColours, diffuseFit, silhouetteChange, shadingChange, pictureChange } from './judge.js';
+import { analyse, samples, normalColours, diffuseFit, silhouetteChange, shadingChange, pictureChange, pointLightFit, perspectiveSamples, darkSpots } from './judge.js';
 
 const plan = JSON.parse(readFileSync(process.env.GRADE_PLAN, 'utf8'));
 const rubric = plan.rubric;
@@ -367,9 +367,10 @@ async function gradeOpen(ctx, item, result) {
   }
 
   // ---- P3–P5: the reflection model ----
-  let fit = null;
+  let fit = null, pointLight = null;
   if (must.has('diffuse') || must.has('highlight')) {
     fit = diffuseFit(samples(img, an), T);
+    pointLight = fit && fit.spread >= T.litSpread ? fitPointLight(img, an, fit, result) : null;
     result.numbers.fit = fit && { r2: fit.r2, ambient: fit.ambient, diffuse: fit.diffuse, light: fit.light, highlightPeak: fit.highlightPeak, spread: fit.spread };
     // lit on both sides shows where the light comes from the side: any view seen on the orbit
     const twoSided = [fit, ...viewFits].filter(Boolean).find((f) => f.r2TwoSided > f.r2 + 0.03 && f.r2 < 0.97);
@@ -382,6 +383,9 @@ async function gradeOpen(ctx, item, result) {
       say('fail', `brightness does not follow max(n·w_i, 0)·kd·Le + ambient at every orbit position (R² down to ${fmt(worst.r2)}): lit where it should be dark?`);
     } else if (fit.r2 >= T.diffuseR2 && fit.diffuse >= T.diffuseMin) {
       say('pass', `brightness follows max(n·w_i, 0)·kd·Le + ambient (R² ${fmt(fit.r2)}, fitted light ${fit.light.map((v) => fmt(v)).join(', ')})`);
+    } else if (nearPointLight(pointLight) && fit.diffuse >= T.diffuseMin) {
+      const f = pointLight[nearPointLight(pointLight)];
+      say('pass', `brightness follows max(n·w_i, 0)·kd·L_i + ambient for a point light ${fmt(f.distance, 1)} radii from the centre (R² ${fmt(f.r2)})`);
     } else say('fail', `brightness does not follow max(n·w_i, 0)·kd·Le + ambient for any light direction (R² ${fmt(fit.r2)})`);
   }
   if (shadedPart && orbitFits.length >= 2) {
@@ -401,6 +405,7 @@ async function gradeOpen(ctx, item, result) {
     else if (moving) say('review', 'the camera orbits, but no button toggles the orbit on/off (the slide asks for one)');
     else say('review', 'no orbit: no moving camera and no button toggling it');
   }
+  if (pointLight) judgePointLight(pointLight, say);
   if (must.has('highlight') && fit) {
     if (fit.highlightPeak >= T.highlightPeak) say('pass', `a specular highlight (up to ${fmt(100 * fit.highlightPeak, 0)}% of the way from the diffuse fit to white)`);
     else say('fail', `no specular highlight: nothing brighter than the diffuse fit (${fmt(fit.highlightPeak)})`);
@@ -450,6 +455,8 @@ async function gradeOpen(ctx, item, result) {
     if (must.has('sliderEffects') && dead) say('review', `${dead} slider(s) change nothing in the picture`);
   }
 
+  if (must.has('highlight') && fit && stopped && R.s) await judgeShininessZero(ctx, R.s, img, an, fit, result, say);
+
   // ---- P5: the highlight per fragment, seen at a coarse level ----
   if (must.has('perFragment') && fit) {
     const coarse = stopped ? ladder.find((s) => !s.an.blank && s.an.roundness < T.coarseRoundness && s !== judged) : null;
@@ -475,6 +482,83 @@ async function gradeOpen(ctx, item, result) {
   }
   if (!stopped && moving) say('review', 'the orbit could not be stopped: pictures were judged while moving');
   return { checks };
+}
+
+/**
+ * A point light without the 1/r² fall-off (the slides: L_i = I/‖p_ℓ − x‖²): the judged picture's
+ * brightness fitted with a point light at a fitted distance, with and without 1/r². Said only where
+ * the light is near (the fall-off across the sphere is measurable) and one model is clearly better;
+ * a directional or far light fits both alike and is not mentioned.
+ */
+function fitPointLight(img, an, fit, result) {
+  const pl = pointLightFit(perspectiveSamples(img, an, T.pointLightFovy, { max: 1500 }), { ...T, around: fit.light });
+  if (pl) result.numbers.pointLight = pl;
+  return pl;
+}
+/** 'falloff' or 'none': the model a near point light fits well (R² ≥ diffuseR2), or null. */
+function nearPointLight(pl) {
+  if (!pl) return null;
+  const good = ['falloff', 'none'].filter((k) => pl[k].r2 >= T.diffuseR2 && pl[k].distance <= T.pointLightNear);
+  return good.sort((a, b) => pl[b].r2 - pl[a].r2)[0] || null;
+}
+function judgePointLight(pl, say) {
+  const gain = pl.falloff.r2 - pl.none.r2; // > 0: the fall-off fits better
+  const near = (f) => f.distance <= T.pointLightNear;
+  if (-gain >= T.pointLightGain && near(pl.none) && pl.falloff.rms >= T.pointLightRmsRatio * pl.none.rms) {
+    say('review', `point light without the 1/r² fall-off: brightness fits a light ${fmt(pl.none.distance, 1)} radii from the centre with no fall-off (R² ${fmt(pl.none.r2, 3)}) better than with L_i = I/‖p_ℓ − x‖² (R² ${fmt(pl.falloff.r2, 3)})`);
+  } else if (gain >= T.pointLightGain && near(pl.falloff) && pl.none.rms >= T.pointLightRmsRatio * pl.falloff.rms) {
+    say('pass', `a point light ${fmt(pl.falloff.distance, 1)} radii from the centre, with the 1/r² fall-off (R² ${fmt(pl.falloff.r2, 3)}; without it ${fmt(pl.none.r2, 3)})`);
+  }
+}
+
+/**
+ * s at its least (where that is 0 or below): the Phong term max(cos φ, 0)^s with s = 0 is pow(0, 0)
+ * where cos φ ≤ 0, undefined (NaN: black on many GPUs). One capture at the least s, compared with
+ * the judged picture (same view), then s back where it was.
+ */
+async function judgeShininessZero(ctx, c, img, an, fit, result, say) {
+  const lo = c.min === '' || c.min === undefined || c.min === null ? 0 : Number(c.min); // a range's min defaults to 0
+  if (!(lo <= 0) || (c.type !== 'range' && c.type !== 'number')) return;
+  await ctx.page.evaluate(([i, v]) => window.__grade.setValue(i, v, ['input', 'change']), [c.index, lo]);
+  await tick(ctx, 100);
+  const after = await snap(ctx.page);
+  await ctx.page.evaluate(([i, v]) => window.__grade.setValue(i, v, ['input', 'change']), [c.index, c.value]);
+  await tick(ctx, 100);
+  if (!after || after.width !== img.width || after.height !== img.height) return;
+  const spots = darkSpots(img, an, after, fit, T);
+  if (!spots) return;
+  result.numbers.darkSpotsAtLeastS = spots;
+  ctx.images.leastS = after;
+  ctx.actions.push(`set slider s to its least, ${lo} (${spots.count} sampled pixels inside the sphere turned dark)`);
+  if (spots.share >= T.darkSpotShare && spots.count >= 5) {
+    say('review', `s = ${lo} gives black spots inside the sphere (${fmt(100 * spots.share, 1)}% of it darker than diffuse + ambient): pow(0, 0) is undefined; guard it (e.g. cos φ > 0 ? pow(cos φ, s) : 0)`);
+  } else say('pass', `s = ${lo} leaves no dark spots inside the sphere (pow(0, 0) guarded)`);
+}
+
+/**
+ * Our reference's light, as the judge fitted the student's (P3–P5): the fitted direction toward the
+ * light is in view space, and our page at angle 0 has view = world (eye on +z), so a directional
+ * light shines along −l; a near point light with 1/r² sits at d·l (our sphere is a unit sphere,
+ * as the fit's). The level stays ours for the canvas size: a student's own level is not known.
+ */
+function referenceLight(result) {
+  const fit = result.numbers && result.numbers.fit;
+  if (!fit || !fit.light) return {};
+  const pl = result.numbers.pointLight;
+  const xyz = (v) => ({ lx: fmt(v[0], 3), ly: fmt(v[1], 3), lz: fmt(v[2], 3) });
+  if (pl && nearPointLight(pl) === 'falloff') return { light: 'point', ...xyz(pl.falloff.light.map((v) => v * pl.falloff.distance)) };
+  return { light: 'directional', ...xyz(fit.light.map((v) => -v)) };
+}
+/** The state our reference was drawn at, for report.json: its light (and where it came from) and level. */
+function referenceStateOf(query, scene) {
+  const q = Object.fromEntries(query.entries());
+  return {
+    level: scene && Number.isFinite(scene.level) ? scene.level : null,
+    levelFrom: 'ours: the least level that looks round and shades within tolerance at this canvas size (the student\'s level is not known)',
+    light: q.light ? { kind: q.light, xyz: [q.lx, q.ly, q.lz].map(Number) } : null,
+    lightFrom: q.light ? 'the light direction (or near point light) the judge fitted to the judged picture, in our view at angle 0' : 'none (no lit step)',
+    query: query.toString(),
+  };
 }
 
 function verdictOf(checks, fail) {
@@ -542,7 +626,8 @@ for (const item of plan.items) {
       testInfo.setTimeout(testInfo.timeout + plan.referenceSeconds * 1000);
       const refLog = { errors: [], blocked: [] };
       const { width, height } = ctx.images.judged;
-      const query = new URLSearchParams({ api: 'webgl2', size: width, height, orbit: 0, ...item.referenceQuery });
+      const fitted = referenceLight(result);
+      const query = new URLSearchParams({ api: 'webgl2', size: width, height, orbit: 0, ...(fitted.light ? { angle: 0 } : {}), ...fitted, ...item.referenceQuery });
       let ref = null;
       try {
         const r = await openPage(browser, plan.repo, `${item.part}/index.html`, query.toString(), refLog);
@@ -550,6 +635,8 @@ for (const item of plan.items) {
           if (!r.why) {
             await r.page.clock.runFor(500);
             ref = await snap(r.page);
+            const scene = await r.page.evaluate(() => window.scene || null).catch(() => null);
+            result.referenceState = referenceStateOf(query, scene);
           }
         } finally {
           await r.context.close().catch(() => {});
@@ -560,7 +647,7 @@ for (const item of plan.items) {
       if (ref && ref.width === width && ref.height === height) {
         const cmp = compareImages(PNG.sync.read(png(ref)), PNG.sync.read(png(ctx.images.judged)));
         Object.assign(result, { mismatch: cmp.mismatch, rmse: cmp.rmse, comparison: cmp.comparison, mismatchFull: cmp.mismatchFull, mismatchObject: cmp.mismatchObject });
-        result.notes.push(...cmp.notes, 'the reference is our page at the same canvas size; the difference is evidence, the verdict comes from the checks');
+        result.notes.push(...cmp.notes, `the reference is our page at the same canvas size${result.referenceState && result.referenceState.light ? ', lit from the fitted light' : ''}; the difference is evidence, the verdict comes from the checks`);
         writeFileSync(path.join(dir, `${stem}-reference.png`), PNG.sync.write(cmp.reference));
         writeFileSync(path.join(dir, `${stem}-diff.png`), PNG.sync.write(cmp.diff));
         Object.assign(result.images, { reference: `${stem}-reference.png`, diff: `${stem}-diff.png` });

@@ -303,3 +303,117 @@ export function pictureChange(a, b) {
   }
   return diff / (a.width * a.height);
 }
+
+/**
+ * P3–P5: is the light a point light, and does it fall off as 1/r² (the slides: L_i = I/‖p_ℓ − x‖²)?
+ * Brightness is fitted by a + b·max(n·w_i, 0)·g over the sphere seen as a unit sphere (x = n,
+ * orthographic), the light at p_ℓ = d·l (d in sphere radii, from the centre), w_i = normalize(p_ℓ − x),
+ * with g = 1/‖p_ℓ − x‖² (fall-off) or g = 1 (none). Both models hold a directional light (d → ∞),
+ * so a far or directional light fits both alike: only a near light tells them apart. Pixels above
+ * both fits (a highlight) and clipped ones are left out. Returns the best of each model.
+ */
+export function pointLightFit(pts, rubric = {}) {
+  const use0 = pts.map((s) => Math.max(...s.c) < 0.985);
+  if (use0.filter(Boolean).length < 50) return null;
+  for (const s of pts) s.y = luminance(s.c);
+  const DIST = [1.25, 1.5, 1.75, 2, 2.5, 3, 4, 5, 7, 10, 20, 1e4];
+  const fit = (use, l, d, falloff) => {
+    let n = 0, sx = 0, sy = 0, sxx = 0, sxy = 0, syy = 0;
+    const px = d * l[0], py = d * l[1], pz = d * l[2];
+    const xs = new Float64Array(pts.length);
+    for (let i = 0; i < pts.length; i++) {
+      if (!use[i]) continue;
+      const s = pts[i];
+      const wx = px - s.n[0], wy = py - s.n[1], wz = pz - s.n[2];
+      const r2 = wx * wx + wy * wy + wz * wz, r = Math.sqrt(r2);
+      const cos = Math.max(0, (s.n[0] * wx + s.n[1] * wy + s.n[2] * wz) / r);
+      const x = falloff ? cos * ((d - 1) * (d - 1)) / r2 : cos; // scaled: 1 at the point nearest the light
+      xs[i] = x;
+      n++; sx += x; sy += s.y; sxx += x * x; sxy += x * s.y; syy += s.y * s.y;
+    }
+    const den = n * sxx - sx * sx;
+    const b = den > 1e-9 ? (n * sxy - sx * sy) / den : 0;
+    const a = (sy - b * sx) / n;
+    return { a, b, l, d, falloff, sse: Math.max(0, syy - a * sy - b * sxy), xs };
+  };
+  const search = (use, falloff, around) => {
+    let best = null;
+    const dirs = DIRS.filter((l) => !around || l[0] * around[0] + l[1] * around[1] + l[2] * around[2] > 0.5);
+    for (const d of DIST) {
+      for (const l of dirs) {
+        const f = fit(use, l, d, falloff);
+        if (f.b > 0 && (!best || f.sse < best.sse)) best = f;
+      }
+    }
+    if (!best) return null;
+    for (let step = 0.1; step > 0.005; step /= 2) { // refine the direction, then the distance
+      for (const dd of [[1, 0, 0], [-1, 0, 0], [0, 1, 0], [0, -1, 0], [0, 0, 1], [0, 0, -1]]) {
+        const l = best.l.map((v, k) => v + step * dd[k]), len = Math.hypot(...l);
+        const f = fit(use, l.map((v) => v / len), best.d, falloff);
+        if (f.b > 0 && f.sse < best.sse) best = f;
+      }
+      for (const d of [Math.max(1.05, best.d * (1 - 2 * step)), Math.min(1e4, best.d * (1 + 2 * step))]) {
+        const f = fit(use, best.l, d, falloff);
+        if (f.b > 0 && f.sse < best.sse) best = f;
+      }
+    }
+    return best;
+  };
+  let use = use0;
+  let none = null, inv = null;
+  const around = rubric.around || null;
+  for (let pass = 0; pass < 2; pass++) {
+    none = search(use, false, around);
+    inv = search(use, true, around);
+    if (!none || !inv) return null;
+    if (pass === 0) {
+      const margin = (rubric.highlightMargin ?? 0.12) * 0.7;
+      use = pts.map((s, i) => use0[i] && Math.min(s.y - none.a - none.b * none.xs[i], s.y - inv.a - inv.b * inv.xs[i]) < margin);
+    }
+  }
+  const used = use.filter(Boolean).length;
+  const mean = pts.reduce((a, s, i) => a + (use[i] ? s.y : 0), 0) / used;
+  const sst = pts.reduce((a, s, i) => a + (use[i] ? (s.y - mean) ** 2 : 0), 0);
+  const brief = (f) => ({ distance: f.d, light: f.l, r2: sst > 1e-12 ? 1 - f.sse / sst : 0, rms: Math.sqrt(f.sse / used) });
+  return { falloff: brief(inv), none: brief(none), fitted: used / pts.length };
+}
+
+/**
+ * Dark spots: pixels inside the sphere that a change of s made much darker than they were, and
+ * darker than the diffuse + ambient fit of the judged picture predicts there. Lowering s never
+ * darkens a pixel of the Phong or Blinn-Phong model (cos^s grows as s falls for cos in [0, 1]),
+ * and no specular term takes light away: such pixels are holes (pow(0, 0) or pow of a negative
+ * base, undefined: NaN, black on many GPUs). `pts` are samples of the judged picture (same view).
+ */
+export function darkSpots(img, an, after, fit, rubric = {}) {
+  const margin = rubric.darkSpotMargin ?? 0.15;
+  const { width: w } = img;
+  let dark = 0, n = 0;
+  for (const s of samples(img, an)) {
+    const o = 4 * (s.y * w + s.x);
+    const before = (img.data[o] + img.data[o + 1] + img.data[o + 2]) / 765;
+    const now = (after.data[o] + after.data[o + 1] + after.data[o + 2]) / 765;
+    const pred = fit.ambient + fit.diffuse * Math.max(0, s.n[0] * fit.light[0] + s.n[1] * fit.light[1] + s.n[2] * fit.light[2]);
+    n++;
+    if (now < before - margin && now < pred - margin) dark++;
+  }
+  return n ? { share: dark / n, count: dark } : null;
+}
+
+/**
+ * samples() with the normals a perspective camera sees: the eye on the sphere's axis, `fovy`
+ * degrees high (the slides' perspective(45, …) unless told), at the distance that makes the
+ * sphere's radius on screen; each pixel's ray meets the unit sphere at x, and n = x.
+ */
+export function perspectiveSamples(img, an, fovy = 45, opts = {}) {
+  const t = Math.tan((fovy * Math.PI) / 360) / (img.height / 2);
+  const D = 1 / Math.sin(Math.atan(an.radius * t));
+  return samples(img, an, opts).map((s) => {
+    const dx = (s.x + 0.5 - an.cx) * t, dy = -(s.y + 0.5 - an.cy) * t, len = Math.hypot(dx, dy, 1);
+    const d = [dx / len, dy / len, -1 / len];
+    const ed = D * d[2];
+    const k = -ed - Math.sqrt(Math.max(0, ed * ed - D * D + 1));
+    const x = [k * d[0], k * d[1], D + k * d[2]], xl = Math.hypot(...x);
+    return { ...s, n: x.map((v) => v / xl) };
+  });
+}
