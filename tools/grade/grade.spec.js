@@ -388,9 +388,10 @@ async function gradeOpen(ctx, item, result) {
     fit = diffuseFit(samples(img, an), T);
     result.numbers.fit = fit && { r2: fit.r2, ambient: fit.ambient, diffuse: fit.diffuse, light: fit.light, highlightPeak: fit.highlightPeak, spread: fit.spread };
     // lit on both sides shows where the light comes from the side: any view seen on the orbit
-    // (or over all pixels: a thin crescent lit from behind is left out of the first fit as if a highlight)
+    // (or over all pixels: a crescent lit from behind is left out of the first fit as if a highlight; on
+    // a page lit one-sided, |n·w_i| never explains all pixels better, it lights the dark side)
     const twoSided = [fit, ...viewFits].filter(Boolean).find((f) => (f.r2TwoSided > f.r2 + 0.03 && f.r2 < 0.97) ||
-      (f.r2TwoSidedAll > f.r2All + 0.1 && f.r2TwoSidedAll >= T.diffuseR2));
+      (f.r2TwoSidedAll > f.r2All + 0.015 && f.r2TwoSidedAll >= T.diffuseR2));
     if (!fit) say('fail', 'too little of the sphere to read its shading');
     else if (fit.spread < T.litSpread / 2) say('fail', 'the sphere is evenly bright: no diffuse shading to see (from any orbit position tried)');
     else if (twoSided) {
