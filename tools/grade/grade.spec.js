@@ -94,12 +94,12 @@ async function snap(page) {
 }
 
 /** Lets `ms` of frozen time pass (animation frames run), and counts the wall time it took. */
-async function tick(ctx, ms) {
+async function tick(ctx, ms, frames = 2) {
   const t0 = Date.now();
-  // jump ahead (due timers and one animation frame fire once), then two frames at 60 Hz: a slow
+  // jump ahead (due timers and one animation frame fire once), then `frames` frames at 60 Hz: a slow
   // page with many loops is not made to draw every frame of the time skipped
-  if (ms > 40) await ctx.page.clock.fastForward(ms - 32);
-  await ctx.page.clock.runFor(Math.min(ms, 32));
+  if (ms > 16 * frames + 8) await ctx.page.clock.fastForward(ms - 16 * frames);
+  await ctx.page.clock.runFor(Math.min(ms, 16 * frames));
   await readWebGPUFrame(ctx.page);
   ctx.busy += Date.now() - t0;
 }
@@ -110,13 +110,18 @@ function roles(controls) {
   const P = rubric.controls;
   const out = {};
   const take = (role, c) => { if (!out[role]) out[role] = c; };
+  Object.defineProperty(out, 'orbitAll', { value: [], enumerable: false }); // every control that may start or stop the orbit
   for (const c of controls) {
-    const names = [c.id, c.name, c.text].filter(Boolean);
+    // an id is read as words too: kdSlider, slider_kd, light-Le
+    const words = (s) => s && s.replace(/([a-z])([A-Z])/g, '$1 $2').replace(/[_-]+/g, ' ');
+    const names = [c.id, words(c.id), c.name, words(c.name), c.text].filter(Boolean);
     const is = (role) => names.some((t) => re(P[role]).test(t));
     const clickable = ['button', 'submit', 'a', 'div', 'span'].includes(c.type) || c.type === 'image';
+    if ((clickable || c.type === 'checkbox') && is('orbit') && !is('subdivide') && !is('coarsen')) out.orbitAll.push(c);
     if (clickable) {
-      if (is('subdivide')) take('subdivide', c);
-      else if (is('coarsen')) take('coarsen', c);
+      // "Decrement subdivision" names the level it lowers: coarsen is tried before subdivide
+      if (is('coarsen')) take('coarsen', c);
+      else if (is('subdivide')) take('subdivide', c);
       else if (is('orbit')) take('orbit', c);
       else if (is('depth')) take('depth', c);
       else if (is('cull')) take('cull', c);
@@ -221,42 +226,53 @@ async function gradeOpen(ctx, item, result) {
   const sampleOrbit = async (im) => {
     // the light may be behind the sphere at first: look along the orbit (a few positions at least)
     // and a few positions at least, to see the lit side turn with the orbit (a light fixed in the world)
+    // (many pages turn the camera a fixed step per frame, or per setInterval tick, not per second:
+    // each sample runs frames, more as the search goes on, so such an orbit gets round too)
     let k = 0;
     for (; k < T.orbitSamples && (look(im) < T.litSpread * 1.5 || k < 2); k++) {
-      await tick(ctx, T.orbitSampleSeconds * 1000);
+      await tick(ctx, T.orbitSampleSeconds * 1000, Math.min(8 << k, Math.round(60 * T.orbitSampleSeconds)));
       im = await snap(page);
     }
     ctx.actions.push(`sampled the orbit at ${k} positions ${fmt(T.orbitSampleSeconds, 1)} s apart (${orbitFits.length} lit)`);
     return im;
   };
+  // the controls that may start or stop the orbit: one toggle, or a Start and a Stop button
+  const orbitControls = R.orbit ? [R.orbit, ...R.orbitAll.filter((c) => c !== R.orbit)].slice(0, 3) : [];
+  // clicks the orbit controls in turn, the one that started it first, until the picture stands still
+  const stopOrbit = async (starter) => {
+    for (const c of [starter, ...orbitControls.filter((x) => x !== starter)]) {
+      await click(ctx, c, 'the orbit control');
+      const a = await snap(page);
+      await tick(ctx, 400);
+      cur = await snap(page);
+      if (pictureChange(a, cur) <= 0.001) {
+        ctx.actions.push('the orbit stopped');
+        return true;
+      }
+      ctx.actions.push('the picture still moves after the orbit control');
+    }
+    return false;
+  };
+  let startedByUs = false;
   if (moving) {
     ctx.actions.push('the picture moves by itself (an orbit or animation)');
     if (shadedPart) cur = await sampleOrbit(cur);
-    if (R.orbit) {
-      await click(ctx, R.orbit, 'the orbit control');
-      const a = await snap(page);
+    if (R.orbit && await stopOrbit(R.orbit)) orbitToggles = stopped = true;
+  } else if (R.orbit && shadedPart) {
+    let starter = null;
+    for (const c of orbitControls) {
+      await click(ctx, c, 'the orbit control');
       await tick(ctx, 400);
       const b = await snap(page);
-      if (pictureChange(a, b) <= 0.001) {
-        orbitToggles = stopped = true;
-        ctx.actions.push('the orbit stopped');
-      } else ctx.actions.push('the picture still moves after the orbit control');
+      const started = pictureChange(cur, b) > 0.001;
       cur = b;
+      if (started) { starter = c; break; }
     }
-  } else if (R.orbit && shadedPart) {
-    await click(ctx, R.orbit, 'the orbit control');
-    await tick(ctx, 400);
-    const b = await snap(page);
-    if (pictureChange(cur, b) > 0.001) {
-      orbitToggles = true;
+    if (starter) {
+      orbitToggles = startedByUs = true;
       ctx.actions.push('the orbit started');
-      await sampleOrbit(b);
-      await click(ctx, R.orbit, 'the orbit control again');
-      const c = await snap(page);
-      await tick(ctx, 300);
-      cur = await snap(page);
-      stopped = pictureChange(c, cur) <= 0.001;
-      if (stopped) ctx.actions.push('the orbit stopped');
+      await sampleOrbit(cur);
+      stopped = await stopOrbit(starter);
     }
   }
 
@@ -361,7 +377,7 @@ async function gradeOpen(ctx, item, result) {
     } else say('pass', `colours decode to unit normals 2c − 1 (off by ${fmt(nc.unitError, 3)})`);
     if (must.has('frontFaces') && nc && nc.spread >= T.normalsSpread) {
       if (judgeFaces()) say('pass', 'the visible colours are the normals facing the viewer: front faces only');
-      else if (nc.det < 0 && nc.residual <= T.facingResidual) say('fail', 'the inside of the far side shows (the normals face away from the viewer): the front faces are culled');
+      else if (nc.det < 0 && nc.residual <= T.facingResidual) say('fail', 'the inside of the far side shows (the normals face away from the viewer): the front faces are culled, or the depth test is off and the far side is drawn last');
       else say('fail', `back faces show through the front (normals do not vary smoothly across the picture, misfit ${fmt(nc.residual)}): depth test or culling missing`);
     }
   }
@@ -373,7 +389,10 @@ async function gradeOpen(ctx, item, result) {
     pointLight = fit && fit.spread >= T.litSpread ? fitPointLight(img, an, fit, result) : null;
     result.numbers.fit = fit && { r2: fit.r2, ambient: fit.ambient, diffuse: fit.diffuse, light: fit.light, highlightPeak: fit.highlightPeak, spread: fit.spread };
     // lit on both sides shows where the light comes from the side: any view seen on the orbit
-    const twoSided = [fit, ...viewFits].filter(Boolean).find((f) => f.r2TwoSided > f.r2 + 0.03 && f.r2 < 0.97);
+    // (or over all pixels: a crescent lit from behind is left out of the first fit as if a highlight; on
+    // a page lit one-sided, |n·w_i| never explains all pixels better, it lights the dark side)
+    const twoSided = [fit, ...viewFits].filter(Boolean).find((f) => (f.r2TwoSided > f.r2 + 0.03 && f.r2 < 0.97) ||
+      (f.r2TwoSidedAll > f.r2All + 0.015 && f.r2TwoSidedAll >= T.diffuseR2));
     if (!fit) say('fail', 'too little of the sphere to read its shading');
     else if (fit.spread < T.litSpread / 2) say('fail', 'the sphere is evenly bright: no diffuse shading to see (from any orbit position tried)');
     else if (twoSided) {
@@ -476,11 +495,11 @@ async function gradeOpen(ctx, item, result) {
       result.numbers.coarseShadingChange = change;
       ctx.images.coarse = coarse.img;
       if (change !== null && change <= T.phongCoarseChange) say('pass', `the shading at a coarse level (roundness ${fmt(coarse.an.roundness)}) stays as smooth as at the finest (RMS ${fmt(change, 3)}): per fragment`);
-      else say('fail', `the highlight follows the triangles at a coarse level (RMS ${fmt(change, 3)} from the finest): shading is per vertex, not per fragment`);
+      else say('fail', `the highlight follows the triangles at a coarse level (RMS ${fmt(change, 3)} from the finest): shading is per vertex, not per fragment (or the normals are not re-normalised in the fragment shader)`);
     } else if (frag) say('review', 'no coarse level to compare; the fragment shader evaluates the specular term (pow), so probably per fragment');
     else say('fail', 'no coarse level to compare, and no pow() in the fragment shader: the model seems evaluated per vertex');
   }
-  if (!stopped && moving) say('review', 'the orbit could not be stopped: pictures were judged while moving');
+  if (!stopped && (moving || startedByUs)) say('review', 'the orbit could not be stopped: pictures were judged while moving');
   return { checks };
 }
 

@@ -97,6 +97,29 @@ export function instrumentScript() {
     return { width: copy.width, height: copy.height, api: canvas.getAttribute('data-grade-api'), rgba: btoa(s) };
   };
 
+  /** The words right before a control (and after it, for a checkbox), up to a line break or another control. */
+  const INLINE = /^(SUB|SUP|B|I|EM|STRONG|SPAN|LABEL|SMALL|CODE|FONT|OUTPUT)$/;
+  const CONTROL = 'button, input, select, textarea';
+  const nearbyText = (el, after) => {
+    const words = (dir) => {
+      let out = '';
+      for (let n = el[dir]; n && out.length < 60; n = n[dir]) {
+        if (n.nodeType === 3) out = dir === 'previousSibling' ? n.textContent + out : out + n.textContent;
+        else if (n.nodeType === 1 && INLINE.test(n.tagName) && !n.matches(CONTROL) && !n.querySelector(CONTROL)) {
+          out = dir === 'previousSibling' ? n.textContent + out : out + n.textContent;
+        } else break;
+      }
+      return out.trim();
+    };
+    let text = words('previousSibling');
+    if (after) text += ' ' + words('nextSibling');
+    const cell = el.parentElement;
+    if (!text.trim() && cell && /^T[DH]$/.test(cell.tagName) && cell.querySelectorAll(CONTROL).length === 1 && cell.previousElementSibling) {
+      text = cell.previousElementSibling.textContent;
+    }
+    return text.trim();
+  };
+
   /** The page's controls with what a teacher would read on them. */
   g.controls = () => {
     const els = [...document.querySelectorAll('button, input, select, [role=button], a[onclick]')];
@@ -106,7 +129,10 @@ export function instrumentScript() {
       const prev = el.previousElementSibling && /^(LABEL|SPAN|B|P)$/.test(el.previousElementSibling.tagName) ? el.previousElementSibling.textContent : '';
       const parentText = el.parentElement && el.parentElement.tagName === 'LABEL' ? el.parentElement.textContent : '';
       const type = el.tagName === 'INPUT' ? (el.type || 'text') : el.tagName.toLowerCase();
-      const text = [el.textContent, el.value && el.tagName !== 'INPUT' ? '' : '', el.getAttribute('aria-label'), el.title, ...labels, parentText, prev]
+      // an input or select without a label is named by the words beside it: "Diffuse k<sub>d</sub>: <input>",
+      // "<input type=checkbox> Orbit", or the table cell before its own
+      const nearby = el.tagName === 'INPUT' || el.tagName === 'SELECT' ? nearbyText(el, type === 'checkbox' || type === 'radio') : '';
+      const text = [el.textContent, el.value && el.tagName !== 'INPUT' ? '' : '', el.getAttribute('aria-label'), el.title, ...labels, parentText, prev, nearby]
         .filter(Boolean).join(' ').replace(/\s+/g, ' ').trim();
       const events = [...(el.__gradeEvents || [])];
       for (const ev of ['click', 'input', 'change']) if (el['on' + ev] && !events.includes(ev)) events.push(ev);

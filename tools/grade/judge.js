@@ -225,7 +225,7 @@ export function diffuseFit(pts, rubric = {}) {
   const meanY = pts.reduce((a, s) => a + s.y, 0) / pts.length;
   const sst = pts.reduce((a, s) => a + (s.y - meanY) ** 2, 0);
   let use = pts.map(() => true);
-  let best = null;
+  let best = null, sseAll = null;
   const highlightMargin = rubric.highlightMargin ?? 0.12;
   for (let pass = 0; pass < 2; pass++) {
     best = null;
@@ -242,6 +242,7 @@ export function diffuseFit(pts, rubric = {}) {
       }
     }
     if (pass === 0) {
+      sseAll = best.sse;
       use = pts.map((s) => s.y - (best.a + best.b * Math.max(0, s.n[0] * best.l[0] + s.n[1] * best.l[1] + s.n[2] * best.l[2])) < highlightMargin * 0.7);
     }
   }
@@ -260,12 +261,17 @@ export function diffuseFit(pts, rubric = {}) {
     if (r > highlightMargin || share > 0.8) bright++;
   }
   // the same pixels under a two-sided model: a page lit on both sides (|n·w_i|) fits it better
-  let twoSided = null;
+  let twoSided = null, twoSidedAll = null;
+  const all = pts.map(() => true);
   for (const l of DIRS) {
     const f = fitDirection(pts, use, l, true);
     if (f.b >= 0 && (!twoSided || f.sse < twoSided.sse)) twoSided = f;
+    const g = fitDirection(pts, all, l, true);
+    if (g.b >= 0 && (!twoSidedAll || g.sse < twoSidedAll.sse)) twoSidedAll = g;
   }
-  return { r2: sstU > 1e-9 ? 1 - best.sse / sstU : 0, r2TwoSided: sstU > 1e-9 ? 1 - twoSided.sse / sstU : 0, rms: Math.sqrt(best.sse / Math.max(1, used)), ambient: best.a, diffuse: best.b,
+  // ... and both models over all pixels, none left out as a highlight
+  const r2All = sst > 1e-9 ? 1 - sseAll / sst : 0, r2TwoSidedAll = sst > 1e-9 ? 1 - twoSidedAll.sse / sst : 0;
+  return { r2: sstU > 1e-9 ? 1 - best.sse / sstU : 0, r2TwoSided: sstU > 1e-9 ? 1 - twoSided.sse / sstU : 0, r2All, r2TwoSidedAll, rms: Math.sqrt(best.sse / Math.max(1, used)), ambient: best.a, diffuse: best.b,
     light: best.l, spread: Math.sqrt(sst / pts.length), highlightPeak: peak, highlightShare: bright / pts.length, fitted: used / pts.length };
 }
 
