@@ -1,4 +1,5 @@
-// The grader (npm run grade) on a labelled class of our own making (tests/fixtures/build.js):
+// The grader (npm run grade) on a labelled class of our own making (tests/fixtures/build.js and
+// the hand-written hand-ins in tests/fixtures/handins/):
 // hand-in-like pages in WebGL and WebGPU, correct ones in students' own layouts and choices,
 // and typical mistakes and broken pages, each labelled with the verdict a teacher gives. The
 // grader must agree on every labelled part, and no broken part may pass. Also: the WebGPU
@@ -9,6 +10,7 @@ import os from 'node:os';
 import path from 'node:path';
 import { test, expect, chromium } from '@playwright/test';
 import { buildClass } from '../fixtures/build.js';
+import { copyHandins } from '../fixtures/handins.js';
 import { findParts, partNumber } from '../../tools/grade/parts.js';
 import { CHROMIUM, CHROMIUM_ARGS } from '../../tools/browser.js';
 import { WEBGPU_ARGS, webgpuCaptureScript, readWebGPUFrame } from '../../tools/webgpu-capture.js';
@@ -81,7 +83,11 @@ test.describe('grading the labelled class', () => {
   test.beforeAll(async ({}, testInfo) => {
     test.skip(testInfo.project.name !== 'webgl2', 'the grader runs its own Chromium; once is enough');
     dir = mkdtempSync(path.join(os.tmpdir(), 'class-'));
+    // the generated class (tests/fixtures/build.js) and the hand-written hand-ins (tests/fixtures/handins/)
     ({ labels } = buildClass(path.join(dir, 'class')));
+    const handins = copyHandins(path.join(dir, 'class'));
+    for (const name of Object.keys(handins)) expect(labels[name], `${name} is in both halves of the class`).toBeUndefined();
+    Object.assign(labels, handins);
     out = path.join(dir, 'report');
     // the shipped rubric, with time bounds for a test run (the page that never returns costs loadSeconds,
     // the one that draws nothing firstFrameSeconds)
