@@ -5,7 +5,7 @@
 // the properties the slide's step asks for (tools/grade/judge.js), and write a verdict with
 // reasons, the actions done, and the pictures (first, judged, our reference, difference).
 import { test } from '@playwright/test';
-import { readFileSync, writeFileSync, mkdirSync, statSync } from 'node:fs';
+import { readFileSync, readdirSync, writeFileSync, mkdirSync, statSync } from 'node:fs';
 import path from 'node:path';
 import { PNG } from 'pngjs';
 import { compareImages } from './compare.js';
@@ -22,8 +22,55 @@ const TYPES = { '.html': 'text/html', '.htm': 'text/html', '.js': 'text/javascri
 const FROZEN = new Date('2026-01-05T09:00:00Z');
 const fmt = (x, d = 2) => (x === null || x === undefined || Number.isNaN(x) ? '–' : Number(x).toFixed(d));
 
+/** Every file under `root` (relative paths, '/'-separated), up to a depth and a count: for findStandIn. */
+function filesUnder(root, dir = '', out = [], depth = 0) {
+  if (depth > 8 || out.length > 5000) return out;
+  let names;
+  try {
+    names = readdirSync(path.join(root, dir), { withFileTypes: true });
+  } catch {
+    return out;
+  }
+  for (const d of names) {
+    if (d.name.startsWith('.') || d.name === 'node_modules') continue;
+    const rel = dir ? `${dir}/${d.name}` : d.name;
+    if (d.isDirectory()) filesUnder(root, rel, out, depth + 1);
+    else out.push(rel);
+  }
+  return out;
+}
+
+/**
+ * A file the page asked for that is not where it asked, found as the student's own machine or a
+ * teacher would: the same path in other letter case (Windows and macOS ignore case: "Common/MV.js"
+ * for "common/mv.js"), else the one file of that name in the submission, or the one whose folders
+ * match the asked path's the furthest from the end ("../../Common/MV.js" from a part folder that
+ * went up past the submission's root). Null when there is none or no single best.
+ */
+function findStandIn(root, rel, files) {
+  const asked = rel.replace(/^\/+/, '').split('/').filter(Boolean);
+  if (!asked.length) return null;
+  const lower = asked.join('/').toLowerCase();
+  const all = files();
+  const sameCase = all.filter((f) => f.toLowerCase() === lower);
+  if (sameCase.length === 1) return sameCase[0];
+  const name = asked.at(-1).toLowerCase();
+  const named = all.filter((f) => f.split('/').at(-1).toLowerCase() === name);
+  if (named.length <= 1) return named[0] ?? null;
+  const shared = (f) => {
+    const a = f.toLowerCase().split('/').reverse(), b = asked.map((x) => x.toLowerCase()).reverse();
+    let k = 0;
+    while (k < a.length && k < b.length && a[k] === b[k]) k++;
+    return k;
+  };
+  const best = Math.max(...named.map(shared));
+  const top = named.filter((f) => shared(f) === best);
+  return top.length === 1 ? top[0] : null;
+}
+
 /** Serves `root` at `origin` through the browser's request routing: nothing else is reachable. */
 async function confine(context, root, origin, log) {
+  let files = null; // the submission's files, listed on the first miss
   await context.route('**/*', async (route) => {
     const url = new URL(route.request().url());
     if (url.origin !== origin) {
@@ -48,8 +95,14 @@ async function confine(context, root, origin, log) {
     try {
       body = readFileSync(file);
     } catch {
-      log.errors.push(`missing file: ${rel}`);
-      return route.fulfill({ status: 404, body: 'not found' });
+      const standIn = findStandIn(root, rel, () => (files ??= filesUnder(root)));
+      if (!standIn) {
+        log.errors.push(`missing file: ${rel}`);
+        return route.fulfill({ status: 404, body: 'not found' });
+      }
+      file = path.join(root, standIn);
+      body = readFileSync(file);
+      log.notes.push(`served ${standIn} for ${rel}, which is not in the submission as written (letter case, or a folder above the submission)`);
     }
     return route.fulfill({ status: 200, body, contentType: TYPES[path.extname(file).toLowerCase()] || 'application/octet-stream' });
   });
@@ -643,7 +696,7 @@ for (const item of plan.items) {
     // our reference at the student's size and level, beside theirs: evidence, not the verdict
     if (rubric.reference && ctx.images.judged && !outcome.fail) {
       testInfo.setTimeout(testInfo.timeout + plan.referenceSeconds * 1000);
-      const refLog = { errors: [], blocked: [] };
+      const refLog = { errors: [], blocked: [], notes: [] };
       const { width, height } = ctx.images.judged;
       const fitted = referenceLight(result);
       const query = new URLSearchParams({ api: 'webgl2', size: width, height, orbit: 0, ...(fitted.light ? { angle: 0 } : {}), ...fitted, ...item.referenceQuery });
