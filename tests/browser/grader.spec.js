@@ -17,10 +17,10 @@ import { WEBGPU_ARGS, webgpuCaptureScript, readWebGPUFrame } from '../../tools/w
 
 test('parts are found by the names students give them', () => {
   for (const [name, n] of [['WP04P1', 1], ['Part2', 2], ['part3', 3], ['p4', 4], ['p05', 5], ['w4p1', 1], ['week04p03', 3], ['part-2', 2],
-    ['w04p05', 5], ['02561_w4p3', 3], ['part03', 3]]) {
+    ['w04p05', 5], ['02561_w4p3', 3], ['part03', 3], ['Del1', 1], ['del_4', 4]]) {
     expect(partNumber(name), name).toBe(n);
   }
-  for (const name of ['week04', 'worksheet4', 'index', 'p12', 'exercise5', 'Lab 4']) expect(partNumber(name), name).toBeNull();
+  for (const name of ['week04', 'worksheet4', 'index', 'p12', 'exercise5', 'Lab 4', 'model1']) expect(partNumber(name), name).toBeNull();
 });
 
 test.describe('the WebGPU capture', () => {

@@ -11,7 +11,7 @@ import { PNG } from 'pngjs';
 import { compareImages } from './compare.js';
 import { instrumentScript } from './instrument.js';
 import { webgpuCaptureScript, readWebGPUFrame } from '../webgpu-capture.js';
-import { analyse, samples, normalColours, diffuseFit, silhouetteChange, shadingChange, pictureChange, pointLightFit, perspectiveSamples, darkSpots } from './judge.js';
+import { analyse, samples, normalColours, diffuseFit, silhouetteChange, shadingChange, pictureChange, pointLightFit, perspectiveSamples, darkSpots, highlightAbove } from './judge.js';
 
 const plan = JSON.parse(readFileSync(process.env.GRADE_PLAN, 'utf8'));
 const rubric = plan.rubric;
@@ -265,15 +265,19 @@ async function gradeOpen(ctx, item, result) {
   const shadedPart = must.has('diffuse');
   const orbitFits = []; // the diffuse fit at each lit orbit position seen
   const viewFits = []; // ... and at every lit view seen (the first one too)
-  const look = (im, orbiting = true) => { // the brightness spread; lit views' fits are kept
+  const look = (im, orbiting = true) => { // is the view lit? lit views' fits are kept
     const a = analyse(im, T);
-    if (a.blank) return 0;
+    if (a.blank) return false;
     const fit = diffuseFit(samples(im, a, { max: 1500 }), T);
-    if (fit && fit.spread >= T.litSpread * 1.5 && a.roundness < 0.3) {
+    // lit: a clear spread of brightness, or a clean diffuse fit with a clear diffuse term (a light
+    // from the eye's side spreads brightness little over the disc: n·w_i from 0.5 to 1 in the samples)
+    const lit = fit && a.roundness < 0.3 && (fit.spread >= T.litSpread * 1.5 ||
+      (fit.spread >= T.litSpread / 2 && fit.r2 >= T.diffuseR2 && fit.diffuse >= T.diffuseMin));
+    if (lit) {
       viewFits.push(fit);
       if (orbiting) orbitFits.push(fit);
     }
-    return fit ? fit.spread : 0;
+    return !!lit;
   };
   if (shadedPart) look(first, false);
   const sampleOrbit = async (im) => {
@@ -282,7 +286,7 @@ async function gradeOpen(ctx, item, result) {
     // (many pages turn the camera a fixed step per frame, or per setInterval tick, not per second:
     // each sample runs frames, more as the search goes on, so such an orbit gets round too)
     let k = 0;
-    for (; k < T.orbitSamples && (look(im) < T.litSpread * 1.5 || k < 2); k++) {
+    for (; k < T.orbitSamples && (!look(im) || k < 2); k++) {
       await tick(ctx, T.orbitSampleSeconds * 1000, Math.min(8 << k, Math.round(60 * T.orbitSampleSeconds)));
       im = await snap(page);
     }
@@ -359,11 +363,18 @@ async function gradeOpen(ctx, item, result) {
   }
   if (R.subdivide) {
     ladder.push(...await step(R.subdivide, 'Subdivide', T.maxSubdivisions + (coarsened ? T.maxCoarsenings : 0), settledSilhouette));
-  } else if (R.levelSlider && R.levelSlider.type === 'range') {
+  } else if (R.levelSlider && ['range', 'number', 'select'].includes(R.levelSlider.type)) {
+    // a level slider or <select> (which may start at level 0): stepped from its least up, as
+    // Subdivide is clicked, until the silhouette settles (at most maxSubdivisions steps)
     const c = R.levelSlider;
-    const lo = Number(c.min || 0), hi = Math.min(Number(c.max || 8), lo + T.maxSubdivisions);
+    const values = [];
+    if (c.type === 'select') values.push(...(c.options || []).slice(0, T.maxSubdivisions + 1));
+    else {
+      const lo = Number(c.min || 0), hi = Math.min(c.max === '' || c.max === undefined ? 8 : Number(c.max), lo + T.maxSubdivisions);
+      for (let v = lo; v <= hi; v++) values.push(v);
+    }
     ladder = [];
-    for (let v = lo; v <= hi; v++) {
+    for (const v of values) {
       await page.evaluate(([i, val]) => window.__grade.setValue(i, val), [c.index, v]);
       await tick(ctx, 100);
       const img = await snap(page);
@@ -372,7 +383,7 @@ async function gradeOpen(ctx, item, result) {
       ladder.push({ img, an: a });
       if (settled) break;
     }
-    ctx.actions.push(`set the level slider from ${lo} up to ${lo + ladder.length - 1}`);
+    ctx.actions.push(`set the level ${c.type === 'select' ? 'menu' : 'slider'} from ${values[0]} up to ${values[ladder.length - 1]}`);
   }
   const judged = ladder[ladder.length - 1];
   let img = judged.img;
@@ -478,6 +489,10 @@ async function gradeOpen(ctx, item, result) {
     else say('review', 'no orbit: no moving camera and no button toggling it');
   }
   if (pointLight) judgePointLight(pointLight, say);
+  // a near point light with 1/r² makes a bright spot a directional fit reads as a highlight: then the
+  // highlight is what rises above the point-light model (a page without a specular term has none)
+  const nearModel = clearlyNearFalloff(pointLight) ? pointLight.falloff.model : null;
+  if (fit && nearModel) fit.highlightPeak = pointLight.falloff.highlightPeak;
   if (must.has('highlight') && fit) {
     if (fit.highlightPeak >= T.highlightPeak) say('pass', `a specular highlight (up to ${fmt(100 * fit.highlightPeak, 0)}% of the way from the diffuse fit to white)`);
     else say('fail', `no specular highlight: nothing brighter than the diffuse fit (${fmt(fit.highlightPeak)})`);
@@ -513,7 +528,10 @@ async function gradeOpen(ctx, item, result) {
       else dead++;
       if (how !== 'none' && baseFit && k === 'ks') {
         const a = analyse(after, T);
-        const f = a.blank ? null : diffuseFit(samples(after, a), T);
+        // the highlight left with ks at its least: above the base picture's near point-light model (its
+        // 1/r² spot stays and is no highlight), or above the after picture's own directional fit
+        const f = a.blank ? null : nearModel ? { highlightPeak: highlightAbove(perspectiveSamples(after, an, T.pointLightFovy, { max: 1500 }), nearModel, T) }
+          : diffuseFit(samples(after, a), T);
         if (k === 'ks' && f && f.highlightPeak >= baseFit.highlightPeak * 0.5 && f.highlightPeak >= T.highlightPeak) {
           say('review', `ks at ${target} leaves the highlight as it was (${fmt(f.highlightPeak)}): is ks used in the specular term?`);
         }
@@ -572,6 +590,12 @@ function nearPointLight(pl) {
   if (!pl) return null;
   const good = ['falloff', 'none'].filter((k) => pl[k].r2 >= T.diffuseR2 && pl[k].distance <= T.pointLightNear);
   return good.sort((a, b) => pl[b].r2 - pl[a].r2)[0] || null;
+}
+/** A light clearly near and falling off as 1/r²: it fits, and better than without the fall-off. */
+function clearlyNearFalloff(pl) {
+  if (!pl) return false;
+  const gain = pl.falloff.r2 - pl.none.r2;
+  return gain >= T.pointLightGain && pl.falloff.distance <= T.pointLightNear && pl.falloff.r2 >= T.diffuseR2 && pl.none.rms >= T.pointLightRmsRatio * pl.falloff.rms;
 }
 function judgePointLight(pl, say) {
   const gain = pl.falloff.r2 - pl.none.r2; // > 0: the fall-off fits better

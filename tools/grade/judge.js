@@ -380,8 +380,35 @@ export function pointLightFit(pts, rubric = {}) {
   const used = use.filter(Boolean).length;
   const mean = pts.reduce((a, s, i) => a + (use[i] ? s.y : 0), 0) / used;
   const sst = pts.reduce((a, s, i) => a + (use[i] ? (s.y - mean) ** 2 : 0), 0);
-  const brief = (f) => ({ distance: f.d, light: f.l, r2: sst > 1e-12 ? 1 - f.sse / sst : 0, rms: Math.sqrt(f.sse / used) });
+  const brief = (f) => {
+    const model = { a: f.a, b: f.b, l: f.l, d: f.d, falloff: f.falloff };
+    return { distance: f.d, light: f.l, r2: sst > 1e-12 ? 1 - f.sse / sst : 0, rms: Math.sqrt(f.sse / used), model, highlightPeak: highlightAbove(pts, model, rubric) };
+  };
   return { falloff: brief(inv), none: brief(none), fitted: used / pts.length };
+}
+
+/** The brightness a fitted point-light model (pointLightFit's `model`) gives at a sample's normal. */
+export function pointLightPredict(n, m) {
+  const wx = m.d * m.l[0] - n[0], wy = m.d * m.l[1] - n[1], wz = m.d * m.l[2] - n[2];
+  const r2 = wx * wx + wy * wy + wz * wz, r = Math.sqrt(r2);
+  const cos = Math.max(0, (n[0] * wx + n[1] * wy + n[2] * wz) / r);
+  return m.a + m.b * (m.falloff ? cos * ((m.d - 1) * (m.d - 1)) / r2 : cos);
+}
+
+/**
+ * The highlight above a point-light model, as diffuseFit measures it above its directional fit:
+ * the largest rise of a pixel over the model, as a share of the headroom to white there. A near
+ * light's 1/r² bright spot is part of the model, not a highlight. `pts` are perspectiveSamples.
+ */
+export function highlightAbove(pts, model, rubric = {}) {
+  let peak = 0;
+  for (const s of pts) {
+    const pred = pointLightPredict(s.n, model);
+    const r = luminance(s.c) - pred;
+    if (r < (rubric.highlightMinRise ?? 0.06)) continue;
+    peak = Math.max(peak, Math.min(1, r / Math.max(0.1, 1 - pred)));
+  }
+  return peak;
 }
 
 /**

@@ -1,5 +1,5 @@
 // Finding a submission's parts: WP04P1 … WP04P5 by folder or file name, case-insensitive, in the
-// spellings students use (WP04P1, Part1, part1, p1, p01, w4p1, week04p01, worksheet4/part1, ...).
+// spellings students use (WP04P1, Part1, part1, p1, p01, w4p1, week04p01, worksheet4/part1, Danish Del1, ...).
 import { readdirSync, statSync } from 'node:fs';
 import path from 'node:path';
 
@@ -11,6 +11,7 @@ const PATTERNS = [
   /week0?4p0?([1-5])(?![0-9])/i,
   /w0?4p0?([1-5])(?![0-9])/i,
   /part[-_ ]?0?([1-5])(?![0-9])/i,
+  /(?:^|[^a-z])del[-_ ]?0?([1-5])(?![0-9])/i, // Danish: Del1, del_3 (not model1)
   /(?:^|[^a-z0-9])p0?([1-5])(?![0-9])/i,
 ];
 export function partNumber(name) {
