@@ -351,7 +351,9 @@ async function gradeOpen(ctx, item, result) {
     return got;
   };
   const same = (a, b) => pictureChange(a.img, b.img) <= 0.0005;
-  const settledSilhouette = (a, b) => silhouetteChange(a.an, b.an) <= T.silhouetteSettled;
+  // settled: the silhouette no longer changes, or it is already as round as pixels allow (a
+  // teacher stops there too; the levels above cost seconds a click on slow pages)
+  const settledSilhouette = (a, b) => silhouetteChange(a.an, b.an) <= T.silhouetteSettled || (!b.an.blank && b.an.roundness <= T.roundEnough);
   let ladder = [last];
   let coarsened = false;
   // (down first only where a coarse level is judged: P5's highlight per fragment)
@@ -379,7 +381,7 @@ async function gradeOpen(ctx, item, result) {
       await tick(ctx, 100);
       const img = await snap(page);
       const a = analyse(img, T);
-      const settled = ladder.length && silhouetteChange(ladder[ladder.length - 1].an, a) <= T.silhouetteSettled;
+      const settled = ladder.length && settledSilhouette(ladder[ladder.length - 1], { img, an: a });
       ladder.push({ img, an: a });
       if (settled) break;
     }
