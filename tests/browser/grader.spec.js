@@ -147,6 +147,22 @@ test.describe('grading the labelled class', () => {
     expect(findParts(path.join(dir, 'class', 'cy')).WP04P3).toBe(path.join('Lab 4', 'w04', 'w04p03.html'));
     expect(findParts(path.join(dir, 'class', 'bo')).WP04P2).toBe(path.join('week04', 'part02', 'index.html'));
   });
+
+  test('a rubric with mistakeVerdict "fail" fails the parts that draw but miss a point; broken parts fail either way', () => {
+    // cy: one mistake a part (P1 colour = p, P2 no depth test, P3 no orbit button, P4 no highlight, P5 Gouraud)
+    const strict = path.join(dir, 'strict.json');
+    writeFileSync(strict, JSON.stringify({ timeoutSeconds: 60, loadSeconds: 8, firstFrameSeconds: 6, reference: false, mistakeVerdict: 'fail' }));
+    const run = spawnSync(process.execPath, ['tools/grade/grade.js', path.join(dir, 'class', 'cy'), '--rubric', strict, '--out', path.join(dir, 'strict')],
+      { encoding: 'utf8', timeout: 240_000 });
+    expect(run.status, run.stderr + run.stdout.slice(-2000)).toBe(0);
+    const cy = JSON.parse(readFileSync(path.join(dir, 'strict', 'report.json'), 'utf8')).submissions[0];
+    const verdicts = Object.fromEntries(cy.parts.map((p) => [p.part, p.verdict]));
+    // the default rubric's review for each mistake, the strict rubric's fail; no orbit button stays a review
+    expect(verdicts).toEqual({ WP04P1: 'fail', WP04P2: 'fail', WP04P3: 'review', WP04P4: 'fail', WP04P5: 'fail' });
+    expect(['WP04P1', 'WP04P2', 'WP04P4', 'WP04P5'].map((p) => part('cy', p).verdict)).toEqual(['review', 'review', 'review', 'review']);
+    // broken parts (a page error, nothing drawn, a shader that does not compile) fail under the default rubric too
+    expect(['WP04P1', 'WP04P2', 'WP04P5'].map((p) => part('eve', p).verdict)).toEqual(['fail', 'fail', 'fail']);
+  });
 });
 
 test('a submission folder that does not exist: a clear message and exit code 1; a bad rubric: exit code 2', () => {

@@ -219,7 +219,9 @@ async function gradeOpen(ctx, item, result) {
   const { page } = ctx;
   const must = new Set((rubric.parts[item.part] || {}).must || []);
   const checks = []; // { level: 'pass'|'review'|'fail', reason }
-  const say = (level, reason) => checks.push({ level, reason });
+  // 'mistake': the page draws, but misses a point of the slide's step; the rubric says what that
+  // costs (review by default: a careful reader calls such a part partial, not broken)
+  const say = (level, reason) => checks.push({ level: level === 'mistake' ? rubric.mistakeVerdict || 'review' : level, reason });
   await tick(ctx, 1000);
   // a page may start drawing only after promises that take real time (shaders fetched, a WebGPU
   // adapter and device): wait for its first draw call, within firstFrameSeconds
@@ -387,7 +389,16 @@ async function gradeOpen(ctx, item, result) {
     }
     ctx.actions.push(`set the level ${c.type === 'select' ? 'menu' : 'slider'} from ${values[0]} up to ${values[ladder.length - 1]}`);
   }
-  const judged = ladder[ladder.length - 1];
+  // a page that goes blank at a higher level (a buffer too small, an index type too narrow) is
+  // judged at the last level it drew, and the blank level is a mistake
+  let judged = ladder[ladder.length - 1];
+  if (judged.an.blank) {
+    const drawn = ladder.filter((x) => !x.an.blank);
+    if (drawn.length) {
+      judged = drawn[drawn.length - 1];
+      say('mistake', 'the picture goes blank at a higher level: judged at the last level that drew');
+    }
+  }
   let img = judged.img;
   an = judged.an;
   ctx.images.judged = img;
@@ -411,7 +422,7 @@ async function gradeOpen(ctx, item, result) {
   else if (an.roundness <= T.roundness && an.fill >= T.fill) {
     say('pass', `a round closed sphere (radius ${fmt(an.radius, 0)} px, roundness ${fmt(an.roundness, 3)})`);
   } else if (an.touches) say('review', 'the object touches the canvas edge: its silhouette cannot be judged');
-  else say('fail', `the object is not a round closed sphere (roundness ${fmt(an.roundness, 3)}, fill ${fmt(an.fill)}${ladder.length > 1 ? ', after subdividing' : ''})`);
+  else say('mistake', `the object is not a round closed sphere (roundness ${fmt(an.roundness, 3)}, fill ${fmt(an.fill)}${ladder.length > 1 ? ', after subdividing' : ''})`);
   if (ladder.length > 2) {
     const rs = ladder.map((s) => s.an.roundness).filter((r) => Number.isFinite(r));
     if (rs[0] > rs[rs.length - 1] + 0.02) say('pass', `rounder with each level (roundness ${fmt(rs[0], 3)} → ${fmt(rs[rs.length - 1], 3)})`);
@@ -436,15 +447,15 @@ async function gradeOpen(ctx, item, result) {
       }
     }
     result.numbers.normals = nc;
-    if (!nc) say('fail', 'too little of the sphere to read its colours');
-    else if (nc.spread < T.normalsSpread) say('fail', 'the sphere is one colour: the normals are not used for the colour (0.5·n + 0.5)');
+    if (!nc) say('mistake', 'too little of the sphere to read its colours');
+    else if (nc.spread < T.normalsSpread) say('mistake', 'the sphere is one colour: the normals are not used for the colour (0.5·n + 0.5)');
     else if (nc.unitError > T.normalsUnitError) {
-      say('fail', `the colours are not 0.5·n + 0.5: 2c − 1 is not a unit vector (off by ${fmt(nc.unitError)} on average)`);
+      say('mistake', `the colours are not 0.5·n + 0.5: 2c − 1 is not a unit vector (off by ${fmt(nc.unitError)} on average)`);
     } else say('pass', `colours decode to unit normals 2c − 1 (off by ${fmt(nc.unitError, 3)})`);
     if (must.has('frontFaces') && nc && nc.spread >= T.normalsSpread) {
       if (judgeFaces()) say('pass', 'the visible colours are the normals facing the viewer: front faces only');
-      else if (nc.det < 0 && nc.residual <= T.facingResidual) say('fail', 'the inside of the far side shows (the normals face away from the viewer): the front faces are culled, or the depth test is off and the far side is drawn last');
-      else say('fail', `back faces show through the front (normals do not vary smoothly across the picture, misfit ${fmt(nc.residual)}): depth test or culling missing`);
+      else if (nc.det < 0 && nc.residual <= T.facingResidual) say('mistake', 'the inside of the far side shows (the normals face away from the viewer): the front faces are culled, or the depth test is off and the far side is drawn last');
+      else say('mistake', `back faces show through the front (normals do not vary smoothly across the picture, misfit ${fmt(nc.residual)}): depth test or culling missing`);
     }
   }
 
@@ -459,19 +470,19 @@ async function gradeOpen(ctx, item, result) {
     // a page lit one-sided, |n·w_i| never explains all pixels better, it lights the dark side)
     const twoSided = [fit, ...viewFits].filter(Boolean).find((f) => (f.r2TwoSided > f.r2 + 0.03 && f.r2 < 0.97) ||
       (f.r2TwoSidedAll > f.r2All + 0.015 && f.r2TwoSidedAll >= T.diffuseR2));
-    if (!fit) say('fail', 'too little of the sphere to read its shading');
-    else if (fit.spread < T.litSpread / 2) say('fail', 'the sphere is evenly bright: no diffuse shading to see (from any orbit position tried)');
+    if (!fit) say('mistake', 'too little of the sphere to read its shading');
+    else if (fit.spread < T.litSpread / 2) say('mistake', 'the sphere is evenly bright: no diffuse shading to see (from any orbit position tried)');
     else if (twoSided) {
-      say('fail', `the sphere is lit on both sides: brightness follows |n·w_i| (R² ${fmt(twoSided.r2TwoSided)}), not max(n·w_i, 0) (R² ${fmt(twoSided.r2)})`);
+      say('mistake', `the sphere is lit on both sides: brightness follows |n·w_i| (R² ${fmt(twoSided.r2TwoSided)}), not max(n·w_i, 0) (R² ${fmt(twoSided.r2)})`);
     } else if (!must.has('highlight') && orbitFits.length && Math.min(...orbitFits.map((f) => f.r2)) < T.diffuseR2 - 0.1) {
       const worst = orbitFits.reduce((a, b) => (b.r2 < a.r2 ? b : a));
-      say('fail', `brightness does not follow max(n·w_i, 0)·kd·Le + ambient at every orbit position (R² down to ${fmt(worst.r2)}): lit where it should be dark?`);
+      say('mistake', `brightness does not follow max(n·w_i, 0)·kd·Le + ambient at every orbit position (R² down to ${fmt(worst.r2)}): lit where it should be dark?`);
     } else if (fit.r2 >= T.diffuseR2 && fit.diffuse >= T.diffuseMin) {
       say('pass', `brightness follows max(n·w_i, 0)·kd·Le + ambient (R² ${fmt(fit.r2)}, fitted light ${fit.light.map((v) => fmt(v)).join(', ')})`);
     } else if (nearPointLight(pointLight) && fit.diffuse >= T.diffuseMin) {
       const f = pointLight[nearPointLight(pointLight)];
       say('pass', `brightness follows max(n·w_i, 0)·kd·L_i + ambient for a point light ${fmt(f.distance, 1)} radii from the centre (R² ${fmt(f.r2)})`);
-    } else say('fail', `brightness does not follow max(n·w_i, 0)·kd·Le + ambient for any light direction (R² ${fmt(fit.r2)})`);
+    } else say('mistake', `brightness does not follow max(n·w_i, 0)·kd·Le + ambient for any light direction (R² ${fmt(fit.r2)})`);
   }
   if (shadedPart && orbitFits.length >= 2) {
     const angle = (a, b) => (180 / Math.PI) * Math.acos(Math.min(1, Math.abs(a[0] * b[0] + a[1] * b[1] + a[2] * b[2])));
@@ -497,7 +508,7 @@ async function gradeOpen(ctx, item, result) {
   if (fit && nearModel) fit.highlightPeak = pointLight.falloff.highlightPeak;
   if (must.has('highlight') && fit) {
     if (fit.highlightPeak >= T.highlightPeak) say('pass', `a specular highlight (up to ${fmt(100 * fit.highlightPeak, 0)}% of the way from the diffuse fit to white)`);
-    else say('fail', `no specular highlight: nothing brighter than the diffuse fit (${fmt(fit.highlightPeak)})`);
+    else say('mistake', `no specular highlight: nothing brighter than the diffuse fit (${fmt(fit.highlightPeak)})`);
   }
 
   // ---- P4: the sliders ----
@@ -568,9 +579,9 @@ async function gradeOpen(ctx, item, result) {
       result.numbers.coarseShadingChange = change;
       ctx.images.coarse = coarse.img;
       if (change !== null && change <= T.phongCoarseChange) say('pass', `the shading at a coarse level (roundness ${fmt(coarse.an.roundness)}) stays as smooth as at the finest (RMS ${fmt(change, 3)}): per fragment`);
-      else say('fail', `the highlight follows the triangles at a coarse level (RMS ${fmt(change, 3)} from the finest): shading is per vertex, not per fragment (or the normals are not re-normalised in the fragment shader)`);
+      else say('mistake', `the highlight follows the triangles at a coarse level (RMS ${fmt(change, 3)} from the finest): shading is per vertex, not per fragment (or the normals are not re-normalised in the fragment shader)`);
     } else if (frag) say('review', 'no coarse level to compare; the fragment shader evaluates the specular term (pow), so probably per fragment');
-    else say('fail', 'no coarse level to compare, and no pow() in the fragment shader: the model seems evaluated per vertex');
+    else say('mistake', 'no coarse level to compare, and no pow() in the fragment shader: the model seems evaluated per vertex');
   }
   if (!stopped && (moving || startedByUs)) say('review', 'the orbit could not be stopped: pictures were judged while moving');
   return { checks };
