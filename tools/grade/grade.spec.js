@@ -604,18 +604,18 @@ function nearPointLight(pl) {
   const good = ['falloff', 'none'].filter((k) => pl[k].r2 >= T.diffuseR2 && pl[k].distance <= T.pointLightNear);
   return good.sort((a, b) => pl[b].r2 - pl[a].r2)[0] || null;
 }
+/** Model `a` ('falloff' or 'none') clearly beats model `b`: a near light, R² higher by pointLightGain, RMS lower by pointLightRmsRatio. */
+function clearlyBetter(pl, a, b) {
+  return pl[a].r2 - pl[b].r2 >= T.pointLightGain && pl[a].distance <= T.pointLightNear && pl[b].rms >= T.pointLightRmsRatio * pl[a].rms;
+}
 /** A light clearly near and falling off as 1/r²: it fits, and better than without the fall-off. */
 function clearlyNearFalloff(pl) {
-  if (!pl) return false;
-  const gain = pl.falloff.r2 - pl.none.r2;
-  return gain >= T.pointLightGain && pl.falloff.distance <= T.pointLightNear && pl.falloff.r2 >= T.diffuseR2 && pl.none.rms >= T.pointLightRmsRatio * pl.falloff.rms;
+  return !!pl && clearlyBetter(pl, 'falloff', 'none') && pl.falloff.r2 >= T.diffuseR2;
 }
 function judgePointLight(pl, say) {
-  const gain = pl.falloff.r2 - pl.none.r2; // > 0: the fall-off fits better
-  const near = (f) => f.distance <= T.pointLightNear;
-  if (-gain >= T.pointLightGain && near(pl.none) && pl.falloff.rms >= T.pointLightRmsRatio * pl.none.rms) {
+  if (clearlyBetter(pl, 'none', 'falloff')) {
     say('review', `point light without the 1/r² fall-off: brightness fits a light ${fmt(pl.none.distance, 1)} radii from the centre with no fall-off (R² ${fmt(pl.none.r2, 3)}) better than with L_i = I/‖p_ℓ − x‖² (R² ${fmt(pl.falloff.r2, 3)})`);
-  } else if (gain >= T.pointLightGain && near(pl.falloff) && pl.none.rms >= T.pointLightRmsRatio * pl.falloff.rms) {
+  } else if (clearlyBetter(pl, 'falloff', 'none')) {
     say('pass', `a point light ${fmt(pl.falloff.distance, 1)} radii from the centre, with the 1/r² fall-off (R² ${fmt(pl.falloff.r2, 3)}; without it ${fmt(pl.none.r2, 3)})`);
   }
 }

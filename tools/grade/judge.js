@@ -312,8 +312,8 @@ export function pictureChange(a, b) {
 
 /**
  * P3–P5: is the light a point light, and does it fall off as 1/r² (the slides: L_i = I/‖p_ℓ − x‖²)?
- * Brightness is fitted by a + b·max(n·w_i, 0)·g over the sphere seen as a unit sphere (x = n,
- * orthographic), the light at p_ℓ = d·l (d in sphere radii, from the centre), w_i = normalize(p_ℓ − x),
+ * Brightness is fitted by a + b·max(n·w_i, 0)·g over the sphere seen as a unit sphere (x = n, the
+ * normals of perspectiveSamples), the light at p_ℓ = d·l (d in sphere radii, from the centre), w_i = normalize(p_ℓ − x),
  * with g = 1/‖p_ℓ − x‖² (fall-off) or g = 1 (none). Both models hold a directional light (d → ∞),
  * so a far or directional light fits both alike: only a near light tells them apart. Pixels above
  * both fits (a highlight) and clipped ones are left out. Returns the best of each model.
@@ -325,15 +325,11 @@ export function pointLightFit(pts, rubric = {}) {
   const DIST = [1.25, 1.5, 1.75, 2, 2.5, 3, 4, 5, 7, 10, 20, 1e4];
   const fit = (use, l, d, falloff) => {
     let n = 0, sx = 0, sy = 0, sxx = 0, sxy = 0, syy = 0;
-    const px = d * l[0], py = d * l[1], pz = d * l[2];
     const xs = new Float64Array(pts.length);
     for (let i = 0; i < pts.length; i++) {
       if (!use[i]) continue;
       const s = pts[i];
-      const wx = px - s.n[0], wy = py - s.n[1], wz = pz - s.n[2];
-      const r2 = wx * wx + wy * wy + wz * wz, r = Math.sqrt(r2);
-      const cos = Math.max(0, (s.n[0] * wx + s.n[1] * wy + s.n[2] * wz) / r);
-      const x = falloff ? cos * ((d - 1) * (d - 1)) / r2 : cos; // scaled: 1 at the point nearest the light
+      const x = pointLightTerm(s.n, l, d, falloff);
       xs[i] = x;
       n++; sx += x; sy += s.y; sxx += x * x; sxy += x * s.y; syy += s.y * s.y;
     }
@@ -387,12 +383,20 @@ export function pointLightFit(pts, rubric = {}) {
   return { falloff: brief(inv), none: brief(none), fitted: used / pts.length };
 }
 
+/**
+ * max(n·w_i, 0) at the unit sphere's point x = n for a point light at p_ℓ = d·l, w_i =
+ * normalize(p_ℓ − x); with `falloff`, times 1/‖p_ℓ − x‖² scaled to 1 at the point nearest the light.
+ */
+function pointLightTerm(n, l, d, falloff) {
+  const wx = d * l[0] - n[0], wy = d * l[1] - n[1], wz = d * l[2] - n[2];
+  const r2 = wx * wx + wy * wy + wz * wz;
+  const cos = Math.max(0, (n[0] * wx + n[1] * wy + n[2] * wz) / Math.sqrt(r2));
+  return falloff ? cos * ((d - 1) * (d - 1)) / r2 : cos;
+}
+
 /** The brightness a fitted point-light model (pointLightFit's `model`) gives at a sample's normal. */
 export function pointLightPredict(n, m) {
-  const wx = m.d * m.l[0] - n[0], wy = m.d * m.l[1] - n[1], wz = m.d * m.l[2] - n[2];
-  const r2 = wx * wx + wy * wy + wz * wz, r = Math.sqrt(r2);
-  const cos = Math.max(0, (n[0] * wx + n[1] * wy + n[2] * wz) / r);
-  return m.a + m.b * (m.falloff ? cos * ((m.d - 1) * (m.d - 1)) / r2 : cos);
+  return m.a + m.b * pointLightTerm(n, m.l, m.d, m.falloff);
 }
 
 /**
@@ -416,7 +420,8 @@ export function highlightAbove(pts, model, rubric = {}) {
  * darker than the diffuse + ambient fit of the judged picture predicts there. Lowering s never
  * darkens a pixel of the Phong or Blinn-Phong model (cos^s grows as s falls for cos in [0, 1]),
  * and no specular term takes light away: such pixels are holes (pow(0, 0) or pow of a negative
- * base, undefined: NaN, black on many GPUs). `pts` are samples of the judged picture (same view).
+ * base, undefined: NaN, black on many GPUs). `img` is the judged picture, `after` the same view
+ * with s lowered, `fit` img's diffuseFit.
  */
 export function darkSpots(img, an, after, fit, rubric = {}) {
   const margin = rubric.darkSpotMargin ?? 0.15;
