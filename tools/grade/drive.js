@@ -7,7 +7,7 @@
 //   sources(), errors()
 // and runs in Node and in a browser alike (no Node modules; images are { width, height, data }).
 import { analyse, samples, normalColours, diffuseFit, silhouetteChange, shadingChange, pictureChange, pointLightFit, perspectiveSamples, darkSpots,
-  highlightAbove, highlightSeen, nearPointLight, clearlyBetter, clearlyNearFalloff } from './judge.js';
+  highlightAbove, highlightSeen, highlightOffset, nearPointLight, clearlyBetter, clearlyNearFalloff } from './judge.js';
 import { describe, nameRole, named, effectOf, trialOrder, isClickable, isValued } from './controls.js';
 import { checkList } from './verdict.js';
 
@@ -23,7 +23,7 @@ const LEVEL_KEYS = [['ArrowUp', 'ArrowDown'], ['+', '-'], ['ArrowRight', 'ArrowL
  * findings ({ level, reason }), `images` the pictures taken (first, judged, coarse, leastS),
  * `busy` the milliseconds spent letting the page draw. `progress(text)` hears what is being tried.
  */
-export async function gradePart(page, { part, rubric, progress = () => {} }) {
+export async function gradePart(page, { part, rubric, progress = () => {}, deadline = Infinity }) {
   const T = rubric.thresholds;
   const must = new Set((rubric.parts[part] || {}).must || []);
   const { checks, say } = checkList(rubric);
@@ -39,6 +39,14 @@ export async function gradePart(page, { part, rubric, progress = () => {} }) {
     return img && { img, an: analyse(img, T) };
   };
   const done = (fail) => Object.assign(out, { fail });
+  // a slow page gets the rubric's time: past `deadline` the optional looking stops, and the part is
+  // judged on what was seen, with what was left out said
+  const late = (what) => {
+    if (Date.now() <= deadline) return false;
+    if (!out.cutShort.includes(what)) out.cutShort.push(what);
+    return true;
+  };
+  out.cutShort = [];
 
   // ---- the first frame ----
   progress('waiting for the first frame');
@@ -157,7 +165,7 @@ export async function gradePart(page, { part, rubric, progress = () => {} }) {
     // search goes on, so such an orbit gets round too
     progress('sampling the orbit');
     let k = 0, im = cur.img;
-    for (; k < T.orbitSamples && (!look(im) || k < 2); k++) {
+    for (; k < T.orbitSamples && (!look(im) || k < 2) && !late('more orbit positions'); k++) {
       await tick(T.orbitSampleSeconds * 1000, Math.min(8 << k, Math.round(60 * T.orbitSampleSeconds)));
       im = await page.snap();
     }
@@ -170,6 +178,7 @@ export async function gradePart(page, { part, rubric, progress = () => {} }) {
     // the control that stops it: named for the orbit first, then the others
     progress('looking for the control that stops the orbit');
     for (const c of trialOrder(clickables, 'orbit', P, taken).slice(0, maxTrials)) {
+      if (late('more controls for the orbit')) break;
       trials++;
       const effect = await tryClick(c, 'a control', { watchMotion: true });
       if (effect === 'stops') {
@@ -213,6 +222,7 @@ export async function gradePart(page, { part, rubric, progress = () => {} }) {
     const idle = [];
     for (const c of order) {
       if (levelBy.subdivide && levelBy.coarsen) break;
+      if (late('more controls for the level')) break;
       if (trials >= maxTrials && !named(c, 'subdivide', P) && !named(c, 'coarsen', P)) break;
       let effect = effects.get(c.index);
       if (effect === undefined || effect === 'none') {
@@ -222,9 +232,13 @@ export async function gradePart(page, { part, rubric, progress = () => {} }) {
       if (effect === 'finer' && !levelBy.subdivide) levelBy.subdivide = { c, act: clickLevel(c) };
       else if (effect === 'coarser' && !levelBy.coarsen) levelBy.coarsen = { c, act: clickLevel(c) };
       else if (effect === 'none') idle.push(c);
-      else if (effect === 'starts') { // an orbit control found here: stop it again
-        await tryClick(c, 'a control', { watchMotion: true });
-        if (!R.orbit) assign('orbit', c, 'starts the picture moving');
+      else if (effect === 'starts') { // an orbit control found here, under a name not known for it: sampled, then stopped again
+        if (shadedPart && !R.orbit) await sampleOrbit();
+        const again = await tryClick(c, 'a control', { watchMotion: true });
+        if (!R.orbit) {
+          assign('orbit', c, again === 'stops' ? 'starts and stops the picture moving' : 'starts the picture moving; nothing found stops it');
+          orbitToggles = again === 'stops';
+        }
       }
       if ((levelBy.subdivide || levelBy.coarsen) && idle.length) {
         for (const d of idle.splice(0)) {
@@ -238,8 +252,24 @@ export async function gradePart(page, { part, rubric, progress = () => {} }) {
     }
     for (const role of ['subdivide', 'coarsen']) if (levelBy[role]) assign(role, levelBy[role].c, `the silhouette got ${role === 'subdivide' ? 'rounder' : 'coarser'}`);
   }
+  // the picture never stood still: the level controls are taken by their names (the ladder below
+  // shows whether the sphere gets rounder)
+  if (!stopped) {
+    for (const c of clickables) {
+      const role = nameRole(c, P);
+      if ((role === 'subdivide' || role === 'coarsen') && !levelBy[role] && !taken.has(c.index)) levelBy[role] = { c, act: clickLevel(c) };
+    }
+    for (const role of ['subdivide', 'coarsen']) if (levelBy[role]) assign(role, levelBy[role].c, 'by its name (the picture kept moving)');
+  }
   // a level slider, number input or menu: one that changes the silhouette (named for the level first)
   let levelSlider = null;
+  if (!stopped && !levelBy.subdivide) {
+    const c = valued.find((x) => !taken.has(x.index) && nameRole(x, P) === 'levelSlider');
+    if (c) {
+      levelSlider = c;
+      assign('levelSlider', c, 'by its name (the picture kept moving)');
+    }
+  }
   if (stopped && !levelBy.subdivide) {
     for (const c of trialOrder(valued, 'levelSlider', P, taken)) {
       const lo = c.type === 'select' ? null : Number(c.min || 0), hi = c.type === 'select' ? null : (c.max === '' || c.max === undefined ? lo + 8 : Number(c.max));
@@ -294,6 +324,7 @@ export async function gradePart(page, { part, rubric, progress = () => {} }) {
   const step = async (how, bound, settled) => {
     const got = [];
     for (let k = 0; k < bound; k++) {
+      if (late('more levels')) break;
       if (!await how.act()) break;
       const s = await shot();
       if (!s) break;
@@ -330,6 +361,7 @@ export async function gradePart(page, { part, rubric, progress = () => {} }) {
     }
     ladder = [];
     for (const v of values) {
+      if (ladder.length && late('more levels')) break;
       await page.setValue(c, v, ['input', 'change']);
       await tick(100);
       const s = await shot();
@@ -398,6 +430,24 @@ export async function gradePart(page, { part, rubric, progress = () => {} }) {
         if (judgeFaces()) break;
       }
     }
+    // a reflection of the sphere's normals is the inside of the far side (the front faces culled), or
+    // the faces nearest a viewer who looks along +z (clip space, no view matrix): the depth order
+    // tells. With the depth test on and culling off the nearest faces show: if the picture stays,
+    // they were what showed
+    let nearest = null;
+    if (must.has('frontFaces') && nc && nc.det < 0 && nc.residual <= T.facingResidual && g.api !== 'webgpu') {
+      const faces = (await page.state()).faces || {};
+      if (faces.depthTest && faces.culling) {
+        await page.setNoCull(true);
+        await tick(100);
+        const s = await shot();
+        await page.setNoCull(false);
+        await tick(100);
+        const nc2 = s && !s.an.blank ? normalColours(samples(s.img, s.an)) : null;
+        nearest = nc2 ? nc2.det < 0 && pictureChange(s.img, img) <= 0.01 : null;
+        actions.push(`drew a frame with back-face culling off (depth test on): ${nearest ? 'the same picture' : 'another picture'}`);
+      } else if (faces.depthTest) nearest = true;
+    }
     out.numbers.normals = nc;
     if (!nc) say('mistake', 'too little of the sphere to read its colours');
     else if (nc.spread < T.normalsSpread) say('mistake', 'the sphere is one colour: the normals are not used for the colour (0.5·n + 0.5)');
@@ -406,6 +456,7 @@ export async function gradePart(page, { part, rubric, progress = () => {} }) {
     } else say('pass', `colours decode to unit normals 2c − 1 (off by ${fmt(nc.unitError, 3)})`);
     if (must.has('frontFaces') && nc && nc.spread >= T.normalsSpread) {
       if (judgeFaces()) say('pass', 'the visible colours are the normals facing the viewer: front faces only');
+      else if (nearest) say('pass', 'the visible faces are the nearest ones (the depth test is on, and culling off draws the same picture): the view looks along +z (clip space without a view matrix?), so their normals point away from +z');
       else if (nc.det < 0 && nc.residual <= T.facingResidual) say('mistake', 'the inside of the far side shows (the normals face away from the viewer): the front faces are culled, or the depth test is off and the far side is drawn last');
       else say('mistake', `back faces show through the front (normals do not vary smoothly across the picture, misfit ${fmt(nc.residual)}): depth test or culling missing`);
     }
@@ -461,8 +512,10 @@ export async function gradePart(page, { part, rubric, progress = () => {} }) {
     let turn = 0;
     for (let i = 1; i < orbitFits.length; i++) turn = Math.max(turn, angle(orbitFits[0].light, orbitFits[i].light));
     out.numbers.lightTurn = turn;
+    // on a sphere only the shading shows the orbit: where the step asks for the orbit (P3) a light that
+    // moves with the camera hides it; elsewhere the slides leave the light's space to the student
     if (turn < T.lightTurnDegrees) {
-      say('review', `while the camera orbits, the lit side stays where it is on screen (the fitted light turns ${fmt(turn, 1)}° over ${orbitFits.length} views): the light moves with the camera (light and normals in different spaces?)`);
+      say(must.has('orbitToggle') ? 'review' : 'pass', `${must.has('orbitToggle') ? 'the orbit does not show in the shading: ' : 'note: '}while the camera orbits, the lit side stays where it is on screen (the fitted light turns ${fmt(turn, 1)}° over ${orbitFits.length} views): the light moves with the camera (given in eye space, or light and normals in different spaces?)`);
     } else say('pass', `the lit side turns as the camera orbits (${fmt(turn, 0)}° over ${orbitFits.length} views): the light stays in the world`);
   }
   if (must.has('orbitToggle')) {
@@ -491,6 +544,13 @@ export async function gradePart(page, { part, rubric, progress = () => {} }) {
     }
     out.numbers.highlightViews = 1 + views.length;
     if (seen) say('pass', `a specular highlight in ${seen.where} (up to ${fmt(100 * seen.fit.highlightPeak, 0)}% of the way from the diffuse fit to white, ${fmt(seen.fit.highlightRise, 2)} above it)`);
+    // where it is: at w_h, halfway between the light and the viewer (the slides' w_r · w_o peaks there too)
+    const offset = seen && !nearModel ? highlightOffset(seen.fit.highlightNormal, seen.fit.light) : null;
+    if (offset !== null) {
+      out.numbers.highlightOffset = offset;
+      if (offset > T.highlightPlaceDegrees) say('mistake', `the highlight is ${fmt(offset, 0)}° from where the model puts it (at the normal halfway between the light, fitted at ${seen.fit.light.map((v) => fmt(v)).join(', ')}, and the viewer): is w_o the direction from the surface to the eye, in the same space as n and w_i?`);
+      else say('pass', `the highlight sits where the normal is halfway between the light and the viewer (${fmt(offset, 0)}° off)`);
+    }
     else say('mistake', `no specular highlight: nothing brighter than the diffuse fit (${fmt(fit.highlightPeak)}) in ${1 + views.length} views (the judged one${views.length ? ' and the lit ones along the orbit' : ''})`);
   }
 
@@ -505,6 +565,7 @@ export async function gradePart(page, { part, rubric, progress = () => {} }) {
     let inputOk = 0, changeOnly = 0, dead = 0;
     const found = {};
     for (const c of sliders) {
+      if (late('the rest of the sliders')) break;
       const k = nameRole(c, P);
       const lo = Number(c.min || 0), hi = Number(c.max === '' || c.max === undefined ? 100 : c.max);
       const target = k === 's' ? (Number(c.value) > (lo + hi) / 2 ? lo : hi) : (Number(c.value) > lo ? lo : hi); // s: far from where it is; others: to the least
@@ -555,7 +616,7 @@ export async function gradePart(page, { part, rubric, progress = () => {} }) {
 
   if (must.has('highlight') && fit && stopped) {
     const sCtl = controls.find((c) => !taken.has(c.index) && (c.type === 'range' || c.type === 'number') && nameRole(c, P) === 's');
-    if (sCtl) await judgeShininessZero(sCtl);
+    if (sCtl && !late('s at its least')) await judgeShininessZero(sCtl);
   }
 
   // ---- P5: the highlight per fragment, seen at a coarse level ----
@@ -579,7 +640,8 @@ export async function gradePart(page, { part, rubric, progress = () => {} }) {
     } else if (frag) say('pass', `no coarse level to compare${levelBy.coarsen ? '' : ' (nothing found that coarsens)'}; the fragment shader evaluates the specular term (pow): per fragment`);
     else say('mistake', 'no coarse level to compare, and no pow() in the fragment shader: the model seems evaluated per vertex');
   }
-  if (!stopped) say('review', 'the orbit could not be stopped: pictures were judged while moving');
+  if (!stopped) say('pass', 'note: the orbit could not be stopped: the pictures were judged as it moves');
+  if (out.cutShort.length) say('pass', `note: slow: the rubric's time ran out before ${out.cutShort.join(', ')}; judged on what was seen`);
   return out;
 
   /**

@@ -44,7 +44,12 @@ for (const item of plan.items) {
       if (opened.why) graded.fail = `the page could not be opened: ${opened.why}`;
       else {
         // what has been done so far stays in the result if the time bound stops the part
-        graded = await gradePart(opened.driver, { part: item.part, rubric, progress: (what) => { result.reasons = [`stopped by the time bound while ${what}`]; save(item, result); } });
+        // the looking stops at 70% of the bound, so that a slow page is still judged on what was seen
+        const deadline = started + 0.7 * rubric.timeoutSeconds * 1000;
+        graded = await gradePart(opened.driver, { part: item.part, rubric, deadline, progress: (what) => {
+          result.reasons = [`the page did not finish within the rubric's bound of ${rubric.timeoutSeconds} s: stopped while ${what} (a click or frame that never returns?)`];
+          save(item, result);
+        } });
       }
     } catch (err) {
       if (/Test ended|Target page, context or browser has been closed/.test(err.message)) throw err; // the time bound: stays 'timeout'

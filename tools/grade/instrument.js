@@ -4,7 +4,7 @@
 // (WebGL contexts get preserveDrawingBuffer so the last frame can be read at any time; WebGPU
 // frames come from tools/webgpu-capture.js, which must be added first).
 export function instrumentScript() {
-  const g = { api: null, apis: [], draws: 0, shaderErrors: [], gpuErrors: [], adapter: undefined, wgsl: [], glsl: [], faces: { depthTest: false, culling: false, cullMode: null } };
+  const g = { api: null, apis: [], draws: 0, shaderErrors: [], gpuErrors: [], adapter: undefined, wgsl: [], glsl: [], faces: { depthTest: false, culling: false, cullMode: null }, noCull: false, cullOn: false };
   Object.defineProperty(window, '__grade', { value: g, enumerable: false });
   const apiOf = { webgl: 'webgl', 'experimental-webgl': 'webgl', webgl2: 'webgl2', webgpu: 'webgpu' };
   const realGetContext = HTMLCanvasElement.prototype.getContext;
@@ -70,18 +70,33 @@ export function instrumentScript() {
       }
     };
     // the slide's WP04P2: the depth test and back-face culling enabled (recorded, never changed)
-    const { enable, cullFace } = proto;
+    const { enable, disable, cullFace } = proto;
     proto.enable = function (cap) {
       if (cap === this.DEPTH_TEST) g.faces.depthTest = true;
-      if (cap === this.CULL_FACE) g.faces.culling = true;
+      if (cap === this.CULL_FACE) g.faces.culling = g.cullOn = true;
       return enable.call(this, cap);
+    };
+    proto.disable = function (cap) {
+      if (cap === this.CULL_FACE) g.cullOn = false;
+      return disable.call(this, cap);
+    };
+    // the grader's experiment (g.noCull): the same frames drawn with culling off, so that with the
+    // depth test on the faces nearest the viewer show, whichever way the mesh is wound
+    const bare = (gl, draw, a) => {
+      if (!(g.noCull && g.cullOn)) return draw.apply(gl, a);
+      disable.call(gl, gl.CULL_FACE);
+      try {
+        return draw.apply(gl, a);
+      } finally {
+        enable.call(gl, gl.CULL_FACE);
+      }
     };
     proto.cullFace = function (mode) {
       g.faces.cullMode = mode === this.FRONT ? 'front' : mode === this.BACK ? 'back' : 'front-and-back';
       return cullFace.call(this, mode);
     };
-    proto.drawArrays = function (...a) { g.draws++; drew(this); return drawArrays.apply(this, a); };
-    proto.drawElements = function (...a) { g.draws++; drew(this); return drawElements.apply(this, a); };
+    proto.drawArrays = function (...a) { g.draws++; drew(this); return bare(this, drawArrays, a); };
+    proto.drawElements = function (...a) { g.draws++; drew(this); return bare(this, drawElements, a); };
   }
   if (navigator.gpu && window.GPUAdapter) {
     const gpu = navigator.gpu, requestAdapter = gpu.requestAdapter.bind(gpu);

@@ -25,6 +25,7 @@ export function analyse(img, rubric = {}) {
     if (colours.size < 3) colours.add(data[o] << 16 | data[o + 1] << 8 | data[o + 2]);
     if (Math.abs(data[o] - bg[0]) + Math.abs(data[o + 1] - bg[1]) + Math.abs(data[o + 2] - bg[2]) > tol) raw[p] = 1;
   }
+  openMask(raw, w, h, rubric.thinLine ?? 2);
   // the largest 4-connected component is the object (text or a second canvas element aside)
   const label = new Int32Array(n);
   let best = 0, bestLabel = 0, next = 0;
@@ -79,6 +80,40 @@ export function analyse(img, rubric = {}) {
   });
   const circle = fitCircle(img, mask, bg, tol);
   return { ...result, blank: false, cx, cy, R, radius: mean, roundness, fill, touches, circle };
+}
+
+/**
+ * Thin lines drawn with the object (axes, a wireframe, a grid) are not the object: a morphological
+ * opening by a square of side 2r + 1 (erode, then dilate) removes what is thinner than that and
+ * leaves a solid disc as it was (its outline rounded at corners sharper than r pixels).
+ */
+export function openMask(mask, w, h, r) {
+  if (!r) return mask;
+  const tmp = new Uint8Array(mask.length);
+  // erode then dilate, each as a horizontal and a vertical pass of a 1-D min (max) over 2r + 1
+  const pass = (src, dst, horizontal, keep) => {
+    const [n1, n2] = horizontal ? [h, w] : [w, h];
+    for (let a = 0; a < n1; a++) {
+      for (let b = 0; b < n2; b++) {
+        let v = keep ? 1 : 0;
+        for (let d = -r; d <= r; d++) {
+          const bb = b + d;
+          const inside = bb >= 0 && bb < n2;
+          const px = inside ? (horizontal ? src[a * w + bb] : src[bb * w + a]) : 0;
+          if (keep ? !px : px) { v = keep ? 0 : 1; break; }
+        }
+        dst[horizontal ? a * w + b : b * w + a] = v;
+      }
+    }
+  };
+  pass(mask, tmp, true, true);
+  const eroded = new Uint8Array(mask.length);
+  pass(tmp, eroded, false, true);
+  pass(eroded, tmp, true, false);
+  const opened = new Uint8Array(mask.length);
+  pass(tmp, opened, false, false);
+  mask.set(opened);
+  return mask;
 }
 
 /**
@@ -269,7 +304,8 @@ export function diffuseFit(pts, rubric = {}) {
   // ... and both models over all pixels, none left out as a highlight
   const r2All = sst > 1e-9 ? 1 - sseAll / sst : 0, r2TwoSidedAll = sst > 1e-9 ? 1 - twoSidedAll.sse / sst : 0;
   return { r2: sstU > 1e-9 ? 1 - best.sse / sstU : 0, r2TwoSided: sstU > 1e-9 ? 1 - twoSided.sse / sstU : 0, r2All, r2TwoSidedAll, rms: Math.sqrt(best.sse / Math.max(1, used)), ambient: best.a, diffuse: best.b,
-    light: best.l, spread: Math.sqrt(sst / pts.length), highlightPeak: hl.peak, highlightRise: hl.rise, highlightShare: hl.bright / pts.length, fitted: used / pts.length };
+    light: best.l, spread: Math.sqrt(sst / pts.length), highlightPeak: hl.peak, highlightRise: hl.rise, highlightShare: hl.bright / pts.length, highlightNormal: hl.normal,
+    fitted: used / pts.length };
 }
 
 /**
@@ -281,16 +317,41 @@ export function diffuseFit(pts, rubric = {}) {
 export function highlightOf(pts, predict, rubric = {}) {
   const margin = rubric.highlightMargin ?? 0.12;
   let peak = 0, rise = 0, bright = 0;
-  for (const s of pts) {
+  const rises = new Float64Array(pts.length);
+  for (let i = 0; i < pts.length; i++) {
+    const s = pts[i];
     const pred = predict(s.n);
     const r = luminance(s.c) - pred;
+    rises[i] = r;
     if (r < (rubric.highlightMinRise ?? 0.06)) continue;
     const share = Math.min(1, r / Math.max(0.1, 1 - pred));
     peak = Math.max(peak, share);
     rise = Math.max(rise, r);
     if (r > margin || share > 0.8) bright++;
   }
-  return { peak, rise, bright };
+  // where it is: the mean normal of the pixels that rise most (within 70% of the largest rise)
+  let normal = null;
+  if (rise > 0) {
+    const m = [0, 0, 0];
+    for (let i = 0; i < pts.length; i++) if (rises[i] >= 0.7 * rise) for (let k = 0; k < 3; k++) m[k] += pts[i].n[k] * rises[i];
+    const len = Math.hypot(...m);
+    if (len > 0) normal = m.map((v) => v / len);
+  }
+  return { peak, rise, bright, normal };
+}
+
+/**
+ * How far (degrees) a highlight sits from where the Phong and Blinn-Phong models put it: at the
+ * normal halfway between the direction to the light and the direction to the viewer (w_h =
+ * normalize(w_i + w_o), w_o = +z toward the viewer; a perspective camera moves it a few degrees).
+ */
+export function highlightOffset(highlightNormal, light) {
+  if (!highlightNormal || !light) return null;
+  const h = [light[0], light[1], light[2] + 1];
+  const len = Math.hypot(...h);
+  if (len < 1e-6) return null; // the light straight behind: no half vector
+  const c = (highlightNormal[0] * h[0] + highlightNormal[1] * h[1] + highlightNormal[2] * h[2]) / len;
+  return (180 / Math.PI) * Math.acos(Math.max(-1, Math.min(1, c)));
 }
 
 /**
@@ -427,7 +488,7 @@ export function pointLightFit(pts, rubric = {}) {
     const model = { a: f.a, b: f.b, l: f.l, d: f.d, falloff: f.falloff };
     const hl = highlightOf(pts, (n) => pointLightPredict(n, model), rubric);
     return { distance: f.d, light: f.l, r2: sst > 1e-12 ? 1 - f.sse / sst : 0, rms: Math.sqrt(f.sse / used), model, highlightPeak: hl.peak, highlightRise: hl.rise,
-      highlightShare: hl.bright / pts.length };
+      highlightShare: hl.bright / pts.length, highlightNormal: hl.normal };
   };
   return { falloff: brief(inv), none: brief(none), fitted: used / pts.length };
 }

@@ -77,6 +77,8 @@ export function playwrightDriver(page, log) {
       await page.clock.runFor(Math.min(ms, 16 * frames));
       await readWebGPUFrame(page);
     },
+    /** The grader's experiment: WebGL draws with back-face culling off (true) or as the page set it (false). */
+    setNoCull: (on) => page.evaluate((v) => { window.__grade.noCull = v; }, on),
     sources: () => page.evaluate(() => ({ glsl: window.__grade.glsl, wgsl: window.__grade.wgsl })),
     errors: () => log.errors,
   };
