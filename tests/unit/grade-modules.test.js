@@ -135,3 +135,49 @@ test('at a high level a level change moves only outline pixels: still finer or c
   assert.equal(effectOf({ before: l5, after: l6, later: l6, wasMoving: false }, T), 'finer');
   assert.equal(effectOf({ before: l6, after: l5, later: l5, wasMoving: false }, T), 'coarser');
 });
+
+/**
+ * A page under the page interface, without a browser: a WP04P1-like sphere whose outline has
+ * 4·2^level corners and whose colours are 0.5·n + 0.5, with the controls given. `act(c)` or
+ * `key(k)` change `state.level`.
+ */
+function fakePart({ controls, act = () => {}, key = () => {}, level = 1 }) {
+  const state = { level };
+  const normals = (nx, ny, nz) => [0.5 * nx + 0.5, 0.5 * ny + 0.5, 0.5 * nz + 0.5];
+  return {
+    state,
+    page: {
+      state: async () => ({ api: 'webgl', frames: 0, adapter: 'ok', draws: 1, shaderErrors: [], gpuErrors: [], faces: { depthTest: true, culling: true } }),
+      snap: async () => ({ ...polygon(4 * 2 ** Math.min(state.level, 6), { w: 128, r: 50, shade: normals }), api: 'webgl' }),
+      controls: async () => controls,
+      click: async (c) => { act(c, state); return { ok: true }; },
+      setValue: async () => {},
+      press: async (k) => key(k, state),
+      tick: async () => {},
+      setNoCull: async () => {},
+      sources: async () => ({ glsl: [], wgsl: [] }),
+      errors: () => [],
+    },
+  };
+}
+
+test('drive: Subdivide and Coarsen found by what they do, whatever they are called', async () => {
+  const { gradePart } = await import('../../tools/grade/drive.js');
+  const controls = [{ index: 0, type: 'button', id: 'makeSquare', text: 'reduce', events: ['click'] }, { index: 1, type: 'button', id: 'makeSphere', text: 'grow', events: ['click'] }];
+  const { page } = fakePart({ controls, act: (c, s) => { s.level = Math.max(0, Math.min(6, s.level + (c.index === 1 ? 1 : -1))); } });
+  const out = await gradePart(page, { part: 'WP04P1', rubric });
+  assert.equal(verdictOf(out.checks, out.fail), 'pass', out.checks.map((c) => c.reason).join(' | '));
+  assert.match(out.controls.subdivide, /makeSphere.*rounder/);
+  assert.match(out.controls.coarsen, /makeSquare.*coarser/);
+});
+
+test('drive: the level on the arrow keys when no control changes it; no level control at all is a review that says what was tried', async () => {
+  const { gradePart } = await import('../../tools/grade/drive.js');
+  const { page } = fakePart({ controls: [], key: (k, s) => { if (k === 'ArrowUp') s.level++; if (k === 'ArrowDown') s.level = Math.max(0, s.level - 1); } });
+  const out = await gradePart(page, { part: 'WP04P1', rubric });
+  assert.equal(verdictOf(out.checks, out.fail), 'pass', out.checks.map((c) => c.reason).join(' | '));
+  assert.match(out.controls.subdivide, /ArrowUp/);
+  const none = await gradePart(fakePart({ controls: [] }).page, { part: 'WP04P1', rubric });
+  assert.equal(verdictOf(none.checks, none.fail), 'review');
+  assert.ok(none.checks.some((c) => /nothing found that makes the sphere finer: .*keys pressed/.test(c.reason)));
+});

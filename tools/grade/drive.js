@@ -29,10 +29,13 @@ export async function gradePart(page, { part, rubric, progress = () => {}, deadl
   const { checks, say } = checkList(rubric);
   const out = { fail: null, checks, actions: [], controls: {}, numbers: {}, images: {}, api: null, canvas: null, busy: 0 };
   const actions = out.actions;
+  let frameMs = 16; // what a frame of this page costs here, from the last frames run
   const tick = async (ms, frames = 2) => {
     const t0 = Date.now();
     await page.tick(ms, frames);
-    out.busy += Date.now() - t0;
+    const took = Date.now() - t0;
+    out.busy += took;
+    frameMs = Math.max(1, took / (frames + 1));
   };
   const shot = async () => {
     const img = await page.snap();
@@ -41,8 +44,10 @@ export async function gradePart(page, { part, rubric, progress = () => {}, deadl
   const done = (fail) => Object.assign(out, { fail });
   // a slow page gets the rubric's time: past `deadline` the optional looking stops, and the part is
   // judged on what was seen, with what was left out said
-  const late = (what) => {
-    if (Date.now() <= deadline) return false;
+  const started = Date.now();
+  // `share`: the part of the time this looking may use (the orbit's samples leave time for the controls)
+  const late = (what, share = 1) => {
+    if (Date.now() <= started + share * (deadline - started)) return false;
     if (!out.cutShort.includes(what)) out.cutShort.push(what);
     return true;
   };
@@ -165,8 +170,10 @@ export async function gradePart(page, { part, rubric, progress = () => {}, deadl
     // search goes on, so such an orbit gets round too
     progress('sampling the orbit');
     let k = 0, im = cur.img;
-    for (; k < T.orbitSamples && (!look(im) || k < 2) && !late('more orbit positions'); k++) {
-      await tick(T.orbitSampleSeconds * 1000, Math.min(8 << k, Math.round(60 * T.orbitSampleSeconds)));
+    for (; k < T.orbitSamples && (!look(im) || k < 2) && !late('more orbit positions', 0.4); k++) {
+      // frames as the page can afford them: a page that takes a second a frame gets a few
+      const frames = Math.max(2, Math.min(8 << k, Math.round(60 * T.orbitSampleSeconds), Math.floor((T.orbitSampleBudgetSeconds ?? 3) * 1000 / frameMs)));
+      await tick(T.orbitSampleSeconds * 1000, frames);
       im = await page.snap();
     }
     cur = { img: im, an: analyse(im, T) };
@@ -227,11 +234,23 @@ export async function gradePart(page, { part, rubric, progress = () => {}, deadl
       let effect = effects.get(c.index);
       if (effect === undefined || effect === 'none') {
         trials++;
+        const base = cur;
         effect = await tryClick(c, 'a control', { watchMotion: !R.orbit && shadedPart });
+        // a page that starts as round as pixels allow shows one level's change nowhere on the
+        // outline: a few more clicks of a button that may be a level control, against the picture before
+        for (let k = 0; k < 3 && (effect === 'shading' || effect === 'none') && [null, 'subdivide', 'coarsen'].includes(nameRole(c, P)) && !late('more clicks for the level'); k++) {
+          if (!await press(c, 'again')) break;
+          const now = await shot();
+          if (!now) break;
+          cur = now;
+          effect = effectOf({ before: base, after: now, later: now, wasMoving: false }, T);
+          actions.push(`  → ${effectWords[effect]} (against the picture before the first click)`);
+        }
+        effects.set(c.index, effect);
       }
       if (effect === 'finer' && !levelBy.subdivide) levelBy.subdivide = { c, act: clickLevel(c) };
       else if (effect === 'coarser' && !levelBy.coarsen) levelBy.coarsen = { c, act: clickLevel(c) };
-      else if (effect === 'none') idle.push(c);
+      else if (effect === 'none' || effect === 'shading') idle.push(c);
       else if (effect === 'starts') { // an orbit control found here, under a name not known for it: sampled, then stopped again
         if (shadedPart && !R.orbit) await sampleOrbit();
         const again = await tryClick(c, 'a control', { watchMotion: true });
@@ -521,7 +540,7 @@ export async function gradePart(page, { part, rubric, progress = () => {}, deadl
   if (must.has('orbitToggle')) {
     if (orbitToggles) say('pass', `a control toggles the orbit on and off (${out.controls.orbit})`);
     else if (R.orbit) say('review', `${describe(R.orbit)} starts the orbit, but nothing found stops it`);
-    else if (movedAtFirst) say('review', `the camera orbits, but none of the ${trials} controls tried stops it (the slide asks for a button that toggles the orbit)`);
+    else if (movedAtFirst) say('review', `the camera orbits, but no button toggles the orbit: none of the ${trials} controls tried stops it (the slide asks for one)`);
     else say('review', 'no orbit: the picture never moved, and no control named for the orbit starts it');
   }
   if (pointLight) {
@@ -542,6 +561,24 @@ export async function gradePart(page, { part, rubric, progress = () => {}, deadl
       const other = views.map((v) => ({ fit: diffuseFit(samples(v.img, v.an), T), img: v.img })).find((v) => v.fit && highlightSeen(v.fit, T));
       if (other) seen = { fit: other.fit, where: `one of ${views.length} lit views along the orbit` };
     }
+    // ... or the page's own material controls show it: ks up to its greatest, then s down (a broad highlight)
+    if (!seen && !nearModel && !late('raising ks to look for a highlight')) {
+      const ctl = (role) => controls.find((x) => !taken.has(x.index) && (x.type === 'range' || x.type === 'number') && nameRole(x, P) === role);
+      const set = [];
+      for (const [role, to] of [['ks', (c) => Number(c.max === '' || c.max === undefined ? 1 : c.max)], ['s', (c) => Math.max(Number(c.min || 0) + 1, Math.min(10, Number(c.max || 10)))]]) {
+        const c = ctl(role);
+        if (!c || seen) continue;
+        await page.setValue(c, to(c), ['input', 'change']);
+        set.push(c);
+        await tick(100);
+        const sh = await shot();
+        const f = sh && !sh.an.blank ? diffuseFit(samples(sh.img, sh.an), T) : null;
+        actions.push(`set ${describe(c)} to ${to(c)} to look for a highlight${f && highlightSeen(f, T) ? ': one shows' : ''}`);
+        if (f && highlightSeen(f, T)) seen = { fit: f, where: `the judged view with ${set.map((x) => nameRole(x, P)).join(' and ')} set by the page's own slider${set.length > 1 ? 's' : ''}` };
+      }
+      for (const c of set) await page.setValue(c, c.value, ['input', 'change']);
+      if (set.length) await tick(100);
+    }
     out.numbers.highlightViews = 1 + views.length;
     if (seen) say('pass', `a specular highlight in ${seen.where} (up to ${fmt(100 * seen.fit.highlightPeak, 0)}% of the way from the diffuse fit to white, ${fmt(seen.fit.highlightRise, 2)} above it)`);
     // where it is: at w_h, halfway between the light and the viewer (the slides' w_r · w_o peaks there too)
@@ -551,7 +588,7 @@ export async function gradePart(page, { part, rubric, progress = () => {}, deadl
       if (offset > T.highlightPlaceDegrees) say('mistake', `the highlight is ${fmt(offset, 0)}° from where the model puts it (at the normal halfway between the light, fitted at ${seen.fit.light.map((v) => fmt(v)).join(', ')}, and the viewer): is w_o the direction from the surface to the eye, in the same space as n and w_i?`);
       else say('pass', `the highlight sits where the normal is halfway between the light and the viewer (${fmt(offset, 0)}° off)`);
     }
-    else say('mistake', `no specular highlight: nothing brighter than the diffuse fit (${fmt(fit.highlightPeak)}) in ${1 + views.length} views (the judged one${views.length ? ' and the lit ones along the orbit' : ''})`);
+    if (!seen) say('mistake', `no specular highlight: nothing brighter than the diffuse fit (${fmt(fit.highlightPeak)}) in ${1 + views.length} views (the judged one${views.length ? ' and the lit ones along the orbit' : ''})`);
   }
 
   // ---- P4: the sliders: those that change the material or light on the input event ----
@@ -580,10 +617,10 @@ export async function gradePart(page, { part, rubric, progress = () => {}, deadl
         how = pictureChange(base, after) > T.sliderChange ? 'change' : 'none';
       }
       const a = analyse(after, T);
-      const silhouette = !a.blank && silhouetteChange(an, a) > T.silhouetteSettled;
       const role = k && k !== 'levelSlider' ? k : null;
-      actions.push(`set ${describe(c)} to ${target} (${how === 'none' ? 'no visible change' : `the picture changed on the ${how} event${silhouette ? ', the silhouette too' : ''}`})`);
-      if (how !== 'none' && !silhouette) {
+      actions.push(`set ${describe(c)} to ${target} (${how === 'none' ? 'no visible change' : `the picture changed on the ${how} event`})`);
+      // (a darker material may merge the unlit side with the background: the silhouette may change too)
+      if (how !== 'none' && k !== 'levelSlider') {
         if (role && !found[role]) found[role] = c;
         out.controls[role || `slider ${Object.keys(out.controls).length}`] = `${describe(c)}: changes the shading on ${how}`;
         if (how === 'input') inputOk++;
@@ -604,7 +641,9 @@ export async function gradePart(page, { part, rubric, progress = () => {}, deadl
     await tick(100);
     const named_ = Object.keys(found);
     const missing = looked.filter((k) => !found[k]);
-    if (inputOk) say('pass', `${inputOk} slider(s) change the material or light on the input event${named_.length ? ` (${named_.join(', ')})` : ''}`);
+    const cut = out.cutShort.includes('the rest of the sliders');
+    if (cut && !inputOk && !changeOnly) say('pass', `note: the sliders were not tried: the rubric's time ran out (${sliders.length} found)`);
+    else if (inputOk) say('pass', `${inputOk} slider(s) change the material or light on the input event${named_.length ? ` (${named_.join(', ')})` : ''}`);
     else if (changeOnly) say('review', `${changeOnly} slider(s) update the picture only on the change event, not while sliding (the slide asks for the input event)`);
     else say('review', `no slider changes the material or light (${sliders.length} tried; the slide asks for sliders for the parameters)`);
     if (inputOk && changeOnly) say('review', `${changeOnly} slider(s) update the picture only on the change event, not while sliding (the slide asks for the input event)`);

@@ -62,7 +62,7 @@ export function playwrightDriver(page, log) {
       const target = page.locator(`[data-grade-control="${c.index}"]`);
       if (await target.isDisabled().catch(() => false)) return { ok: false, why: 'it is disabled' };
       try {
-        await target.click({ timeout: 3000 });
+        await target.click({ timeout: 10_000 });
       } catch (err) {
         return { ok: false, why: err.message.split('\n')[0] };
       }
