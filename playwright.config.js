@@ -1,7 +1,8 @@
-// Browser tests: Debian's Chromium (never a downloaded browser), small canvases, one server.
-// Every test runs under WebGL 2 and WebGL 1 (the page's ?api= is set from the project; WebGL 1
-// leaves out the edge cases and the bench), and the page specs a third time under WebGPU, whose
-// screenshots must match the WebGL 2 baselines.
+// Browser tests: Debian's Chromium and Firefox ESR (never a downloaded browser), small canvases,
+// one server. Every Chromium spec runs under WebGL 2 (the page's ?api= is set from the project),
+// what a WebGL 1 context can change under WebGL 1, and the page specs again under WebGPU, whose
+// screenshots must match the WebGL 2 baselines. The project "firefox" runs firefox.spec.js, which
+// launches Firefox itself (puppeteer-core over WebDriver BiDi: tests/browser/firefox-fixtures.js).
 import { defineConfig } from '@playwright/test';
 import { CHROMIUM, CHROMIUM_ARGS } from './tools/browser.js';
 import { WEBGPU_ARGS } from './tools/webgpu-capture.js';
@@ -24,10 +25,13 @@ export default defineConfig({
     launchOptions: { executablePath: CHROMIUM, args: CHROMIUM_ARGS },
   },
   projects: [
-    { name: 'webgl2', use: { api: 'webgl2' } },
-    // WebGL 1 runs every spec but the numerical edge cases and the bench's level checks: those run
-    // the same GLSL as WebGL 2 (and the same WGSL math under WebGPU), and the time goes to the grader
-    { name: 'webgl1', use: { api: 'webgl' }, testIgnore: /(edge-cases|bench)\.spec\.js/ },
+    { name: 'webgl2', use: { api: 'webgl2' }, testIgnore: /firefox\.spec\.js/ },
+    // WebGL 1 runs the same GLSL and the same JavaScript as WebGL 2 (only getContext differs), so
+    // here it runs what the context can change: the page contract and the unlit screenshots
+    // (foundation), and the numerical edge cases against the exact render. The lit steps and
+    // their controls under WebGL 1 are held by the Firefox suite (another engine, the same exact
+    // reference); the faults (fuzzed URLs, a lost context, heap) run the same code in either context.
+    { name: 'webgl1', use: { api: 'webgl' }, testIgnore: /(lighting|faults|bench|firefox)\.spec\.js/ },
     {
       name: 'webgpu',
       use: { api: 'webgpu', launchOptions: { executablePath: CHROMIUM, args: [...CHROMIUM_ARGS, ...WEBGPU_ARGS] } },
@@ -35,6 +39,8 @@ export default defineConfig({
       // the same pictures: a WebGPU page is held to the WebGL 2 baselines
       snapshotPathTemplate: 'tests/screenshots/webgl2/{arg}{ext}',
     },
+    // Firefox (WebGL 2 and WebGL 1 inside the spec); Playwright's own browser is not used here
+    { name: 'firefox', testMatch: /firefox\.spec\.js/ },
   ],
   webServer: {
     command: `node tools/serve.js --port ${PORT}`,

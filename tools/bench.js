@@ -33,7 +33,8 @@ Measures flat, Gouraud (WP04P4), Phong shading (WP04P5) and an exact impostor at
 in WebGL 2 and in WebGPU: ms per frame and error against the exact reference, level-change time
 against the classic and the bound baselines; then (WebGL 2) the indexed layout and highlight
 stability over an orbit.
-  --quick       levels 0-5, one 128 px canvas, fewer frames (under a minute); does not publish
+  --quick       levels 0-5, one 128 px canvas, fewer frames, the first 2 edge cases (npm test's
+                edge-cases spec holds them all); does not publish
   --out DIR     where bench.json and bench.csv go (default out/bench)
   --no-publish  do not update lab/results.json and lab/speed-accuracy.png (a full run does)
 exit codes: 0 done, 1 it failed (the message says why), 2 bad usage`;
@@ -42,8 +43,8 @@ const OPTIONS = { quick: { type: 'boolean' }, out: { type: 'string' }, 'no-publi
 
 /** How much to measure: the quick run is for tests and a first look, the full one is published. */
 const PLANS = {
-  quick: { sizes: [128], maxLevel: 5, frames: 5, warmup: 2, repeats: 3, changeRepeats: 5, orbitSize: 128, angles: 12, changeLevels: 6 },
-  full: { sizes: [256, 512], maxLevel: 8, frames: 15, warmup: 3, repeats: 5, changeRepeats: 15, orbitSize: 256, angles: 90, changeLevels: 8 },
+  quick: { sizes: [128], maxLevel: 5, frames: 5, warmup: 2, repeats: 3, changeRepeats: 5, orbitSize: 128, angles: 12, changeLevels: 6, edgeCases: 2 },
+  full: { sizes: [256, 512], maxLevel: 8, frames: 15, warmup: 3, repeats: 5, changeRepeats: 15, orbitSize: 256, angles: 90, changeLevels: 8, edgeCases: EDGE_CASES.length },
 };
 const METHODS = ['flat', 'gouraud', 'phong'];
 /** The stability run's material: its highlight never clamps (kd + ks + ka La = 0.94). */
@@ -255,11 +256,11 @@ async function measureStability(browser, base, plan) {
   return rows;
 }
 
-/** Where each method breaks: every edge case on WP04P4 and WP04P5. The rows of results.edgeCases. */
-async function measureEdgeCases(browser, base) {
+/** Where each method breaks: the plan's edge cases (all in a full run) on WP04P4 and WP04P5. The rows of results.edgeCases. */
+async function measureEdgeCases(browser, base, plan) {
   const page = await browser.newPage({ viewport: { width: 900, height: 900 }, deviceScaleFactor: 1 });
   const rows = [];
-  for (const c of EDGE_CASES) {
+  for (const c of EDGE_CASES.slice(0, plan.edgeCases)) {
     for (const step of ['WP04P4', 'WP04P5']) {
       progress(`edge case ${c.name} ${step}`);
       const query = new URLSearchParams({ orbit: 0, angle: 0, size: 128, ...c.params });
@@ -347,7 +348,7 @@ async function runBench(browser, base, { plan, quick, started }) {
     await gpuPage.close();
   }
   results.stability = await measureStability(browser, base, plan);
-  results.edgeCases = await measureEdgeCases(browser, base);
+  results.edgeCases = await measureEdgeCases(browser, base, plan);
   results.meta = {
     ...results.meta, date: new Date().toISOString(), quick, seconds: Math.round((Date.now() - started) / 1000),
     machine: `${os.cpus().length} × ${os.cpus()[0]?.model || 'cpu'}, ${Math.round(os.totalmem() / 2 ** 30)} GiB, ${os.platform()} ${os.release()}`,

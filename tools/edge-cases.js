@@ -22,7 +22,10 @@ export const EDGE_CASES = [
   { name: 'level 8 (the maximum)', params: { level: 8 } },
   { name: 'a non-square canvas', params: { height: 72 } },
   { name: 'the near plane cuts the sphere', params: { near: 2.3 } },
+  // at far = 3.5 the plane cuts only the back half, which culling hides anyway; at 2.5 it cuts the
+  // side the camera sees (the visible front spans view depths 2 to 2⅔ from the eye at 3)
   { name: 'the far plane cuts the sphere', params: { far: 3.5 } },
+  { name: 'the far plane cuts the visible side', params: { far: 2.5 } },
 ];
 
 /** An 8-bit step: errors are reported in these. */

@@ -14,7 +14,8 @@ import { renderReference } from '../../tools/reference/render.js';
 import { compareToReference } from '../../tools/reference/measure.js';
 import { readWebGPUFrame, webgpuCaptureScript } from '../../tools/webgpu-capture.js';
 
-function instrument() {
+/** The init script that counts WebGL (WebGPU) calls and keeps the contexts: window.__gl. */
+export function instrument() {
   const counts = {};
   const contexts = [];
   const wrap = (proto, names) => {

@@ -4,55 +4,7 @@
 // out-of-range URL values, broken or missing shaders, no WebGL (2), file://, and the address
 // following the controls. Run under WebGL 2 and WebGL 1.
 import { test, expect, open, scene, andDraw, canvasPixels, expectCanvasScreenshot, messages } from './fixtures.js';
-
-// Where the ray through pixel (i, j)'s centre meets the unit sphere: [near point, far point] or null.
-function sphereHits(camera, width, height, i, j) {
-  const sub = (a, b) => a.map((v, k) => v - b[k]);
-  const dot = (a, b) => a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-  const norm = (a) => a.map((v) => v / Math.hypot(...a));
-  const cross = (a, b) => [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]];
-  const f = norm(sub(camera.at, camera.eye));
-  const r = norm(cross(f, camera.up));
-  const u = cross(r, f);
-  const t = Math.tan((camera.fovy * Math.PI) / 360);
-  const x = ((2 * (i + 0.5)) / width - 1) * t * camera.aspect;
-  const y = (1 - (2 * (j + 0.5)) / height) * t;
-  const d = norm([0, 1, 2].map((k) => f[k] + x * r[k] + y * u[k]));
-  const b = dot(camera.eye, d);
-  const c = dot(camera.eye, camera.eye) - 1;
-  const disc = b * b - c;
-  if (disc <= 0) return null;
-  const at = (s) => camera.eye.map((e, k) => e + s * d[k]);
-  const near = at(-b - Math.sqrt(disc));
-  return { near, far: at(-b + Math.sqrt(disc)), cosine: Math.sqrt(disc) };
-}
-
-const normalColour = (p) => p.map((v) => Math.round(255 * (0.5 * v + 0.5)));
-const BACKGROUND = [100, 149, 237];
-
-// Compares sampled pixels with c = 0.5 p + 0.5 of the near (and, if allowed, the far) sphere point.
-function checkNormalColours(img, camera, { allowFar = false, useFar = false, tolerance = 3 } = {}) {
-  let checked = 0;
-  const bad = [];
-  for (let j = 2; j < img.height; j += 5) {
-    for (let i = 2; i < img.width; i += 5) {
-      const o = 4 * (j * img.width + i);
-      const got = [img.data[o], img.data[o + 1], img.data[o + 2]];
-      const hit = sphereHits(camera, img.width, img.height, i, j);
-      if (!hit) {
-        expect(got, `background at ${i},${j}`).toEqual(BACKGROUND);
-        continue;
-      }
-      if (hit.cosine < 0.25) continue; // near the silhouette the mesh's chords differ from the sphere
-      const candidates = useFar ? [hit.far] : allowFar ? [hit.near, hit.far] : [hit.near];
-      const ok = candidates.some((p) => normalColour(p).every((v, k) => Math.abs(v - got[k]) <= tolerance));
-      checked++;
-      if (!ok) bad.push(`${i},${j}: got ${got}, want ${candidates.map(normalColour).join(' or ')}`);
-    }
-  }
-  expect(checked).toBeGreaterThan(200);
-  expect(bad.slice(0, 5)).toEqual([]);
-}
+import { checkNormalColours } from './bounds.js';
 
 test('the front page lists the steps in order and every link works', async ({ page }) => {
   await page.goto('/');
