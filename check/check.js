@@ -24,6 +24,15 @@ function say(text, kind = 'error') {
   $('messages').replaceChildren(el('p', { className: kind, textContent: text }));
 }
 
+/** Whether a WebGPU adapter is there (the API alone is not enough: headless and some GPUs give none). */
+async function hasWebGPU() {
+  try {
+    return !!(navigator.gpu && (await navigator.gpu.requestAdapter()));
+  } catch {
+    return false;
+  }
+}
+
 /** An image { width, height, data } as a PNG data URL. */
 function pictureURL(img) {
   const c = el('canvas', { width: img.width, height: img.height });
@@ -66,8 +75,11 @@ async function run(gather) {
     $('progress').textContent = 'reading your files…';
     const files = handInFrom(await gather());
     const { parts } = partsOfHandIn(files);
-    if (!navigator.gpu) say('This browser has no WebGPU: parts written for WebGPU will fail here (the grader has it). The WebGL parts are checked as usual.', 'notice');
-    await startHost();
+    if (!(await hasWebGPU())) say('This browser has no WebGPU adapter: parts written for WebGPU fail here (the grader has one). The WebGL parts are checked as usual.', 'notice');
+    await startHost().catch((err) => {
+      throw new CheckInputError(`This browser would not start the service worker the self-check needs to show your pages to the grader (${err.message}). ` +
+        'Service workers may be off in a private window or by a setting: try a normal window of a current Chrome, Edge or Firefox.');
+    });
     const rubric = await (await fetch(new URL('../tools/grade/rubric.json', import.meta.url))).json();
     const session = openSession(files, frameScript(rubric));
     const results = [];
