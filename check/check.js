@@ -7,6 +7,7 @@
 import { CheckInputError, entriesFromDrop, entriesFromInput, handInFrom, partsOfHandIn } from './files.js';
 import { openSession, startHost, unsupported } from './host.js';
 import { checkPart, frameScript } from './runner.js';
+import { handInSource } from './serve.js';
 import { missedSlides, stepLink } from './slides.js';
 import { PARTS } from '../tools/grade/part-names.js';
 import { gradePart } from '../tools/grade/drive.js';
@@ -81,7 +82,7 @@ async function run(gather) {
         'Service workers may be off in a private window or by a setting: try a normal window of a current Chrome, Edge or Firefox.');
     });
     const rubric = await (await fetch(new URL('../tools/grade/rubric.json', import.meta.url))).json();
-    const session = openSession(files, frameScript(rubric));
+    const session = openSession(handInSource(files), frameScript(rubric));
     const results = [];
     try {
       for (const [k, part] of PARTS.entries()) {

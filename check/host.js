@@ -3,7 +3,7 @@
 // (check/serve.js). Also lists what a session's pages asked of other hosts (blocked).
 import { BASE, answer, askedPath } from './serve.js';
 
-const sessions = new Map(); // id → { files, frameScript, log, pending }
+const sessions = new Map(); // id → { source, frameScript, log, pending }
 
 /** Why this browser cannot run the self-check, or null. */
 export function unsupported() {
@@ -49,7 +49,7 @@ async function onMessage(e) {
   try {
     const rel = askedPath(e.data.path, session);
     if (rel === null) return port.postMessage({ status: 400, type: 'text/plain', body: 'bad path' });
-    const a = await answer(s.files, rel, s);
+    const a = await answer(s.source, rel, s);
     if (a.note) s.log.notes.push(a.note);
     if (a.missing) s.log.errors.push(`missing file: ${a.missing}`);
     port.postMessage({ status: a.status, type: a.type, body: a.body });
@@ -62,12 +62,12 @@ async function onMessage(e) {
 }
 
 /**
- * A session serving `files` to frames under BASE + id + '/'.
+ * A session serving `source` (serve.js: handInSource, siteSource) to frames under BASE + id + '/'.
  * @returns {{ id: string, url: (path: string) => string, log: { errors: string[], blocked: string[], notes: string[] }, idle: (ms: number, max: number) => Promise<void>, close: () => void }}
  */
-export function openSession(files, frameScript) {
+export function openSession(source, frameScript) {
   const id = Array.from(crypto.getRandomValues(new Uint8Array(8)), (b) => b.toString(16).padStart(2, '0')).join('');
-  const s = { files, frameScript, session: id, log: { errors: [], blocked: [], notes: [] }, pending: 0, lastRequest: performance.now() };
+  const s = { source, frameScript, session: id, log: { errors: [], blocked: [], notes: [] }, pending: 0, lastRequest: performance.now() };
   sessions.set(id, s);
   return {
     id,

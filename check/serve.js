@@ -46,27 +46,45 @@ export function injectFrameScript(html, src) {
   return tag + html;
 }
 
+/** A hand-in as a source of files: its paths, and each file's contents. */
+export function handInSource(files) {
+  const paths = [...files.keys()];
+  return { paths, read: async (p) => files.get(p) ?? null };
+}
+
+/** Our own site as a source (for our reference part beside a student's): read from the server, never listed. */
+export function siteSource(root) {
+  return {
+    paths: [],
+    read: async (p) => {
+      const r = await fetch(new URL(p.split('/').map(encodeURIComponent).join('/'), root));
+      return r.ok ? r.blob() : null;
+    },
+  };
+}
+
 /**
- * The answer to a frame's request for `rel` (a path inside the hand-in).
- * @param {Map<string, Blob>} files the hand-in: relative '/'-separated path → its contents
+ * The answer to a frame's request for `rel` (a path inside the source).
+ * @param {{ paths: string[], read: (path: string) => Promise<Blob|null> }} source
  * @param {string} rel
  * @param {{ frameScript: string, session: string }} how
  * @returns {Promise<{ status: number, type: string, body: string|Blob, note?: string, missing?: string }>}
  */
-export async function answer(files, rel, { frameScript, session }) {
+export async function answer(source, rel, { frameScript, session }) {
   if (rel === FRAME_SCRIPT) return { status: 200, type: 'text/javascript', body: frameScript };
   let file = rel.replace(/\/+$/, '');
-  const isFolder = (f) => !files.has(f) && [...files.keys()].some((k) => k.startsWith(`${f}/`));
+  const isFolder = (f) => !source.paths.includes(f) && source.paths.some((k) => k.startsWith(`${f}/`));
   if (rel.endsWith('/') || file === '' || isFolder(file)) file = file ? `${file}/index.html` : 'index.html';
   let note;
-  if (!files.has(file)) {
-    const standIn = findStandIn(file, [...files.keys()]);
+  let blob = await source.read(file);
+  if (!blob) {
+    const standIn = findStandIn(file, source.paths);
     if (!standIn) return { status: 404, type: 'text/plain', body: 'not found', missing: `/${rel}` };
     note = `served ${standIn} for /${rel}, which is not in the submission as written (letter case, or a folder above the submission)`;
     file = standIn;
+    blob = await source.read(file);
   }
   const type = typeOf(file);
-  const blob = files.get(file);
   if (type === 'text/html') {
     const html = await blob.text();
     return { status: 200, type: 'text/html', note, body: injectFrameScript(guardInlineScripts(html), `${BASE}${session}/${FRAME_SCRIPT}`) };
