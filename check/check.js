@@ -6,11 +6,10 @@
 // parts have their verdicts: window.check = { done: true, parts: [{ part, verdict, reasons, api }] }.
 import { CheckInputError, entriesFromDrop, entriesFromInput, handInFrom, partsOfHandIn } from './files.js';
 import { openSession, startHost, unsupported } from './host.js';
-import { checkPart, frameScript } from './runner.js';
-import { handInSource } from './serve.js';
+import { checkPart, drawReference, frameScript } from './runner.js';
+import { handInSource, siteSource } from './serve.js';
 import { missedSlides, stepLink } from './slides.js';
 import { PARTS } from '../tools/grade/part-names.js';
-import { gradePart } from '../tools/grade/drive.js';
 
 const $ = (id) => document.getElementById(id);
 const el = (tag, props = {}, ...children) => {
@@ -41,7 +40,7 @@ function pictureURL(img) {
   return c.toDataURL('image/png');
 }
 
-const CAPTIONS = { first: 'first frame', coarse: 'a coarse level', judged: 'judged', leastS: 's at its least' };
+const CAPTIONS = { first: 'first frame', coarse: 'a coarse level', judged: 'judged', leastS: 's at its least', reference: 'our step, same size and light' };
 
 function card(r, index, total, file) {
   const slides = r.verdict === 'pass' ? [] : missedSlides(r.reasons || []);
@@ -83,20 +82,27 @@ async function run(gather) {
     });
     const rubric = await (await fetch(new URL('../tools/grade/rubric.json', import.meta.url))).json();
     const session = openSession(handInSource(files), frameScript(rubric));
+    const ours = openSession(siteSource(new URL('../', import.meta.url)), frameScript(rubric));
     const results = [];
     try {
       for (const [k, part] of PARTS.entries()) {
         const file = parts[part];
         const where = `part ${k + 1} of ${PARTS.length}: ${part}${file ? ` (${file})` : ''}`;
         $('progress').textContent = where;
-        const r = file ? await checkPart({ part, page: file, session, rubric, stage: $('stage'), gradePart, progress: (what) => { $('progress').textContent = `${where}: ${what}`; } })
+        const r = file ? await checkPart({ part, page: file, session, rubric, stage: $('stage'), progress: (what) => { $('progress').textContent = `${where}: ${what}`; } })
           : { part, verdict: 'fail', reasons: [`no page for ${part} was found in the submission`], api: null };
+        if (file) {
+          $('progress').textContent = `${where}: drawing our ${part} beside it`;
+          const reference = await drawReference({ result: r, rubric, session: ours, stage: $('stage') }).catch(() => null);
+          if (reference) r.images.reference = reference;
+        }
         results.push(r);
         $('results').append(card(r, k, PARTS.length, file));
         session.log.errors.length = session.log.blocked.length = session.log.notes.length = 0;
       }
     } finally {
       session.close();
+      ours.close();
       $('stage').replaceChildren();
     }
     const passes = results.filter((r) => r.verdict === 'pass').length;

@@ -21,7 +21,9 @@ function bytesOf(b64) {
 export function framePage(frame, log) {
   const win = () => frame.contentWindow;
   const g = () => win().__grade;
-  const watch = () => win().__checkWatch || { errors: [], blocked: [] };
+  // the watch's record outlives the frame (read after it is removed)
+  let record = null;
+  const watch = () => (record ??= (frame.contentWindow && frame.contentWindow.__checkWatch) || null) || { errors: [], blocked: [], hung: null };
   const plain = (x) => JSON.parse(JSON.stringify(x)); // out of the frame's realm
   /** Waits for the last WebGPU frame's copy to the canvas (tools/webgpu-capture.js). */
   const settle = async () => {
@@ -43,15 +45,17 @@ export function framePage(frame, log) {
     async controls() {
       return plain(g().controls());
     },
-    /** A click as a user's: pointer and mouse down and up at the control's centre, then click. */
+    /** A click as a user's: pointer and mouse down and up at the control's centre, then click. { ok, why }. */
     async click(c) {
       const el = control(c);
-      if (!el || el.disabled) return false;
+      if (!el) return { ok: false, why: 'it is no longer on the page' };
+      if (el.disabled) return { ok: false, why: 'it is disabled' };
       el.scrollIntoView({ block: 'center', inline: 'center' });
       const r = el.getBoundingClientRect();
       const x = r.left + r.width / 2, y = r.top + r.height / 2;
       const hit = win().document.elementFromPoint(x, y);
-      if (!r.width || !r.height || !hit || !(hit === el || el.contains(hit) || (hit.control === el))) return false; // hidden or covered
+      if (!r.width || !r.height) return { ok: false, why: 'it is not visible' };
+      if (!hit || !(hit === el || el.contains(hit) || hit.control === el)) return { ok: false, why: `another element (${hit ? hit.tagName.toLowerCase() : 'none'}) covers it` };
       const W = win();
       const opts = { bubbles: true, cancelable: true, composed: true, clientX: x, clientY: y, button: 0, view: W };
       el.dispatchEvent(new W.PointerEvent('pointerdown', { ...opts, buttons: 1, pointerType: 'mouse', isPrimary: true }));
@@ -60,7 +64,7 @@ export function framePage(frame, log) {
       el.dispatchEvent(new W.PointerEvent('pointerup', { ...opts, pointerType: 'mouse', isPrimary: true }));
       el.dispatchEvent(new W.MouseEvent('mouseup', opts));
       el.click();
-      return true;
+      return { ok: true };
     },
     async setValue(c, value, events) {
       g().setValue(c.index, value, events);

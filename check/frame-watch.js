@@ -30,6 +30,8 @@ export function frameWatchScript(options) {
   // the grader's pages have devicePixelRatio 1: a canvas sized from clientWidth × devicePixelRatio
   // is as big here as there, on any screen
   Object.defineProperty(window, 'devicePixelRatio', { get: () => 1, configurable: true });
+  // ... and no scrollbars (headless Chromium hides them): a canvas sized from clientWidth is as wide
+  document.documentElement.style.scrollbarWidth = 'none';
 
   // the loop guard: a beat on the real clock (taken before check/frame-clock.js stands in for it)
   const realSetTimeout = setTimeout.bind(window), realNow = performance.now.bind(performance);

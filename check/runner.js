@@ -1,13 +1,17 @@
 // One part of a hand-in, checked as `npm run grade` checks it: opened in a frame of its own
 // (1000 × 1000 CSS pixels, as the grader's page; time frozen; only the hand-in's files served),
 // loaded within the rubric's loadSeconds, then driven and judged by the grader's own modules
-// (gradePart, tools/grade/drive.js) through the frame's page interface (check/frame-page.js),
-// within the rubric's timeoutSeconds. A part that never returns is stopped and said so.
+// (gradePart, tools/grade/drive.js; verdictOf and reasonsOf, tools/grade/verdict.js) through the
+// frame's page interface (check/frame-page.js), within the rubric's timeoutSeconds. A part that
+// never returns is stopped and said so. Our own part can be drawn beside it (drawReference).
 import { framePage } from './frame-page.js';
 import { frameWatchScript } from './frame-watch.js';
 import { frameClockScript } from './frame-clock.js';
 import { instrumentScript } from '../tools/grade/instrument.js';
 import { webgpuCaptureScript } from '../tools/webgpu-capture.js';
+import { gradePart } from '../tools/grade/drive.js';
+import { verdictOf, reasonsOf } from '../tools/grade/verdict.js';
+import { referenceQuery } from '../tools/grade/reference-state.js';
 
 /** The grader's frozen clock: the same wall time as tools/grade (2026-01-05 09:00 UTC). */
 export const FROZEN = Date.UTC(2026, 0, 5, 9, 0, 0);
@@ -45,29 +49,73 @@ async function load(stage, src, seconds) {
   return { frame, how };
 }
 
+/** The grader's words for a part stopped by the time bound (as grade.spec.js's). */
+const timedOut = (rubric, why) => `the page did not finish within the rubric's bound of ${rubric.timeoutSeconds ?? 90} s (it never returns, or is far too slow)${why ? `: ${why}` : ''}`;
+
 /**
- * Checks one part. Returns the grader's result for it ({ verdict, reasons, api, images, ... }),
- * or a fail with the reason when it cannot be opened or does not finish in time.
- * @param {object} o { part, page (path in the hand-in), session (host.js), rubric, stage (element), gradePart, log (progress text) }
+ * Checks one part. Returns what report.json says of it ({ part, verdict, reasons, api, actions,
+ * controls, numbers, errors, blocked, notes, seconds }) and its pictures (images: { first, judged,
+ * ... } as { width, height, data }).
+ * @param {object} o { part, page (path in the hand-in), session (host.js), rubric, stage (element), progress (text) }
  */
-export async function checkPart({ part, page, session, rubric, stage, gradePart, progress = () => {} }) {
+export async function checkPart({ part, page, session, rubric, stage, progress = () => {} }) {
   const started = performance.now();
   const loadSeconds = rubric.loadSeconds ?? 20;
-  const failed = (reason) => ({ part, verdict: 'fail', reasons: [reason], api: null, images: {}, actions: [], errors: session.log.errors, blocked: session.log.blocked, notes: session.log.notes });
+  let graded = { fail: null, checks: [], actions: [], images: {}, busy: 0 };
   progress(`opening ${page}`);
   const { frame, how } = await load(stage, session.url(page), loadSeconds);
+  const fp = framePage(frame, session.log);
   try {
-    const fp = framePage(frame, session.log);
-    const notLoaded = `the page could not be opened: it did not finish loading in ${loadSeconds} s (a script that never returns?)`;
-    if (how !== 'load' || fp.hung()) return failed(fp.hung() ? `${notLoaded}: ${fp.hung()}` : notLoaded);
-    await session.idle(500, 5000);
-    let timer;
-    const bound = new Promise((resolve) => { timer = setTimeout(() => resolve('timeout'), (rubric.timeoutSeconds ?? 90) * 1000); });
-    const result = await Promise.race([gradePart(fp, { part, rubric, log: progress }), bound]).finally(() => clearTimeout(timer));
-    if (result === 'timeout' || fp.hung()) {
-      return failed(`the page did not finish within the time bound (${fp.hung() || `${rubric.timeoutSeconds ?? 90} s`}): it never returns, or is far too slow`);
+    if (how !== 'load' || fp.hung()) {
+      const notLoaded = `the page could not be opened: it did not finish loading in ${loadSeconds} s (a script that never returns?)`;
+      graded.fail = fp.hung() ? `${notLoaded}: ${fp.hung()}` : notLoaded;
+    } else {
+      await session.idle(500, 5000);
+      let timer;
+      const bound = new Promise((resolve) => { timer = setTimeout(() => resolve('timeout'), (rubric.timeoutSeconds ?? 90) * 1000); });
+      const grading = gradePart(fp, { part, rubric, progress });
+      grading.catch(() => {}); // after the time bound the frame is gone, and so is the grading
+      try {
+        const r = await Promise.race([grading, bound]);
+        if (r === 'timeout') graded.fail = timedOut(rubric);
+        else graded = r;
+      } catch (err) {
+        if (fp.hung()) graded.fail = timedOut(rubric, fp.hung());
+        // the grader's own trouble with this page: never a pass on it, a teacher looks (as grade.spec.js)
+        else graded.checks = [{ level: 'review', reason: `the grader could not finish on this page: ${err.message.split('\n')[0]}` }];
+      } finally {
+        clearTimeout(timer);
+      }
     }
-    return { part, ...result, errors: fp.errors(), blocked: fp.blocked(), notes: session.log.notes, seconds: (performance.now() - started) / 1000 };
+  } finally {
+    frame.remove();
+  }
+  const seconds = (performance.now() - started) / 1000;
+  const errors = fp.errors();
+  return {
+    part, file: page, api: graded.api ?? null, canvas: graded.canvas, controls: graded.controls || {}, numbers: graded.numbers || {},
+    verdict: verdictOf(graded.checks, graded.fail),
+    reasons: reasonsOf({ fail: graded.fail, checks: graded.checks, seconds, busySeconds: graded.busy / 1000, slowSeconds: rubric.slowSeconds,
+      pageErrors: errors.filter((e) => /page error/.test(e)) }),
+    actions: graded.actions || [], images: graded.images || {}, errors, blocked: fp.blocked(), notes: [...session.log.notes], seconds,
+  };
+}
+
+/**
+ * Our own part beside the student's (as the grader's report has it): drawn at the student's canvas
+ * size, lit from the light the judge fitted, in a frame served from our site. { width, height, data } or null.
+ */
+export async function drawReference({ result, rubric, session, stage }) {
+  const judged = result.images.judged;
+  if (!judged || result.verdict === 'fail') return null;
+  const query = referenceQuery(judged, result.numbers, rubric.thresholds, {});
+  const { frame, how } = await load(stage, `${session.url(`${result.part}/index.html`)}?${query}`, rubric.loadSeconds ?? 20);
+  try {
+    if (how !== 'load') return null;
+    const fp = framePage(frame, session.log);
+    await fp.tick(500, 30);
+    const img = await fp.snap();
+    return img && img.width === judged.width && img.height === judged.height ? img : null;
   } finally {
     frame.remove();
   }
