@@ -112,6 +112,7 @@ export async function drawReference({ result, rubric, session, stage }) {
   const { frame, how } = await load(stage, `${session.url(`${result.part}/index.html`)}?${query}`, rubric.loadSeconds ?? 20);
   try {
     if (how !== 'load') return null;
+    await session.idle(500, 5000);
     const fp = framePage(frame, session.log);
     await fp.tick(500, 30);
     const img = await fp.snap();
