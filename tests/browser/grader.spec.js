@@ -165,6 +165,31 @@ test.describe('grading the labelled class', () => {
   });
 });
 
+// Real hand-ins of this worksheet with a careful reader's labels (../shared/handins beside this
+// checkout, or HANDINS_DIR): the grader is judged on hand-ins it was not written for. Graded with
+// the shipped rubric and its own time bounds, as a teacher runs it.
+const HANDINS = process.env.HANDINS_DIR || path.resolve(import.meta.dirname, '../../../shared/handins');
+test.describe('grading real hand-ins against their labels', () => {
+  test.describe.configure({ timeout: 600_000 });
+  // eslint-disable-next-line no-empty-pattern -- Playwright wants the fixtures argument destructured
+  test('at least 85% of the labelled parts get their label\'s verdict, 90% of the correct ones pass, no broken one and at most 2 partial ones pass', async ({}, testInfo) => {
+    test.skip(testInfo.project.name !== 'webgl2', 'the grader runs its own Chromium; once is enough');
+    test.skip(!existsSync(path.join(HANDINS, 'labels.tsv')), `no labelled hand-ins at ${HANDINS} (set HANDINS_DIR): skipped`);
+    const out = mkdtempSync(path.join(os.tmpdir(), 'handins-'));
+    const started = Date.now();
+    const run = spawnSync(process.execPath, ['tools/grade/grade.js', '--batch', HANDINS, '--labels', path.join(HANDINS, 'labels.tsv'), '--out', out],
+      { encoding: 'utf8', timeout: 580_000 });
+    expect(run.status, run.stderr + run.stdout.slice(-3000)).toBe(0);
+    const a = JSON.parse(readFileSync(path.join(out, 'report.json'), 'utf8')).labels;
+    const summary = run.stdout.split('\n').filter((l) => l.startsWith('labels:')).join('\n');
+    console.log(`graded ${HANDINS} in ${((Date.now() - started) / 1000).toFixed(0)} s\n${summary}`);
+    expect(a.agree / a.total, summary).toBeGreaterThanOrEqual(0.85);
+    expect(a.correctPassed / a.correct, summary).toBeGreaterThanOrEqual(0.9);
+    expect(a.brokenPassed, summary).toBe(0);
+    expect(a.partialPassed, summary).toBeLessThanOrEqual(2);
+  });
+});
+
 test('a submission folder that does not exist: a clear message and exit code 1; a bad rubric: exit code 2', () => {
   const run = spawnSync(process.execPath, ['tools/grade/grade.js', '/nonexistent/student'], { encoding: 'utf8' });
   expect(run.status).toBe(1);

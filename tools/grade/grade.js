@@ -6,6 +6,7 @@ import { existsSync, mkdirSync, readFileSync, readdirSync, rmSync, statSync, wri
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { PARTS, findParts } from './parts.js';
+import { readLabels, agreement, agreementText, agreementHtml } from './labels.js';
 import { CHROMIUM } from '../browser.js';
 
 const here = path.dirname(fileURLToPath(import.meta.url));
@@ -27,6 +28,10 @@ fail) with reasons, from what the slide's step asks for. Our reference part is d
                     class across machines; gather the out folders and run --report-only on them
   --report-only     rebuild the report from the parts already graded in --out
   --workers N       parts graded at once (default 2)
+  --labels FILE     your own labels (TSV: submission, part, label = correct | partial | broken, reasons):
+                    the report and stdout add the agreement per part, a label × verdict table and
+                    every disagreement with both sides' reasons (correct → pass, partial → review,
+                    broken → fail)
 exit codes: 0 it ran (whatever the verdicts), 1 it could not run, 2 bad usage`;
 
 function fail(message, code = 1) {
@@ -45,6 +50,7 @@ function parseArgs(argv) {
     else if (a === '--out') o.out = next();
     else if (a === '--shard') o.shard = next();
     else if (a === '--workers') o.workers = next();
+    else if (a === '--labels') o.labels = next();
     else if (a === '--report-only') o.reportOnly = true;
     else if (a === '--part') {
       const m = /^(WP04P[1-5])=(.+)$/i.exec(next());
@@ -86,10 +92,12 @@ function passes(parts) {
 }
 const badge = (v) => `<span class="badge ${esc(v || 'fail')}">${esc(v || 'fail')}</span>`;
 
-function writeReport(out, submissions) {
+function writeReport(out, submissions, labels = null) {
   const rows = submissions.map((s) => ({ ...s, passes: passes(s.parts), reviews: s.parts.filter((p) => p.verdict === 'review').length }))
     .sort((a, b) => b.passes - a.passes || b.reviews - a.reviews || a.name.localeCompare(b.name));
-  writeFileSync(path.join(out, 'report.json'), JSON.stringify({ generated: new Date().toISOString(), submissions: rows }, null, 1));
+  const agreed = labels ? agreement(labels, rows) : null;
+  writeFileSync(path.join(out, 'report.json'), JSON.stringify({ generated: new Date().toISOString(), submissions: rows,
+    ...(agreed ? { labels: { ...agreed, rows: agreed.rows.map(({ reasons, ...r }) => ({ ...r, reasons: reasons.filter((x) => /^(FAIL|REVIEW)/.test(x)) })) } } : {}) }, null, 1));
   const img = (s, r, k) => (r.images && r.images[k] ? `<img src="${esc(`parts/${safeName(s.name)}/${r.images[k]}`)}" alt="${esc(`${r.part} ${k}`)}" loading="lazy">` : '');
   const anchor = (s, r) => `${safeName(s.name)}-${r.part}`;
   const grid = rows.map((s) => `<tr data-name="${esc(s.name)}" data-passes="${s.passes}"><th scope="row"><a href="#${esc(safeName(s.name))}">${esc(s.name)}</a></th><td class="num">${s.passes}</td>` +
@@ -128,7 +136,7 @@ th[data-sort]{cursor:pointer;text-decoration:underline dotted}.num{text-align:ri
 .badge{display:inline-block;padding:0 .4rem;border-radius:.6rem;font-size:.8rem;font-weight:600;color:#fff}.badge.pass{background:#2a7d2a}.badge.review{background:#a66b00}.badge.fail{background:#b3261e}
 .api{color:#556;font-size:.75rem;margin-left:.3rem}.thumbs{display:flex;gap:2px;margin-top:2px}.thumbs img{width:64px;height:64px;object-fit:contain;border:1px solid #ccd;background:#fff}
 .images{display:flex;gap:.8rem;flex-wrap:wrap}figure{margin:0}figure img{max-width:260px;border:1px solid #ccd;image-rendering:pixelated}
-.errors li{color:#a00}.file{color:#556;font-family:monospace}.part{border-top:1px solid #dde;padding:.3rem 0}</style></head><body>
+.errors li{color:#a00}.confusion td.agree{background:#e3f6e3;font-weight:600}.file{color:#556;font-family:monospace}.part{border-top:1px solid #dde;padding:.3rem 0}</style></head><body>
 <h1>Grading report</h1><p>Each part was opened in Chromium (WebGL, or WebGPU on SwiftShader with its frames read back), with time
 frozen. The grader found its controls, stopped or sampled the orbit, coarsened and subdivided until the silhouette stopped
 changing, and judged the picture by what the slide's step asks for (a round sphere; normals as colours; diffuse shading for a
@@ -138,13 +146,22 @@ fail. Click a cell for its reasons and pictures; click a column head to sort.</p
 <tbody>
 ${grid}
 </tbody><tfoot><tr><th>pass / review / fail</th><td></td>${totals.map((t) => `<td>${t}</td>`).join('')}</tr></tfoot></table>
+${agreed ? agreementHtml(agreed, (r) => `#${safeName(r.submission)}-${r.part}`) : ''}
 ${details}${sortScript}</body></html>`);
-  return rows;
+  return { rows, agreed };
 }
 
 function main() {
   const o = parseArgs(process.argv.slice(2));
   const rubric = readRubric(o.rubric);
+  let labels = null;
+  if (o.labels) {
+    try {
+      labels = readLabels(o.labels);
+    } catch (err) {
+      fail(`cannot read the labels: ${err.message}`, 2);
+    }
+  }
   let submissions;
   if (o.batch) {
     const root = path.resolve(o.batch);
@@ -202,7 +219,7 @@ function main() {
     }
     s.parts.sort((a, b) => a.part.localeCompare(b.part));
   }
-  const rows = writeReport(out, [...byName.values()]);
+  const { rows, agreed } = writeReport(out, [...byName.values()], labels);
   if (o.batch) {
     const csv = ['name,passes,' + PARTS.join(',') + ',' + PARTS.map((p) => `${p}_reasons`).join(',')]
       .concat(rows.map((s) => [JSON.stringify(s.name), s.passes, ...PARTS.map((p) => s.parts.find((x) => x.part === p).verdict),
@@ -212,6 +229,7 @@ function main() {
   for (const s of rows) {
     console.log(`${s.name}: ${s.passes} of ${PARTS.length} pass · ` + s.parts.map((p) => `${p.part} ${p.verdict}${p.api ? ` (${p.api})` : ''}`).join(', '));
   }
+  if (agreed) for (const line of agreementText(agreed)) console.log(line);
   console.log(`grade: report at ${path.join(out, 'report.html')}`);
 }
 

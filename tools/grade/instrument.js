@@ -4,14 +4,46 @@
 // (WebGL contexts get preserveDrawingBuffer so the last frame can be read at any time; WebGPU
 // frames come from tools/webgpu-capture.js, which must be added first).
 export function instrumentScript() {
-  const g = { api: null, apis: [], draws: 0, shaderErrors: [], gpuErrors: [], adapter: undefined, wgsl: [], glsl: [] };
+  const g = { api: null, apis: [], draws: 0, shaderErrors: [], gpuErrors: [], adapter: undefined, wgsl: [], glsl: [], faces: { depthTest: false, culling: false, cullMode: null }, noCull: false, cullOn: false };
   Object.defineProperty(window, '__grade', { value: g, enumerable: false });
   const apiOf = { webgl: 'webgl', 'experimental-webgl': 'webgl', webgl2: 'webgl2', webgpu: 'webgpu' };
   const realGetContext = HTMLCanvasElement.prototype.getContext;
+  // a WebGL canvas keeps its drawing buffer (preserveDrawingBuffer) so the last frame can be read
+  // at any time; where the page did not ask for that, its depth and stencil buffers are cleared
+  // after each task that drew, as the browser clears them when it presents the frame (a page that
+  // never clears its depth buffer draws each frame into a cleared one, not into the last frame's)
+  const presented = new WeakMap(); // context → a present is queued
+  const present = (gl) => {
+    presented.set(gl, false);
+    if (gl.isContextLost()) return;
+    const fb = gl.getParameter(gl.FRAMEBUFFER_BINDING), scissor = gl.isEnabled(gl.SCISSOR_TEST);
+    const depth = gl.getParameter(gl.DEPTH_CLEAR_VALUE), stencil = gl.getParameter(gl.STENCIL_CLEAR_VALUE);
+    const depthMask = gl.getParameter(gl.DEPTH_WRITEMASK), stencilMask = gl.getParameter(gl.STENCIL_WRITEMASK);
+    if (fb) gl.bindFramebuffer(gl.FRAMEBUFFER, null);
+    if (scissor) gl.disable(gl.SCISSOR_TEST);
+    gl.depthMask(true);
+    gl.stencilMask(0xffffffff);
+    gl.clearDepth(1);
+    gl.clearStencil(0);
+    gl.clear(gl.DEPTH_BUFFER_BIT | gl.STENCIL_BUFFER_BIT);
+    gl.clearDepth(depth);
+    gl.clearStencil(stencil);
+    gl.depthMask(depthMask);
+    gl.stencilMask(stencilMask);
+    if (scissor) gl.enable(gl.SCISSOR_TEST);
+    if (fb) gl.bindFramebuffer(gl.FRAMEBUFFER, fb);
+  };
+  const drew = (gl) => {
+    if (!gl.__gradeClearsOnPresent || presented.get(gl)) return;
+    presented.set(gl, true);
+    queueMicrotask(() => present(gl));
+  };
   HTMLCanvasElement.prototype.getContext = function (type, attrs, ...rest) {
     const api = apiOf[type];
+    const clearsOnPresent = api && api !== 'webgpu' && !(attrs && attrs.preserveDrawingBuffer);
     if (api && api !== 'webgpu') attrs = { ...(attrs || {}), preserveDrawingBuffer: true };
     const ctx = realGetContext.call(this, type, attrs, ...rest);
+    if (ctx && clearsOnPresent && !('__gradeClearsOnPresent' in ctx)) Object.defineProperty(ctx, '__gradeClearsOnPresent', { value: true });
     if (api && ctx) {
       g.api = api;
       if (!g.apis.includes(api)) g.apis.push(api);
@@ -37,8 +69,34 @@ export function instrumentScript() {
         g.shaderErrors.push(`program does not link: ${(this.getProgramInfoLog(program) || '').trim()}`);
       }
     };
-    proto.drawArrays = function (...a) { g.draws++; return drawArrays.apply(this, a); };
-    proto.drawElements = function (...a) { g.draws++; return drawElements.apply(this, a); };
+    // the slide's WP04P2: the depth test and back-face culling enabled (recorded, never changed)
+    const { enable, disable, cullFace } = proto;
+    proto.enable = function (cap) {
+      if (cap === this.DEPTH_TEST) g.faces.depthTest = true;
+      if (cap === this.CULL_FACE) g.faces.culling = g.cullOn = true;
+      return enable.call(this, cap);
+    };
+    proto.disable = function (cap) {
+      if (cap === this.CULL_FACE) g.cullOn = false;
+      return disable.call(this, cap);
+    };
+    // the grader's experiment (g.noCull): the same frames drawn with culling off, so that with the
+    // depth test on the faces nearest the viewer show, whichever way the mesh is wound
+    const bare = (gl, draw, a) => {
+      if (!(g.noCull && g.cullOn)) return draw.apply(gl, a);
+      disable.call(gl, gl.CULL_FACE);
+      try {
+        return draw.apply(gl, a);
+      } finally {
+        enable.call(gl, gl.CULL_FACE);
+      }
+    };
+    proto.cullFace = function (mode) {
+      g.faces.cullMode = mode === this.FRONT ? 'front' : mode === this.BACK ? 'back' : 'front-and-back';
+      return cullFace.call(this, mode);
+    };
+    proto.drawArrays = function (...a) { g.draws++; drew(this); return bare(this, drawArrays, a); };
+    proto.drawElements = function (...a) { g.draws++; drew(this); return bare(this, drawElements, a); };
   }
   if (navigator.gpu && window.GPUAdapter) {
     const gpu = navigator.gpu, requestAdapter = gpu.requestAdapter.bind(gpu);
@@ -63,6 +121,14 @@ export function instrumentScript() {
       }, () => {});
       return module;
     };
+    const createRenderPipeline = GPUDevice.prototype.createRenderPipeline, createRenderPipelineAsync = GPUDevice.prototype.createRenderPipelineAsync;
+    const seePipeline = (desc) => {
+      const ds = desc && desc.depthStencil, prim = (desc && desc.primitive) || {};
+      if (ds && ds.depthCompare && ds.depthCompare !== 'always') g.faces.depthTest = true;
+      if (prim.cullMode && prim.cullMode !== 'none') { g.faces.culling = true; g.faces.cullMode = prim.cullMode; }
+    };
+    GPUDevice.prototype.createRenderPipeline = function (desc) { seePipeline(desc); return createRenderPipeline.call(this, desc); };
+    GPUDevice.prototype.createRenderPipelineAsync = function (desc) { seePipeline(desc); return createRenderPipelineAsync.call(this, desc); };
     const draw = GPURenderPassEncoder.prototype.draw, drawIndexed = GPURenderPassEncoder.prototype.drawIndexed;
     GPURenderPassEncoder.prototype.draw = function (...a) { g.draws++; return draw.apply(this, a); };
     GPURenderPassEncoder.prototype.drawIndexed = function (...a) { g.draws++; return drawIndexed.apply(this, a); };

@@ -25,23 +25,25 @@ export function analyse(img, rubric = {}) {
     if (colours.size < 3) colours.add(data[o] << 16 | data[o + 1] << 8 | data[o + 2]);
     if (Math.abs(data[o] - bg[0]) + Math.abs(data[o + 1] - bg[1]) + Math.abs(data[o + 2] - bg[2]) > tol) raw[p] = 1;
   }
+  openMask(raw, w, h, rubric.thinLine ?? 2);
   // the largest 4-connected component is the object (text or a second canvas element aside)
   const label = new Int32Array(n);
   let best = 0, bestLabel = 0, next = 0;
-  const stack = [];
+  const stack = new Int32Array(n);
   for (let p = 0; p < n; p++) {
     if (!raw[p] || label[p]) continue;
     next++;
-    let size = 0;
-    stack.push(p);
+    let size = 0, top = 0;
+    stack[top++] = p;
     label[p] = next;
-    while (stack.length) {
-      const q = stack.pop();
+    while (top) {
+      const q = stack[--top];
       size++;
-      const x = q % w, y = (q - x) / w;
-      for (const r of [x > 0 ? q - 1 : -1, x < w - 1 ? q + 1 : -1, y > 0 ? q - w : -1, y < h - 1 ? q + w : -1]) {
-        if (r >= 0 && raw[r] && !label[r]) { label[r] = next; stack.push(r); }
-      }
+      const x = q % w;
+      if (x > 0 && raw[q - 1] && !label[q - 1]) { label[q - 1] = next; stack[top++] = q - 1; }
+      if (x < w - 1 && raw[q + 1] && !label[q + 1]) { label[q + 1] = next; stack[top++] = q + 1; }
+      if (q >= w && raw[q - w] && !label[q - w]) { label[q - w] = next; stack[top++] = q - w; }
+      if (q + w < n && raw[q + w] && !label[q + w]) { label[q + w] = next; stack[top++] = q + w; }
     }
     if (size > best) { best = size; bestLabel = next; }
   }
@@ -78,6 +80,40 @@ export function analyse(img, rubric = {}) {
   });
   const circle = fitCircle(img, mask, bg, tol);
   return { ...result, blank: false, cx, cy, R, radius: mean, roundness, fill, touches, circle };
+}
+
+/**
+ * Thin lines drawn with the object (axes, a wireframe, a grid) are not the object: a morphological
+ * opening by a square of side 2r + 1 (erode, then dilate) removes what is thinner than that and
+ * leaves a solid disc as it was (its outline rounded at corners sharper than r pixels).
+ */
+export function openMask(mask, w, h, r) {
+  if (!r) return mask;
+  const tmp = new Uint8Array(mask.length);
+  // erode then dilate, each as a horizontal and a vertical pass of a 1-D min (max) over 2r + 1
+  const pass = (src, dst, horizontal, keep) => {
+    const [n1, n2] = horizontal ? [h, w] : [w, h];
+    for (let a = 0; a < n1; a++) {
+      for (let b = 0; b < n2; b++) {
+        let v = keep ? 1 : 0;
+        for (let d = -r; d <= r; d++) {
+          const bb = b + d;
+          const inside = bb >= 0 && bb < n2;
+          const px = inside ? (horizontal ? src[a * w + bb] : src[bb * w + a]) : 0;
+          if (keep ? !px : px) { v = keep ? 0 : 1; break; }
+        }
+        dst[horizontal ? a * w + b : b * w + a] = v;
+      }
+    }
+  };
+  pass(mask, tmp, true, true);
+  const eroded = new Uint8Array(mask.length);
+  pass(tmp, eroded, false, true);
+  pass(eroded, tmp, true, false);
+  const opened = new Uint8Array(mask.length);
+  pass(tmp, opened, false, false);
+  mask.set(opened);
+  return mask;
 }
 
 /**
@@ -224,7 +260,11 @@ export function diffuseFit(pts, rubric = {}) {
   for (const s of pts) s.y = luminance(s.c);
   const meanY = pts.reduce((a, s) => a + s.y, 0) / pts.length;
   const sst = pts.reduce((a, s) => a + (s.y - meanY) ** 2, 0);
-  let use = pts.map(() => true);
+  // a pixel clipped at white (a channel at 1) says only "at least this bright": left out of the fit
+  // while enough are left (a washed-out material), kept for the highlight above it
+  const unclipped = pts.map((s) => Math.max(...s.c) < 0.99);
+  let use = unclipped.filter(Boolean).length >= Math.max(20, 0.3 * pts.length) ? unclipped : pts.map(() => true);
+  const use0 = use;
   let best = null, sseAll = null;
   const highlightMargin = rubric.highlightMargin ?? 0.12;
   for (let pass = 0; pass < 2; pass++) {
@@ -243,7 +283,7 @@ export function diffuseFit(pts, rubric = {}) {
     }
     if (pass === 0) {
       sseAll = best.sse;
-      use = pts.map((s) => s.y - (best.a + best.b * Math.max(0, s.n[0] * best.l[0] + s.n[1] * best.l[1] + s.n[2] * best.l[2])) < highlightMargin * 0.7);
+      use = pts.map((s, i) => use0[i] && s.y - (best.a + best.b * Math.max(0, s.n[0] * best.l[0] + s.n[1] * best.l[1] + s.n[2] * best.l[2])) < highlightMargin * 0.7);
     }
   }
   const used = use.filter(Boolean).length;
@@ -251,15 +291,7 @@ export function diffuseFit(pts, rubric = {}) {
   const sstU = pts.reduce((a, s, i) => a + (use[i] ? (s.y - meanU) ** 2 : 0), 0);
   // the highlight: how far above the diffuse fit a pixel is, as a share of the headroom left to
   // white there (a highlight on a bright diffuse patch saturates at 1 and cannot rise far)
-  let peak = 0, bright = 0;
-  for (const s of pts) {
-    const pred = best.a + best.b * Math.max(0, s.n[0] * best.l[0] + s.n[1] * best.l[1] + s.n[2] * best.l[2]);
-    const r = s.y - pred;
-    if (r < (rubric.highlightMinRise ?? 0.06)) continue;
-    const share = Math.min(1, r / Math.max(0.1, 1 - pred));
-    if (share > peak) peak = share;
-    if (r > highlightMargin || share > 0.8) bright++;
-  }
+  const hl = highlightOf(pts, (n) => best.a + best.b * Math.max(0, n[0] * best.l[0] + n[1] * best.l[1] + n[2] * best.l[2]), rubric);
   // the same pixels under a two-sided model: a page lit on both sides (|n·w_i|) fits it better
   let twoSided = null, twoSidedAll = null;
   const all = pts.map(() => true);
@@ -272,7 +304,65 @@ export function diffuseFit(pts, rubric = {}) {
   // ... and both models over all pixels, none left out as a highlight
   const r2All = sst > 1e-9 ? 1 - sseAll / sst : 0, r2TwoSidedAll = sst > 1e-9 ? 1 - twoSidedAll.sse / sst : 0;
   return { r2: sstU > 1e-9 ? 1 - best.sse / sstU : 0, r2TwoSided: sstU > 1e-9 ? 1 - twoSided.sse / sstU : 0, r2All, r2TwoSidedAll, rms: Math.sqrt(best.sse / Math.max(1, used)), ambient: best.a, diffuse: best.b,
-    light: best.l, spread: Math.sqrt(sst / pts.length), highlightPeak: peak, highlightShare: bright / pts.length, fitted: used / pts.length };
+    light: best.l, spread: Math.sqrt(sst / pts.length), highlightPeak: hl.peak, highlightRise: hl.rise, highlightShare: hl.bright / pts.length, highlightNormal: hl.normal,
+    fitted: used / pts.length };
+}
+
+/**
+ * The highlight above a model of the diffuse brightness (`predict(n)`): the largest rise of a
+ * pixel over it as a share of the headroom to white there (`peak`: a highlight on a bright diffuse
+ * patch saturates at 1 and cannot rise far), the largest rise itself (`rise`), and how many pixels
+ * rise clearly (`bright`).
+ */
+export function highlightOf(pts, predict, rubric = {}) {
+  const margin = rubric.highlightMargin ?? 0.12;
+  let peak = 0, rise = 0, bright = 0;
+  const rises = new Float64Array(pts.length);
+  for (let i = 0; i < pts.length; i++) {
+    const s = pts[i];
+    const pred = predict(s.n);
+    const r = luminance(s.c) - pred;
+    rises[i] = r;
+    if (r < (rubric.highlightMinRise ?? 0.06)) continue;
+    const share = Math.min(1, r / Math.max(0.1, 1 - pred));
+    peak = Math.max(peak, share);
+    rise = Math.max(rise, r);
+    if (r > margin || share > 0.8) bright++;
+  }
+  // where it is: the mean normal of the pixels that rise most (within 70% of the largest rise)
+  let normal = null;
+  if (rise > 0) {
+    const m = [0, 0, 0];
+    for (let i = 0; i < pts.length; i++) if (rises[i] >= 0.7 * rise) for (let k = 0; k < 3; k++) m[k] += pts[i].n[k] * rises[i];
+    const len = Math.hypot(...m);
+    if (len > 0) normal = m.map((v) => v / len);
+  }
+  return { peak, rise, bright, normal };
+}
+
+/**
+ * How far (degrees) a highlight sits from where the Phong and Blinn-Phong models put it: at the
+ * normal halfway between the direction to the light and the direction to the viewer (w_h =
+ * normalize(w_i + w_o), w_o = +z toward the viewer; a perspective camera moves it a few degrees).
+ */
+export function highlightOffset(highlightNormal, light) {
+  if (!highlightNormal || !light) return null;
+  const h = [light[0], light[1], light[2] + 1];
+  const len = Math.hypot(...h);
+  if (len < 1e-6) return null; // the light straight behind: no half vector
+  const c = (highlightNormal[0] * h[0] + highlightNormal[1] * h[1] + highlightNormal[2] * h[2]) / len;
+  return (180 / Math.PI) * Math.acos(Math.max(-1, Math.min(1, c)));
+}
+
+/**
+ * Is there a specular highlight above a fit (diffuseFit's, or a point-light model's)? Either it
+ * rises far toward white (highlightPeak), or it stands clearly out of the fit's own noise: a
+ * rise of highlightClearRise or more, highlightNoise times the fit's RMS, over a few pixels (a
+ * small or tinted highlight on a clean fit; a page with no specular term has neither).
+ */
+export function highlightSeen(fit, rubric = {}) {
+  if (fit.highlightPeak >= (rubric.highlightPeak ?? 0.5)) return true;
+  return fit.highlightRise >= (rubric.highlightClearRise ?? 0.1) && fit.highlightRise >= (rubric.highlightNoise ?? 10) * fit.rms && fit.highlightShare > 0;
 }
 
 /**
@@ -282,6 +372,24 @@ export function diffuseFit(pts, rubric = {}) {
 export function silhouetteChange(a, b) {
   if (!a || !b || a.width !== b.width || a.height !== b.height || a.blank || b.blank) return a && b && a.blank && b.blank ? 0 : 1;
   return Math.max(Math.abs(a.area - b.area) / Math.max(a.area, b.area), Math.abs(a.roundness - b.roundness) / 3);
+}
+
+/**
+ * The pixels where two pictures' objects differ (one mask has it, the other not), and how many of
+ * them lie at the outline (farther than 0.9 of the radius from the centre): a finer or coarser
+ * mesh at a high level moves only a few outline pixels, too few to change the area or roundness.
+ */
+export function outlineFlips(a, b) {
+  if (!a || !b || a.blank || b.blank || a.width !== b.width || a.height !== b.height) return null;
+  let flips = 0, atOutline = 0;
+  const w = a.width, r = 0.9 * Math.min(a.radius, b.radius);
+  for (let p = 0; p < a.mask.length; p++) {
+    if (a.mask[p] === b.mask[p]) continue;
+    flips++;
+    const x = p % w, y = (p - x) / w;
+    if (Math.hypot(x + 0.5 - a.cx, y + 0.5 - a.cy) >= r) atOutline++;
+  }
+  return { flips, atOutline, area: b.area - a.area };
 }
 
 /** RMS difference of brightness between two pictures over the pixels inside both objects. */
@@ -378,7 +486,9 @@ export function pointLightFit(pts, rubric = {}) {
   const sst = pts.reduce((a, s, i) => a + (use[i] ? (s.y - mean) ** 2 : 0), 0);
   const brief = (f) => {
     const model = { a: f.a, b: f.b, l: f.l, d: f.d, falloff: f.falloff };
-    return { distance: f.d, light: f.l, r2: sst > 1e-12 ? 1 - f.sse / sst : 0, rms: Math.sqrt(f.sse / used), model, highlightPeak: highlightAbove(pts, model, rubric) };
+    const hl = highlightOf(pts, (n) => pointLightPredict(n, model), rubric);
+    return { distance: f.d, light: f.l, r2: sst > 1e-12 ? 1 - f.sse / sst : 0, rms: Math.sqrt(f.sse / used), model, highlightPeak: hl.peak, highlightRise: hl.rise,
+      highlightShare: hl.bright / pts.length, highlightNormal: hl.normal };
   };
   return { falloff: brief(inv), none: brief(none), fitted: used / pts.length };
 }
@@ -405,14 +515,22 @@ export function pointLightPredict(n, m) {
  * light's 1/r² bright spot is part of the model, not a highlight. `pts` are perspectiveSamples.
  */
 export function highlightAbove(pts, model, rubric = {}) {
-  let peak = 0;
-  for (const s of pts) {
-    const pred = pointLightPredict(s.n, model);
-    const r = luminance(s.c) - pred;
-    if (r < (rubric.highlightMinRise ?? 0.06)) continue;
-    peak = Math.max(peak, Math.min(1, r / Math.max(0.1, 1 - pred)));
-  }
-  return peak;
+  return highlightOf(pts, (n) => pointLightPredict(n, model), rubric).peak;
+}
+
+/** 'falloff' or 'none': the model a near point light fits well (R² ≥ diffuseR2, d ≤ pointLightNear), or null. */
+export function nearPointLight(pl, T) {
+  if (!pl) return null;
+  const good = ['falloff', 'none'].filter((k) => pl[k].r2 >= T.diffuseR2 && pl[k].distance <= T.pointLightNear);
+  return good.sort((a, b) => pl[b].r2 - pl[a].r2)[0] || null;
+}
+/** Model `a` ('falloff' or 'none') clearly beats model `b`: a near light, R² higher by pointLightGain, RMS lower by pointLightRmsRatio. */
+export function clearlyBetter(pl, a, b, T) {
+  return pl[a].r2 - pl[b].r2 >= T.pointLightGain && pl[a].distance <= T.pointLightNear && pl[b].rms >= T.pointLightRmsRatio * pl[a].rms;
+}
+/** A light clearly near and falling off as 1/r²: it fits, and better than without the fall-off. */
+export function clearlyNearFalloff(pl, T) {
+  return !!pl && clearlyBetter(pl, 'falloff', 'none', T) && pl.falloff.r2 >= T.diffuseR2;
 }
 
 /**

@@ -12,12 +12,19 @@ const PATTERNS = [
   /w0?4p0?([1-5])(?![0-9])/i,
   /part[-_ ]?0?([1-5])(?![0-9])/i,
   /(?:^|[^a-z])del[-_ ]?0?([1-5])(?![0-9])/i, // Danish: Del1, del_3 (not model1)
+  // the worksheet's number, a separator, the part's: W4-1, wks4_1, ws04.2, uge4-1, sheet4_1
+  /(?:^|[^a-z0-9])(?:w|ws|wk|wks|week|worksheet|sheet|lab|uge|ex|exercise)?0?4[-_.]0?([1-5])(?![0-9])/i,
   /(?:^|[^a-z0-9])p0?([1-5])(?![0-9])/i,
 ];
 export function partNumber(name) {
-  for (const re of PATTERNS) {
-    const m = re.exec(name);
-    if (m) return Number(m[1]);
+  const m = partName(name);
+  return m ? m.n : null;
+}
+/** { n, strength }: the part number and how exactly the name says it (0: WP04P1, the slide's own name; higher: looser). */
+function partName(name) {
+  for (let k = 0; k < PATTERNS.length; k++) {
+    const m = PATTERNS[k].exec(name);
+    if (m) return { n: Number(m[1]), strength: k };
   }
   return null;
 }
@@ -57,15 +64,16 @@ export function findParts(root, overrides = {}) {
   for (const rel of htmlFiles(root)) {
     const segments = rel.split(path.sep);
     const base = segments[segments.length - 1].replace(/\.html?$/i, '');
-    let n = partNumber(base), rank = 0;
-    for (let k = segments.length - 2; n === null && k >= 0; k--) {
-      n = partNumber(segments[k]);
+    let m = partName(base), rank = 0;
+    for (let k = segments.length - 2; m === null && k >= 0; k--) {
+      m = partName(segments[k]);
       rank = segments.length - 1 - k;
     }
-    if (n === null) continue;
-    const part = PARTS[n - 1];
-    // prefer the closest name, then index.html, then the shorter path
-    const key = [rank, /^index$/i.test(base) ? 0 : 1, rel.length];
+    if (m === null) continue;
+    const part = PARTS[m.n - 1];
+    // prefer the exact part name (WP04P1/index.html over p1.html elsewhere), then the closest
+    // name, then index.html, then the shorter path
+    const key = [m.strength, rank, /^index$/i.test(base) ? 0 : 1, rel.length];
     if (!score[part] || better(key, score[part])) {
       score[part] = key;
       found[part] = rel;

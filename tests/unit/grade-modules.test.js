@@ -1,0 +1,137 @@
+// The grader's modules without a browser: finding parts, stand-in files, sorting a control by its
+// effect on pictures, verdicts and reasons from findings, and a teacher's labels against verdicts.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { partNumber } from '../../tools/grade/parts.js';
+import { findStandIn, typeOf } from '../../tools/grade/standin.js';
+import { analyse, diffuseFit, samples, highlightSeen } from '../../tools/grade/judge.js';
+import { effectOf, nameRole, trialOrder } from '../../tools/grade/controls.js';
+import { checkList, verdictOf, reasonsOf } from '../../tools/grade/verdict.js';
+import { parseLabels, agreement, agreementText } from '../../tools/grade/labels.js';
+import { readFileSync } from 'node:fs';
+
+const rubric = JSON.parse(readFileSync(new URL('../../tools/grade/rubric.json', import.meta.url), 'utf8'));
+const T = rubric.thresholds;
+
+/** A w×w picture: a regular polygon of `sides` corners (a sphere's outline at some level) shaded by `shade(nx, ny, nz)`, on grey. */
+function polygon(sides, { w = 96, r = 36, shade = () => [0.8, 0.4, 0.2], turn = 0 } = {}) {
+  const data = new Uint8Array(w * w * 4);
+  const c = w / 2;
+  const apothem = r * Math.cos(Math.PI / sides);
+  for (let y = 0; y < w; y++) {
+    for (let x = 0; x < w; x++) {
+      const dx = x + 0.5 - c, dy = y + 0.5 - c;
+      const a = Math.atan2(dy, dx) - turn;
+      const sector = (2 * Math.PI) / sides;
+      const local = ((a % sector) + sector) % sector - sector / 2;
+      const inside = Math.hypot(dx, dy) * Math.cos(local) <= apothem;
+      const o = 4 * (y * w + x);
+      let col = [0.3, 0.3, 0.3];
+      if (inside) {
+        const nx = dx / r, ny = -dy / r, nz = Math.sqrt(Math.max(0, 1 - nx * nx - ny * ny));
+        col = shade(nx, ny, nz);
+      }
+      data.set([...col.map((v) => Math.round(255 * Math.min(1, Math.max(0, v)))), 255], o);
+    }
+  }
+  return { width: w, height: w, data };
+}
+const shotOf = (img) => ({ img, an: analyse(img, T) });
+
+test('parts are found by the worksheet and part numbers students write', () => {
+  for (const [name, n] of [['W4-1', 1], ['wks4_3', 3], ['ws4_part2', 2], ['02561_W04P5', 5], ['uge4-4', 4], ['sheet4_2', 2]]) assert.equal(partNumber(name), n, name);
+  for (const name of ['W4-6', 'wks4', 'Worksheet_4', 'Lab 4', 'model1', 'p12']) assert.equal(partNumber(name), null, name);
+});
+
+test('a file asked for in other letter case or one folder too far up is found inside the submission, once', () => {
+  const files = ['Common/MV.js', 'week4/part1/index.html', 'week4/part1/main.js', 'a/util.js', 'b/util.js'];
+  assert.equal(findStandIn('/common/mv.js', files), 'Common/MV.js');
+  assert.equal(findStandIn('/../Common/MV.js'.replace('/..', ''), files), 'Common/MV.js');
+  assert.equal(findStandIn('/x/y/Common/MV.js', files), 'Common/MV.js');
+  assert.equal(findStandIn('/util.js', files), null, 'two files of that name, none closer: no guess');
+  assert.equal(findStandIn('/a/util.js', files), 'a/util.js');
+  assert.equal(findStandIn('/nothing.js', files), null);
+  assert.equal(typeOf('x/shader.WGSL'), 'text/plain');
+  assert.equal(typeOf('x/page.html'), 'text/html');
+});
+
+test('a control is sorted by what it does to the picture: rounder, coarser, shading, moving', () => {
+  const coarse = shotOf(polygon(8)), fine = shotOf(polygon(48));
+  const darker = shotOf(polygon(48, { shade: () => [0.4, 0.2, 0.1] }));
+  assert.equal(effectOf({ before: coarse, after: fine, later: fine, wasMoving: false }, T), 'finer');
+  assert.equal(effectOf({ before: fine, after: coarse, later: coarse, wasMoving: false }, T), 'coarser');
+  assert.equal(effectOf({ before: fine, after: darker, later: darker, wasMoving: false }, T), 'shading');
+  assert.equal(effectOf({ before: fine, after: fine, later: fine, wasMoving: false }, T), 'none');
+  const turned = shotOf(polygon(8, { turn: 0.2 }));
+  assert.equal(effectOf({ before: coarse, after: coarse, later: turned, wasMoving: false }, T), 'starts');
+  assert.equal(effectOf({ before: coarse, after: turned, later: turned, wasMoving: true }, T), 'stops');
+  const blank = shotOf(polygon(8, { r: 0 }));
+  assert.equal(effectOf({ before: fine, after: blank, later: blank, wasMoving: false }, T), 'blank');
+});
+
+test('names only order the trials: the control named for a role first, unnamed ones next, others last', () => {
+  const P = rubric.controls;
+  const cs = [{ index: 0, type: 'button', id: 'subdiv-dec', text: '-' }, { index: 1, type: 'button', id: 'makeSquare', text: 'reduce' },
+    { index: 2, type: 'button', id: 'go', text: 'Toggle Orbit' }, { index: 3, type: 'button', id: 'b', text: 'Increment' }];
+  assert.deepEqual(trialOrder(cs, 'subdivide', P).map((c) => c.index), [0, 3, 1, 2]);
+  assert.equal(nameRole(cs[2], P), 'orbit');
+  assert.equal(nameRole({ index: 9, type: 'range', id: 'shininessSlider', text: 'Shininess' }, P), 's');
+});
+
+test('a small tinted highlight that stands out of a clean diffuse fit is a highlight; a plain diffuse sphere has none', () => {
+  const l = [0.4, 0.4, 0.82];
+  const diffuse = (nx, ny, nz) => 0.1 + 0.5 * Math.max(0, nx * l[0] + ny * l[1] + nz * l[2]);
+  const h = [l[0], l[1], l[2] + 1].map((v, k, a) => v / Math.hypot(...a));
+  const withSpot = (nx, ny, nz) => {
+    const d = diffuse(nx, ny, nz), s = 0.45 * Math.max(0, nx * h[0] + ny * h[1] + nz * h[2]) ** 200;
+    return [d + s * 0.1, d + s * 0.5, d + s * 0.3]; // tinted: its brightness rises less than white would
+  };
+  const plain = polygon(64, { shade: (...n) => [diffuse(...n), diffuse(...n), diffuse(...n)] });
+  const spot = polygon(64, { shade: withSpot });
+  const fp = diffuseFit(samples(plain, analyse(plain, T)), T), fs = diffuseFit(samples(spot, analyse(spot, T)), T);
+  assert.equal(highlightSeen(fp, T), false, `plain: rise ${fp.highlightRise}, peak ${fp.highlightPeak}`);
+  assert.equal(highlightSeen(fs, T), true, `spot: rise ${fs.highlightRise}, peak ${fs.highlightPeak}, rms ${fs.rms}`);
+  assert.ok(fs.highlightPeak < T.highlightPeak, 'the spot is one the peak share alone would miss');
+});
+
+test('verdicts from findings: a fail wins, then a review; a mistake costs what the rubric says; reasons worst first', () => {
+  const { checks, say } = checkList({ mistakeVerdict: 'review' });
+  say('pass', 'round');
+  assert.equal(verdictOf(checks), 'pass');
+  say('mistake', 'no highlight');
+  assert.deepEqual(checks.at(-1), { level: 'review', reason: 'no highlight' });
+  assert.equal(verdictOf(checks), 'review');
+  assert.equal(verdictOf(checks, 'drew nothing'), 'fail');
+  const strict = checkList({ mistakeVerdict: 'fail' });
+  strict.say('mistake', 'no highlight');
+  assert.equal(verdictOf(strict.checks), 'fail');
+  const reasons = reasonsOf({ checks, seconds: 40, busySeconds: 30, slowSeconds: 25, pageErrors: ['page error: x'] });
+  assert.deepEqual(reasons, ['REVIEW: no highlight', 'round', 'slow: 40 s to grade (30 s drawing frames) on a software renderer; given the time it needed', 'the page reported errors: page error: x']);
+});
+
+test("a teacher's labels against the verdicts: agreement, the label × verdict table, the disagreements", () => {
+  const labels = parseLabels('submission\tpart\tlabel\tapi\tcontrols\treasons\nann\tWP04P1\tcorrect\tWebGL\t\tfine\nann\tWP04P2\tpartial\tWebGL\t\tcolours (unsure)\n' +
+    'bob\tWP04P1\tbroken\tWebGL\t\tblank\nbob\tWP04P3\tcorrect\tWebGL\t\tok\n');
+  assert.equal(labels[1].unsure, true);
+  const subs = [{ name: 'ann', parts: [{ part: 'WP04P1', verdict: 'pass', reasons: [] }, { part: 'WP04P2', verdict: 'pass', reasons: ['ok'] }] },
+    { name: 'bob', parts: [{ part: 'WP04P1', verdict: 'fail', reasons: ['drew nothing'] }] }];
+  const a = agreement(labels, subs);
+  assert.equal(a.agree, 2);
+  assert.equal(a.total, 4);
+  assert.deepEqual([a.correctPassed, a.correct, a.partialPassed, a.partial, a.brokenPassed, a.broken], [1, 2, 1, 1, 0, 1]);
+  assert.equal(a.confusion.partial.pass, 1);
+  assert.equal(a.confusion.correct['not graded'], 1);
+  assert.deepEqual(a.missing, ['bob WP04P3']);
+  const text = agreementText(a).join('\n');
+  assert.match(text, /2 of 4 labelled parts/);
+  assert.match(text, /ann WP04P2: labelled partial \(unsure\), graded pass/);
+  assert.throws(() => parseLabels('a\tb\n1\t2\n'), /submission, part and label/);
+  assert.throws(() => parseLabels('submission\tpart\tlabel\nx\tWP04P1\tgood\n'), /line 2: label "good"/);
+});
+
+test('at a high level a level change moves only outline pixels: still finer or coarser, not shading', () => {
+  const l5 = shotOf(polygon(32)), l6 = shotOf(polygon(64)); // 8 outline pixels apart
+  assert.ok(Math.abs(l5.an.area - l6.an.area) / l6.an.area < 0.003, 'too small a change for the area alone');
+  assert.equal(effectOf({ before: l5, after: l6, later: l6, wasMoving: false }, T), 'finer');
+  assert.equal(effectOf({ before: l6, after: l5, later: l5, wasMoving: false }, T), 'coarser');
+});

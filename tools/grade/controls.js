@@ -1,0 +1,81 @@
+// Finding a page's controls as a teacher does: by what they do to the picture. A control's
+// names (id, name, label, the words beside it) only order the trials, break ties (which
+// material slider is kd) and name it in the report. Plain data: the trials' pictures are judged
+// by judge.js; driving the page is drive.js's.
+import { silhouetteChange, pictureChange, outlineFlips } from './judge.js';
+
+const re = (s) => new RegExp(s, 'i');
+/** An id or name read as words too: kdSlider → kd Slider, slider_kd → slider kd. */
+const words = (s) => s && s.replace(/([a-z])([A-Z])/g, '$1 $2').replace(/[_-]+/g, ' ');
+/** What a control carries to be read by: id, name, visible text and labels. */
+export function labelsOf(c) {
+  return [c.id, words(c.id), c.name, words(c.name), c.text].filter(Boolean);
+}
+/** How a control is named in the report: its type and the words it carries. */
+export function describe(c) {
+  const said = [c.text, c.id && `#${c.id}`, c.name && c.name !== c.id && `name=${c.name}`].filter(Boolean).join(' ').slice(0, 60);
+  return `${c.type} "${said}"`;
+}
+
+export const CLICKABLE = ['button', 'submit', 'a', 'div', 'span', 'image'];
+export const isClickable = (c) => CLICKABLE.includes(c.type) || c.type === 'checkbox';
+export const isValued = (c) => ['range', 'number', 'select'].includes(c.type);
+
+/** Does the control's name say `role` (a rubric pattern key)? */
+export function named(c, role, patterns) {
+  return labelsOf(c).some((t) => re(patterns[role]).test(t));
+}
+
+/**
+ * The role a control's names suggest, or null: the clickables' (coarsen, subdivide, orbit,
+ * depth, cull, clockwise), the value controls' (levelSlider, kd, ks, s, Le, La). "Decrement
+ * subdivision" names the level it lowers: coarsen is read before subdivide.
+ */
+export function nameRole(c, patterns) {
+  const is = (role) => named(c, role, patterns);
+  if (isClickable(c) && c.type !== 'checkbox') {
+    for (const role of ['coarsen', 'subdivide', 'orbit', 'depth', 'cull', 'clockwise']) if (is(role)) return role;
+  } else if (c.type === 'checkbox') {
+    for (const role of ['orbit', 'depth', 'clockwise', 'cull']) if (is(role)) return role;
+  } else if (isValued(c)) {
+    for (const role of ['levelSlider', 'kd', 'ks', 's', 'Le', 'La']) if (is(role)) return role;
+  }
+  return null;
+}
+
+/**
+ * The effect of one action on the picture, from the picture before, just after, and a moment
+ * later (analyses from judge.analyse): 'finer' or 'coarser' (the silhouette gets rounder or
+ * coarser: the level), 'starts' or 'stops' (the picture starts or stops moving: the orbit),
+ * 'shading' (the picture changes inside an unchanged silhouette: material, light or the faces
+ * drawn), 'blank' (nothing drawn after it), 'none'.
+ */
+export function effectOf({ before, after, later, wasMoving }, T = {}) {
+  const moving = pictureChange(after.img, later.img) > 0.001;
+  if (!wasMoving && moving) return 'starts';
+  if (wasMoving && !moving) return 'stops';
+  if (wasMoving) return 'none'; // whatever else it did cannot be told while the picture moves
+  if (after.an.blank && !before.an.blank) return 'blank';
+  if (before.an.blank || after.an.blank) return 'none';
+  const sil = silhouetteChange(before.an, after.an);
+  if (sil > (T.silhouetteSettled ?? 0.003)) {
+    // a finer mesh inscribed in the sphere covers more of its disc, and its outline is rounder
+    const rounder = before.an.roundness - after.an.roundness, larger = (after.an.area - before.an.area) / before.an.area;
+    if (Math.abs(larger) > 0.002) return larger > 0 ? 'finer' : 'coarser';
+    return rounder > 0 ? 'finer' : 'coarser';
+  }
+  // at a high level: a few outline pixels flip, all of them at the outline, and the area moves with them
+  const f = outlineFlips(before.an, after.an);
+  if (f && f.flips >= 3 && f.atOutline === f.flips && Math.abs(f.area) >= 2) return f.area > 0 ? 'finer' : 'coarser';
+  return pictureChange(before.img, after.img) > 0.0005 ? 'shading' : 'none';
+}
+
+/**
+ * The order a teacher tries controls in for a role: those named for it first, then those named
+ * for nothing, then the rest (a name can be wrong: "makeSquare" coarsens a sphere).
+ */
+export function trialOrder(controls, role, patterns, taken = new Set()) {
+  const free = controls.filter((c) => !taken.has(c.index));
+  const rank = (c) => (named(c, role, patterns) ? 0 : nameRole(c, patterns) === null ? 1 : 2);
+  return free.map((c, k) => [rank(c), k, c]).sort((a, b) => a[0] - b[0] || a[1] - b[1]).map((x) => x[2]);
+}

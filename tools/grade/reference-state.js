@@ -1,0 +1,39 @@
+// Our reference part drawn beside a student's: at the student's canvas size, lit from the light
+// the judge fitted to the student's picture. Plain data: the query for our page and what
+// report.json says of the state it was drawn at.
+import { nearPointLight } from './judge.js';
+
+const fmt = (x, d) => Number(x).toFixed(d);
+
+/**
+ * Our reference's light, as the judge fitted the student's (P3–P5): the fitted direction toward the
+ * light is in view space, and our page at angle 0 has view = world (eye on +z), so a directional
+ * light shines along −l; a near point light with 1/r² sits at d·l (our sphere is a unit sphere,
+ * as the fit's). The level stays ours for the canvas size: a student's own level is not known.
+ */
+export function referenceLight(numbers, T) {
+  const fit = numbers && numbers.fit;
+  if (!fit || !fit.light) return {};
+  const pl = numbers.pointLight;
+  const xyz = (v) => ({ lx: fmt(v[0], 3), ly: fmt(v[1], 3), lz: fmt(v[2], 3) });
+  if (pl && nearPointLight(pl, T) === 'falloff') return { light: 'point', ...xyz(pl.falloff.light.map((v) => v * pl.falloff.distance)) };
+  return { light: 'directional', ...xyz(fit.light.map((v) => -v)) };
+}
+
+/** The query our part is opened with: the student's canvas size, no orbit, the fitted light, and the rubric's own extras. */
+export function referenceQuery({ width, height }, numbers, T, extra = {}) {
+  const fitted = referenceLight(numbers, T);
+  return new URLSearchParams({ api: 'webgl2', size: width, height, orbit: 0, ...(fitted.light ? { angle: 0 } : {}), ...fitted, ...extra });
+}
+
+/** The state our reference was drawn at, for report.json: its light (and where it came from) and level. */
+export function referenceStateOf(query, scene) {
+  const q = Object.fromEntries(query.entries());
+  return {
+    level: scene && Number.isFinite(scene.level) ? scene.level : null,
+    levelFrom: 'ours: the least level that looks round and shades within tolerance at this canvas size (the student\'s level is not known)',
+    light: q.light ? { kind: q.light, xyz: [q.lx, q.ly, q.lz].map(Number) } : null,
+    lightFrom: q.light ? 'the light direction (or near point light) the judge fitted to the judged picture, in our view at angle 0' : 'none (no lit step)',
+    query: query.toString(),
+  };
+}

@@ -1,0 +1,67 @@
+// Serving one submission to the grader's browser: its own files at an origin of their own,
+// through Playwright's request routing, so nothing else is reachable. Other hosts are blocked and
+// listed; a file not where the page asks is looked for by findStandIn (standin.js) and said.
+import { readFileSync, readdirSync, statSync } from 'node:fs';
+import path from 'node:path';
+import { findStandIn, typeOf } from './standin.js';
+
+/** Every file under `root` (relative paths, '/'-separated), up to a depth and a count. */
+export function filesUnder(root, dir = '', out = [], depth = 0) {
+  if (depth > 8 || out.length > 5000) return out;
+  let names;
+  try {
+    names = readdirSync(path.join(root, dir), { withFileTypes: true });
+  } catch {
+    return out;
+  }
+  for (const d of names) {
+    if (d.name.startsWith('.') || d.name === 'node_modules') continue;
+    const rel = dir ? `${dir}/${d.name}` : d.name;
+    if (d.isDirectory()) filesUnder(root, rel, out, depth + 1);
+    else out.push(rel);
+  }
+  return out;
+}
+
+/**
+ * Serves `root` at `origin` in a Playwright browser context. `log` gets { blocked, errors, notes }
+ * pushed to: requests to other hosts and outside the submission, missing files, stand-ins.
+ */
+export async function serveSubmission(context, root, origin, log) {
+  let files = null; // the submission's files, listed on the first miss
+  await context.route('**/*', async (route) => {
+    const url = new URL(route.request().url());
+    if (url.origin !== origin) {
+      const kind = route.request().isNavigationRequest() ? 'navigation or popup' : 'request';
+      if (!url.protocol.startsWith('data') && !url.protocol.startsWith('blob')) log.blocked.push(`${kind}: ${url.href}`);
+      return route.abort('blockedbyclient');
+    }
+    let rel;
+    try {
+      rel = decodeURIComponent(url.pathname);
+    } catch {
+      return route.fulfill({ status: 400, body: 'bad path' });
+    }
+    let file = path.resolve(root, `.${rel}`);
+    if (file !== root && !file.startsWith(root + path.sep)) {
+      log.blocked.push(`outside the submission: ${rel}`);
+      return route.fulfill({ status: 403, body: 'outside the submission' });
+    }
+    const st = statSync(file, { throwIfNoEntry: false });
+    if (st && st.isDirectory()) file = path.join(file, 'index.html');
+    let body;
+    try {
+      body = readFileSync(file);
+    } catch {
+      const standIn = findStandIn(rel, () => (files ??= filesUnder(root)));
+      if (!standIn) {
+        log.errors.push(`missing file: ${rel}`);
+        return route.fulfill({ status: 404, body: 'not found' });
+      }
+      file = path.join(root, standIn);
+      body = readFileSync(file);
+      log.notes.push(`served ${standIn} for ${rel}, which is not in the submission as written (letter case, or a folder above the submission)`);
+    }
+    return route.fulfill({ status: 200, body, contentType: typeOf(file) });
+  });
+}

@@ -1,0 +1,34 @@
+// Verdicts and reasons: the checks a part's judging said (each { level, reason }) become one
+// verdict (pass, review, fail) and the reasons a teacher reads, worst first. Plain data.
+
+/**
+ * A list of checks with the rubric's cost of a mistake: say('pass' | 'review' | 'fail' |
+ * 'mistake', reason). A 'mistake' (the page draws but misses a point of the slide's step) costs
+ * the rubric's mistakeVerdict: review by default (a careful reader calls such a part partial).
+ */
+export function checkList(rubric) {
+  const checks = [];
+  const say = (level, reason) => checks.push({ level: level === 'mistake' ? rubric.mistakeVerdict || 'review' : level, reason });
+  return { checks, say };
+}
+
+/** fail if anything failed (or the part could not be judged: `fail`), else review if any check asks for it, else pass. */
+export function verdictOf(checks, fail) {
+  if (fail) return 'fail';
+  if (checks.some((c) => c.level === 'fail')) return 'fail';
+  if (checks.some((c) => c.level === 'review')) return 'review';
+  return 'pass';
+}
+
+/**
+ * The reasons in the order a teacher reads them: why it could not be judged, then FAIL: …,
+ * REVIEW: …, then what passed; then slowness and page errors, which change no verdict.
+ */
+export function reasonsOf({ fail, checks = [], seconds = 0, busySeconds = 0, slowSeconds = Infinity, pageErrors = [] }) {
+  const reasons = [];
+  if (fail) reasons.push(fail);
+  for (const lvl of ['fail', 'review', 'pass']) for (const c of checks) if (c.level === lvl) reasons.push(lvl === 'pass' ? c.reason : `${lvl.toUpperCase()}: ${c.reason}`);
+  if (seconds > slowSeconds) reasons.push(`slow: ${seconds.toFixed(0)} s to grade (${busySeconds.toFixed(0)} s drawing frames) on a software renderer; given the time it needed`);
+  if (!fail && pageErrors.length) reasons.push(`the page reported errors: ${pageErrors[0]}`);
+  return reasons;
+}
