@@ -3,18 +3,13 @@
 // A folder gives its index.html; a file not where the page asked (other letter case, a folder too
 // far up) is found by findStandIn and said in the notes; HTML gets the frame's instrumentation as
 // its first script; JavaScript gets the loop guard. Nothing else is ever read.
-import { findStandIn } from '../tools/grade/standin.js';
+import { findStandIn, typeOf } from '../tools/grade/standin.js';
 import { guardInlineScripts, guardLoops } from './guard.js';
 
 /** The URL path under which the frames live: BASE + session + '/' + the hand-in's own path. */
 export const BASE = '/check/run/';
 /** The instrumentation's own path in a session (a name no hand-in uses). */
 export const FRAME_SCRIPT = '__check_frame__.js';
-
-const TYPES = { html: 'text/html', htm: 'text/html', js: 'text/javascript', mjs: 'text/javascript', css: 'text/css',
-  json: 'application/json', png: 'image/png', jpg: 'image/jpeg', jpeg: 'image/jpeg', gif: 'image/gif', svg: 'image/svg+xml',
-  webp: 'image/webp', vert: 'text/plain', frag: 'text/plain', glsl: 'text/plain', txt: 'text/plain', wgsl: 'text/plain' };
-export const typeOf = (file) => TYPES[(/\.([^./]+)$/.exec(file) || [])[1]?.toLowerCase()] || 'application/octet-stream';
 
 /**
  * The path inside the hand-in that a URL path of a session's frame asks for. A page that went one
@@ -78,7 +73,7 @@ export async function answer(source, rel, { frameScript, session }) {
   let note;
   let blob = await source.read(file);
   if (!blob) {
-    const standIn = findStandIn(file, source.paths);
+    const standIn = findStandIn(rel, source.paths);
     if (!standIn) return { status: 404, type: 'text/plain', body: 'not found', missing: `/${rel}` };
     note = `served ${standIn} for /${rel}, which is not in the submission as written (letter case, or a folder above the submission)`;
     file = standIn;

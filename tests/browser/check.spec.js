@@ -71,7 +71,9 @@ test('bad input gets a clear message and the page stays usable; a zip is unpacke
   make('pages/Part1/notes.txt', 'x');
   make('pages/hello.html', '<!doctype html><title>hello</title><p>hello');
   // a part that never returns, alone: stopped, said so, and the page goes on
-  make('hangs/Part1/index.html', '<!doctype html><title>p1</title><canvas width=64 height=64></canvas><script>for (;;) {}</script>');
+  // ... which also asks for a file of another host and one of our site outside the hand-in: blocked, not served
+  make('hangs/Part1/index.html', '<!doctype html><title>p1</title><canvas width=64 height=64></canvas>' +
+    '<script src="https://cdn.example.com/lib.js"></script><script src="/tools/grade/rubric.json"></script><script>for (;;) {}</script>');
   const message = () => page.locator('#messages').innerText();
 
   await page.goto('/check/');
@@ -96,6 +98,8 @@ test('bad input gets a clear message and the page stays usable; a zip is unpacke
   await expect(page.locator('#card-WP04P1 .slide')).toContainText('Draw a solid sphere');
   await expect(page.locator('#card-WP04P1').getByRole('link', { name: /Our WP04P1/ })).toHaveAttribute('href', '../WP04P1/');
   await expect(page.locator('#messages')).toContainText('no WebGPU');
+  await expect(page.locator('#card-WP04P1')).toContainText('request: https://cdn.example.com/lib.js');
+  await expect(page.locator('#card-WP04P1')).toContainText('missing file: /tools/grade/rubric.json');
 
   // a browser that refuses service workers
   const blocked = await page.context().browser().newContext({ serviceWorkers: 'block' });
