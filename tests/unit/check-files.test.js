@@ -48,3 +48,17 @@ test('the frame script goes first; every loop gets the guard, shaders and other 
   const html = '<script type="x-shader/x-vertex">for (int i = 0; i < 3; i++) {}</script><script>do { i++ } while (i < 3)</script>';
   assert.equal(guardInlineScripts(html), '<script type="x-shader/x-vertex">for (int i = 0; i < 3; i++) {}</script><script>do {__checkLoop(); i++ } while (i < 3)</script>');
 });
+
+test('a review or a fail names the slide sentence it misses', async () => {
+  const { missedSlides } = await import('../../check/slides.js');
+  const slide = (reason) => missedSlides([reason]).map((m) => m.slide.split(' ').slice(0, 4).join(' '))[0];
+  assert.equal(slide('REVIEW: the colours are not 0.5·n + 0.5: 2c − 1 is not a unit vector'), 'Get the normal from');
+  assert.equal(slide('REVIEW: the orbit does not show in the shading: the light moves with the camera (light and normals in different spaces?)'), 'Add a tick function');
+  assert.equal(slide('REVIEW: 2 slider(s) update the picture only on the change event, not while sliding'), 'Use the input event');
+  assert.equal(slide('drew nothing: the canvas is one colour, no draw call'), 'Draw a solid sphere');
+  assert.equal(slide('REVIEW: the highlight follows the triangles at a coarse level (RMS 0.043 from the finest): shading is per vertex, not per fragment'), 'We implement it by');
+  assert.equal(slide('REVIEW: nothing found that makes the sphere finer: 2 controls tried'), 'Insert buttons for subdividing');
+  assert.equal(slide('REVIEW: back faces show through the front (normals do not vary smoothly): depth test or culling missing'), 'Now, enable the depth');
+  assert.equal(slide('REVIEW: no specular highlight: nothing brighter than the diffuse fit'), 'Update your reflection model');
+  assert.deepEqual(missedSlides(['a round closed sphere (radius 80 px)']), []); // what passed names nothing
+});
