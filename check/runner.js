@@ -115,6 +115,13 @@ export async function drawReference({ result, rubric, session, stage }) {
     await session.idle(500, 5000);
     const fp = framePage(frame, session.log);
     await fp.tick(500, 30);
+    // our pages publish window.scene after each frame drawn: wait for one (a loaded machine is slow)
+    const drawn = () => frame.contentWindow.scene && frame.contentWindow.scene.frame >= 1;
+    for (const until = performance.now() + 1000 * (rubric.firstFrameSeconds ?? 10); !drawn() && performance.now() < until;) {
+      await sleep(100);
+      await fp.tick(16);
+    }
+    if (!drawn()) return null;
     const img = await fp.snap();
     return img && img.width === judged.width && img.height === judged.height ? img : null;
   } finally {
