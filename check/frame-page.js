@@ -74,7 +74,7 @@ export function framePage(frame, log) {
       const W = win(), doc = W.document;
       const target = doc.activeElement && doc.activeElement !== doc.documentElement ? doc.activeElement : doc.body || doc.documentElement;
       const code = /^[a-z]$/i.test(key) ? `Key${key.toUpperCase()}` : /^[0-9]$/.test(key) ? `Digit${key}` : { '+': 'Equal', '-': 'Minus', ' ': 'Space' }[key] || key;
-      const keyCode = { ArrowLeft: 37, ArrowUp: 38, ArrowRight: 39, ArrowDown: 40, '+': 187, '-': 189, ' ': 32, Enter: 13, Escape: 27 }[key] ?? key.toUpperCase().charCodeAt(0);
+      const keyCode = { ArrowLeft: 37, ArrowUp: 38, ArrowRight: 39, ArrowDown: 40, PageUp: 33, PageDown: 34, '+': 187, '-': 189, ' ': 32, Enter: 13, Escape: 27 }[key] ?? key.toUpperCase().charCodeAt(0);
       const init = { key, code, keyCode, which: keyCode, bubbles: true, cancelable: true, composed: true, view: W };
       target.dispatchEvent(new W.KeyboardEvent('keydown', init));
       if (key.length === 1) target.dispatchEvent(new W.KeyboardEvent('keypress', { ...init, charCode: key.charCodeAt(0), keyCode: key.charCodeAt(0), which: key.charCodeAt(0) }));
