@@ -1,6 +1,6 @@
 // The grader's page interface (what tools/grade/drive.js drives) on a same-origin iframe of the
 // check page, as tools/grade/playwright-page.js is on a Playwright page: state, snap, controls,
-// click, setValue, press, tick, sources, errors. The frame's scripts were put in place by
+// click, setValue, press, tick, setNoCull, sources, errors. The frame's scripts were put in place by
 // check/serve.js: window.__grade (tools/grade/instrument.js), window.__webgpuCapture
 // (tools/webgpu-capture.js), window.__checkClock (check/frame-clock.js), window.__checkWatch
 // (check/frame-watch.js).
@@ -34,8 +34,7 @@ export function framePage(frame, log) {
 
   return {
     async state() {
-      const s = g(), cap = win().__webgpuCapture;
-      return { api: s.api, frames: cap ? cap.frames : 0, adapter: s.adapter, draws: s.draws, shaderErrors: [...s.shaderErrors], gpuErrors: [...s.gpuErrors] };
+      return plain(g().state());
     },
     async snap() {
       await settle();
@@ -86,6 +85,10 @@ export function framePage(frame, log) {
       if (ms > 16 * frames + 8) await clock.fastForward(ms - 16 * frames);
       await clock.runFor(Math.min(ms, 16 * frames));
       await settle();
+    },
+    /** The grader's experiment: WebGL draws with back-face culling off (true) or as the page set it (false). */
+    async setNoCull(on) {
+      g().noCull = on;
     },
     async sources() {
       return { glsl: [...g().glsl], wgsl: [...g().wgsl] };
