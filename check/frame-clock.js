@@ -45,6 +45,7 @@ export function frameClockScript(start) {
       if (t.type === 'interval') t.callAt += t.delay || 1;
       else timers.delete(t.id);
       duringTick = true;
+      if (window.__checkWatch) window.__checkWatch.newTask(); // check/frame-watch.js: a loop is timed from here
       try {
         if (typeof t.func === 'string') (0, eval)(t.func);
         else if (t.type === 'frame') t.func(ticks);

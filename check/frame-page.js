@@ -30,6 +30,7 @@ export function framePage(frame, log) {
     const s = win().__webgpuCapture;
     for (let k = 0; s && k < 100 && s.pending; k++) await s.pending;
   };
+  const newTask = () => { const w = watch(); if (w.newTask) w.newTask(); }; // check/frame-watch.js's loop guard
   const control = (c) => win().document.querySelector(`[data-grade-control="${c.index}"]`);
 
   return {
@@ -46,6 +47,7 @@ export function framePage(frame, log) {
     },
     /** A click as a user's: pointer and mouse down and up at the control's centre, then click. { ok, why }. */
     async click(c) {
+      newTask();
       const el = control(c);
       if (!el) return { ok: false, why: 'it is no longer on the page' };
       if (el.disabled) return { ok: false, why: 'it is disabled' };
@@ -66,10 +68,12 @@ export function framePage(frame, log) {
       return { ok: true };
     },
     async setValue(c, value, events) {
+      newTask();
       g().setValue(c.index, value, events);
     },
     /** keydown, keypress (a character), keyup of `key` at the focused element (or the body). */
     async press(key) {
+      newTask();
       const W = win(), doc = W.document;
       const target = doc.activeElement && doc.activeElement !== doc.documentElement ? doc.activeElement : doc.body || doc.documentElement;
       const code = /^[a-z]$/i.test(key) ? `Key${key.toUpperCase()}` : /^[0-9]$/.test(key) ? `Digit${key}` : { '+': 'Equal', '-': 'Minus', ' ': 'Space' }[key] || key;

@@ -5,8 +5,9 @@
 //
 // A script that never returns would freeze the check page too (a same-origin frame shares its
 // thread), so every loop in the part's scripts calls __checkLoop() (check/guard.js puts the call
-// in): a loop still running `loopSeconds` after the frame last had a free moment throws, the
-// frame is marked hung, and every later loop throws at once.
+// in): a loop still running `loopSeconds` after its task began (the frame last had a free moment,
+// or the check page started a task there: newTask) throws, the frame is marked hung, and every
+// later loop throws at once.
 
 /** The init script. options: { loopSeconds }. Publishes window.__checkWatch. */
 export function frameWatchScript(options) {
@@ -38,6 +39,9 @@ export function frameWatchScript(options) {
   let beat = 0, seen = -1, taskStart = 0, calls = 0;
   const tick = () => { beat++; realSetTimeout(tick, 100); };
   tick();
+  // a new task begun by the check page (a timer or frame its clock runs, a click, a key, a slider
+  // step): a loop there is timed from here, not from before the check page's own work in between
+  watch.newTask = () => { beat++; };
   const limit = 1000 * (options.loopSeconds || 20);
   Object.defineProperty(window, '__checkLoop', {
     enumerable: false,
