@@ -71,6 +71,7 @@ export async function checkPart({ part, page, session, rubric, stage, progress =
       graded.fail = fp.hung() ? `${notLoaded}: ${fp.hung()}` : notLoaded;
     } else {
       await session.idle(500, 5000);
+      frame.contentWindow.__checkWatch.setLoopSeconds(rubric.timeoutSeconds ?? 90);
       let timer;
       const bound = new Promise((resolve) => { timer = setTimeout(() => resolve('timeout'), (rubric.timeoutSeconds ?? 90) * 1000); });
       const grading = gradePart(fp, { part, rubric, progress });
