@@ -145,6 +145,11 @@ export function instrumentScript() {
     return add.call(this, type, ...rest);
   };
 
+  /** What the page interface's state() gives the grading core (playwright-page.js and the check page's
+   * frame driver both read it here, so they cannot drift apart). */
+  g.state = () => ({ api: g.api, frames: window.__webgpuCapture ? window.__webgpuCapture.frames : 0, adapter: g.adapter, draws: g.draws,
+    shaderErrors: [...g.shaderErrors], gpuErrors: [...g.gpuErrors], faces: { ...g.faces } });
+
   /** The target canvas (the largest visible one) as base64 RGBA, composited over white. */
   g.pixels = () => {
     const all = [...document.querySelectorAll('canvas')].filter((c) => c.width > 0 && c.height > 0 && c.getClientRects().length);

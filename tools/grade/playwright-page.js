@@ -46,9 +46,7 @@ export async function openPart(browser, { root, rel, origin, query = '', loadSec
 export function playwrightDriver(page, log) {
   const driver = {
     /** What the instrumentation saw: the API, WebGPU frames, the adapter, draw calls, shader and GPU errors. */
-    state: () => page.evaluate(() => ({ api: window.__grade.api, frames: window.__webgpuCapture ? window.__webgpuCapture.frames : 0,
-      adapter: window.__grade.adapter, draws: window.__grade.draws, shaderErrors: window.__grade.shaderErrors, gpuErrors: window.__grade.gpuErrors,
-      faces: window.__grade.faces })),
+    state: () => page.evaluate(() => window.__grade.state()),
     /** The canvas as { width, height, api, data } (RGBA bytes), after the last WebGPU frame is copied; or null. */
     async snap() {
       await readWebGPUFrame(page);

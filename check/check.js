@@ -1,0 +1,143 @@
+// The self-check page: a student picks or drops a worksheet folder (or its .zip) and sees, part
+// by part, what `npm run grade` would say: the verdict, the reasons, the pictures, what was
+// clicked, and for a review or a fail the slide's sentence the part misses. The files stay in the
+// browser (check/files.js reads them, check/host.js serves them to the frames through
+// check/sw.js); each part is checked by check/runner.js with the grader's own modules. When all
+// parts have their verdicts: window.check = { done: true, parts: [{ part, verdict, reasons, api }] }.
+import { CheckInputError, entriesFromDrop, entriesFromInput, handInFrom, partsOfHandIn } from './files.js';
+import { openSession, startHost, unsupported } from './host.js';
+import { checkPart, drawReference, frameScript } from './runner.js';
+import { handInSource, siteSource } from './serve.js';
+import { missedSlides, stepLink } from './slides.js';
+import { PARTS } from '../tools/grade/part-names.js';
+
+const $ = (id) => document.getElementById(id);
+const el = (tag, props = {}, ...children) => {
+  const e = Object.assign(document.createElement(tag), props);
+  e.append(...children.filter((c) => c !== null && c !== undefined));
+  return e;
+};
+window.check = { done: false, parts: [] };
+let busy = false;
+// ?reference=0 leaves out our step beside each part (a quicker run, for comparing many hand-ins)
+const REFERENCE = new URLSearchParams(location.search).get('reference') !== '0';
+
+function say(text, kind = 'error') {
+  $('messages').replaceChildren(el('p', { className: kind, textContent: text }));
+}
+
+/** Whether a WebGPU adapter is there (the API alone is not enough: headless and some GPUs give none). */
+async function hasWebGPU() {
+  try {
+    return !!(navigator.gpu && (await navigator.gpu.requestAdapter()));
+  } catch {
+    return false;
+  }
+}
+
+/** An image { width, height, data } as a PNG data URL. */
+function pictureURL(img) {
+  const c = el('canvas', { width: img.width, height: img.height });
+  c.getContext('2d').putImageData(new ImageData(new Uint8ClampedArray(img.data.buffer, img.data.byteOffset, img.data.byteLength), img.width, img.height), 0, 0);
+  return c.toDataURL('image/png');
+}
+
+const CAPTIONS = { first: 'first frame', coarse: 'a coarse level', judged: 'judged', leastS: 's at its least', reference: 'our step, same size and light' };
+
+function card(r, index, total, file) {
+  const slides = r.verdict === 'pass' ? [] : missedSlides(r.reasons || []);
+  const list = (title, items) => (items && items.length ? el('details', {}, el('summary', { textContent: `${title} (${items.length})` }),
+    el('ul', {}, ...items.map((t) => el('li', { textContent: t })))) : null);
+  const images = Object.entries(r.images || {}).filter(([k, im]) => CAPTIONS[k] && im && im.data);
+  return el('article', { className: `card ${r.verdict}`, id: `card-${r.part}` },
+    el('h2', {}, el('span', { textContent: r.part }), el('span', { className: `badge ${r.verdict}`, textContent: r.verdict }),
+      el('small', { textContent: `${file || 'not found'}${r.api ? ` · ${r.api}` : ''}${r.seconds ? ` · ${r.seconds.toFixed(0)} s` : ''} · part ${index + 1} of ${total}` })),
+    el('ul', { className: 'reasons' }, ...(r.reasons || []).map((t) => el('li', { textContent: t }))),
+    ...slides.map((s) => el('p', { className: 'slide' }, el('b', { textContent: 'The slide asks: ' }), `${s.slide} `,
+      s.note ? el('i', { textContent: `(${s.note}) ` }) : null, el('a', { href: stepLink(r.part), textContent: `See our ${r.part}` }))),
+    images.length ? el('div', { className: 'pictures' }, ...images.map(([k, im]) => el('figure', {},
+      el('img', { src: pictureURL(im), alt: `${r.part}: ${CAPTIONS[k]}`, width: im.width, height: im.height }), el('figcaption', { textContent: CAPTIONS[k] })))) : null,
+    el('p', {}, el('a', { href: stepLink(r.part), textContent: `Our ${r.part}, which does it as the slide asks` })),
+    list('What the check did', r.actions),
+    list('Errors the page printed or caused', r.errors),
+    list('Blocked (other hosts, popups)', r.blocked),
+    list('Notes', r.notes));
+}
+
+async function run(gather) {
+  if (busy) return say('A check is running: wait for it to finish (or reload the page to stop it).', 'notice');
+  busy = true;
+  window.check = { done: false, parts: [] };
+  $('messages').replaceChildren();
+  $('results').replaceChildren();
+  const started = performance.now();
+  try {
+    const why = unsupported();
+    if (why) throw new CheckInputError(why);
+    $('progress').textContent = 'reading your files…';
+    const files = handInFrom(await gather());
+    const { parts } = partsOfHandIn(files);
+    if (!(await hasWebGPU())) say('This browser has no WebGPU adapter: parts written for WebGPU fail here (the grader has one). The WebGL parts are checked as usual.', 'notice');
+    await startHost().catch((err) => {
+      throw new CheckInputError(`This browser would not start the service worker the self-check needs to show your pages to the grader (${err.message}). ` +
+        'Service workers may be off in a private window or by a setting: try a normal window of a current Chrome, Edge or Firefox.');
+    });
+    const rubric = await (await fetch(new URL('../tools/grade/rubric.json', import.meta.url))).json();
+    const session = openSession(handInSource(files), frameScript(rubric));
+    const ours = openSession(siteSource(new URL('../', import.meta.url)), frameScript(rubric));
+    const results = [];
+    try {
+      for (const [k, part] of PARTS.entries()) {
+        const file = parts[part];
+        const where = `part ${k + 1} of ${PARTS.length}: ${part}${file ? ` (${file})` : ''}`;
+        $('progress').textContent = where;
+        const r = file ? await checkPart({ part, page: file, session, rubric, stage: $('stage'), progress: (what) => { $('progress').textContent = `${where}: ${what}`; } })
+          : { part, verdict: 'fail', reasons: [`no page for ${part} was found in the submission`], api: null };
+        if (file && REFERENCE) {
+          $('progress').textContent = `${where}: drawing our ${part} beside it`;
+          const reference = await drawReference({ result: r, rubric, session: ours, stage: $('stage') }).catch(() => null);
+          if (reference) r.images.reference = reference;
+        }
+        results.push(r);
+        $('results').append(card(r, k, PARTS.length, file));
+        session.log.errors.length = session.log.blocked.length = session.log.notes.length = 0;
+      }
+    } finally {
+      session.close();
+      ours.close();
+      $('stage').replaceChildren();
+    }
+    const passes = results.filter((r) => r.verdict === 'pass').length;
+    $('progress').textContent = `done in ${((performance.now() - started) / 1000).toFixed(0)} s: ${passes} of ${PARTS.length} parts pass`;
+    window.check = { done: true, parts: results.map(({ part, verdict, reasons, api }) => ({ part, verdict, reasons, api })) };
+  } catch (err) {
+    $('progress').textContent = '';
+    say(err instanceof CheckInputError ? err.message : `The check stopped: ${err.message}. Reload the page and try again; if it happens again, tell your teacher.`);
+    window.check = { done: true, parts: [], error: err.message };
+  } finally {
+    busy = false;
+  }
+}
+
+$('folder').addEventListener('change', (e) => {
+  const list = [...e.target.files];
+  if (list.length) run(() => entriesFromInput(list));
+  e.target.value = '';
+});
+$('zip').addEventListener('change', (e) => {
+  const list = [...e.target.files];
+  if (list.length) run(() => (/\.zip$/i.test(list[0].name) ? entriesFromInput(list) : Promise.reject(new CheckInputError(`${list[0].name} is not a .zip: pick the folder above instead.`))));
+  e.target.value = '';
+});
+const drop = $('drop');
+for (const type of ['dragenter', 'dragover']) drop.addEventListener(type, (e) => { e.preventDefault(); drop.classList.add('over'); });
+drop.addEventListener('dragleave', () => drop.classList.remove('over'));
+drop.addEventListener('drop', (e) => {
+  e.preventDefault();
+  drop.classList.remove('over');
+  const items = e.dataTransfer;
+  const gathered = entriesFromDrop(items); // the entries must be read while the drop event lasts
+  run(() => gathered);
+});
+const why = unsupported();
+if (why) say(why);

@@ -1,0 +1,101 @@
+// What a student dropped or picked, as the hand-in the grader would see: a Map from relative
+// '/'-separated paths to their contents (Blobs, read only when a frame asks). A folder picked with
+// <input webkitdirectory> or dropped is the hand-in's root; a .zip is unpacked in the browser
+// (fflate) and its one top folder, if it has nothing else, taken as the root. Dot-files,
+// node_modules and __MACOSX are left out as the grader leaves them out. Every refusal is a
+// CheckInputError whose message says what to do.
+import { unzip } from '../node_modules/fflate/esm/browser.js';
+import { partsOf } from '../tools/grade/part-names.js';
+
+/** More than this is not a worksheet (a course folder, videos, node_modules?). */
+export const MAX_BYTES = 100 * 1024 * 1024;
+export const MAX_FILES = 5000;
+
+export class CheckInputError extends Error {}
+
+const mb = (n) => `${(n / 1024 / 1024).toFixed(n < 10 * 1024 * 1024 ? 1 : 0)} MB`;
+const skipped = (segments) => segments.some((s) => s.startsWith('.') || s === 'node_modules' || s === '__MACOSX');
+
+/**
+ * The hand-in from a list of { path, blob } ('/'-separated paths as dropped: the picked folder's
+ * name first, when a folder was picked). Drops the common top folder, leaves out what the grader
+ * leaves out, refuses what is too large.
+ * @returns {Map<string, Blob>}
+ */
+export function handInFrom(entries) {
+  const kept = entries.map((e) => ({ ...e, segments: e.path.split('/').filter(Boolean) })).filter((e) => e.segments.length && !skipped(e.segments));
+  const tops = new Set(kept.map((e) => (e.segments.length > 1 ? e.segments[0] : '')));
+  const strip = tops.size === 1 && !tops.has('') ? 1 : 0;
+  const bytes = kept.reduce((s, e) => s + e.blob.size, 0);
+  if (kept.length > MAX_FILES || bytes > MAX_BYTES) {
+    throw new CheckInputError(`That is ${kept.length} files, ${mb(bytes)}: more than a worksheet (at most ${MAX_FILES} files, ${mb(MAX_BYTES)} here). ` +
+      'Drop the worksheet\'s own folder (the one with Part1 … Part5 in it), not a whole course folder.');
+  }
+  const files = new Map();
+  for (const e of kept) files.set(e.segments.slice(strip).join('/'), e.blob);
+  return files;
+}
+
+/** Compares two '/'-separated paths as a walk of sorted folders meets them (the grader's order). */
+const walkOrder = (a, b) => {
+  const x = a.split('/'), y = b.split('/');
+  for (let k = 0; k < Math.min(x.length, y.length); k++) if (x[k] !== y[k]) return x[k] < y[k] ? -1 : 1;
+  return x.length - y.length;
+};
+
+/** The parts of a hand-in, as the grader finds them: { WP04P1: path | null, ... } and the HTML pages seen. */
+export function partsOfHandIn(files) {
+  const pages = [...files.keys()].filter((p) => /\.html?$/i.test(p) && p.split('/').length <= 7).sort(walkOrder);
+  if (!pages.length) {
+    throw new CheckInputError(files.size ? `No HTML page in what you dropped (${files.size} files): a part is an HTML page, e.g. Part1/index.html. Drop the worksheet's folder.`
+      : 'Nothing to check: the folder is empty.');
+  }
+  const parts = partsOf(pages.map((p) => p.split('/')), (s) => s.join('/'));
+  if (!Object.values(parts).some(Boolean)) {
+    throw new CheckInputError(`None of the HTML pages is named for a part of worksheet 4 (${pages.slice(0, 5).join(', ')}${pages.length > 5 ? ', …' : ''}). ` +
+      'Name each part\'s folder or file for it, e.g. WP04P1/, Part1/, w4p1.html, week04p01.html.');
+  }
+  return { parts, pages };
+}
+
+/** A zip's files as { path, blob }, unpacked here in the browser. */
+export async function unzipEntries(file) {
+  const bytes = new Uint8Array(await file.arrayBuffer());
+  const out = await new Promise((resolve, reject) => unzip(bytes, (err, data) => (err ? reject(err) : resolve(data)))).catch((err) => {
+    throw new CheckInputError(`${file.name} could not be unpacked (${err.message}). Unzip it yourself and drop the folder.`);
+  });
+  return Object.entries(out).filter(([p]) => !p.endsWith('/')).map(([p, data]) => ({ path: p, blob: new Blob([data]) }));
+}
+
+/** A picked folder (<input webkitdirectory>): its files as { path, blob }. One .zip alone is unpacked. */
+export async function entriesFromInput(fileList) {
+  const list = [...fileList];
+  if (list.length === 1 && /\.zip$/i.test(list[0].name)) return unzipEntries(list[0]);
+  return list.map((f) => ({ path: f.webkitRelativePath || f.name, blob: f }));
+}
+
+/** A drop: folders walked (FileSystemEntry), files taken, one .zip unpacked. */
+export async function entriesFromDrop(dataTransfer) {
+  const roots = [...dataTransfer.items].filter((i) => i.kind === 'file').map((i) => i.webkitGetAsEntry && i.webkitGetAsEntry()).filter(Boolean);
+  if (!roots.length) return entriesFromInput(dataTransfer.files);
+  if (roots.length === 1 && roots[0].isFile && /\.zip$/i.test(roots[0].name)) return unzipEntries(dataTransfer.files[0]);
+  const out = [];
+  const fileOf = (entry) => new Promise((resolve, reject) => entry.file(resolve, reject));
+  const children = async (dir) => {
+    const reader = dir.createReader(), all = [];
+    for (;;) {
+      const batch = await new Promise((resolve, reject) => reader.readEntries(resolve, reject));
+      if (!batch.length) return all;
+      all.push(...batch);
+    }
+  };
+  const walk = async (entry, prefix) => {
+    if (out.length > MAX_FILES) return;
+    const path = prefix ? `${prefix}/${entry.name}` : entry.name;
+    if (skipped([entry.name])) return;
+    if (entry.isFile) out.push({ path, blob: await fileOf(entry) });
+    else for (const c of await children(entry)) await walk(c, path);
+  };
+  for (const r of roots) await walk(r, '');
+  return out;
+}

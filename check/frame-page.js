@@ -1,0 +1,111 @@
+// The grader's page interface (what tools/grade/drive.js drives) on a same-origin iframe of the
+// check page, as tools/grade/playwright-page.js is on a Playwright page: state, snap, controls,
+// click, setValue, press, tick, setNoCull, sources, errors. The frame's scripts were put in place by
+// check/serve.js: window.__grade (tools/grade/instrument.js), window.__webgpuCapture
+// (tools/webgpu-capture.js), window.__checkClock (check/frame-clock.js), window.__checkWatch
+// (check/frame-watch.js).
+
+/** Base64 RGBA (as window.__grade.pixels() gives it) to bytes. */
+function bytesOf(b64) {
+  const s = atob(b64);
+  const out = new Uint8Array(s.length);
+  for (let k = 0; k < s.length; k++) out[k] = s.charCodeAt(k);
+  return out;
+}
+
+/**
+ * @param {HTMLIFrameElement} frame a part's frame, loaded
+ * @param {{ errors: string[], blocked: string[], notes: string[] }} log what the check page's
+ *   server and the frame report (the frame's own errors are read from window.__checkWatch)
+ */
+export function framePage(frame, log) {
+  const win = () => frame.contentWindow;
+  const g = () => win().__grade;
+  // the watch's record outlives the frame (read after it is removed)
+  let record = null;
+  const watch = () => (record ??= (frame.contentWindow && frame.contentWindow.__checkWatch) || null) || { errors: [], blocked: [], hung: null };
+  const plain = (x) => JSON.parse(JSON.stringify(x)); // out of the frame's realm
+  /** Waits for the last WebGPU frame's copy to the canvas (tools/webgpu-capture.js). */
+  const settle = async () => {
+    const s = win().__webgpuCapture;
+    for (let k = 0; s && k < 100 && s.pending; k++) await s.pending;
+  };
+  const newTask = () => { const w = watch(); if (w.newTask) w.newTask(); }; // check/frame-watch.js's loop guard
+  const control = (c) => win().document.querySelector(`[data-grade-control="${c.index}"]`);
+
+  return {
+    async state() {
+      return plain(g().state());
+    },
+    async snap() {
+      await settle();
+      const r = g().pixels();
+      return r ? { width: r.width, height: r.height, api: r.api, data: bytesOf(r.rgba) } : null;
+    },
+    async controls() {
+      return plain(g().controls());
+    },
+    /** A click as a user's: pointer and mouse down and up at the control's centre, then click. { ok, why }. */
+    async click(c) {
+      newTask();
+      const el = control(c);
+      if (!el) return { ok: false, why: 'it is no longer on the page' };
+      if (el.disabled) return { ok: false, why: 'it is disabled' };
+      el.scrollIntoView({ block: 'center', inline: 'center' });
+      const r = el.getBoundingClientRect();
+      const x = r.left + r.width / 2, y = r.top + r.height / 2;
+      const hit = win().document.elementFromPoint(x, y);
+      if (!r.width || !r.height) return { ok: false, why: 'it is not visible' };
+      if (!hit || !(hit === el || el.contains(hit) || hit.control === el)) return { ok: false, why: `another element (${hit ? hit.tagName.toLowerCase() : 'none'}) covers it` };
+      const W = win();
+      const opts = { bubbles: true, cancelable: true, composed: true, clientX: x, clientY: y, button: 0, view: W };
+      el.dispatchEvent(new W.PointerEvent('pointerdown', { ...opts, buttons: 1, pointerType: 'mouse', isPrimary: true }));
+      el.dispatchEvent(new W.MouseEvent('mousedown', { ...opts, buttons: 1 }));
+      if (el.focus) el.focus();
+      el.dispatchEvent(new W.PointerEvent('pointerup', { ...opts, pointerType: 'mouse', isPrimary: true }));
+      el.dispatchEvent(new W.MouseEvent('mouseup', opts));
+      el.click();
+      return { ok: true };
+    },
+    async setValue(c, value, events) {
+      newTask();
+      g().setValue(c.index, value, events);
+    },
+    /** keydown, keypress (a character), keyup of `key` at the focused element (or the body). */
+    async press(key) {
+      newTask();
+      const W = win(), doc = W.document;
+      const target = doc.activeElement && doc.activeElement !== doc.documentElement ? doc.activeElement : doc.body || doc.documentElement;
+      const code = /^[a-z]$/i.test(key) ? `Key${key.toUpperCase()}` : /^[0-9]$/.test(key) ? `Digit${key}` : { '+': 'Equal', '-': 'Minus', ' ': 'Space' }[key] || key;
+      const keyCode = { ArrowLeft: 37, ArrowUp: 38, ArrowRight: 39, ArrowDown: 40, PageUp: 33, PageDown: 34, '+': 187, '-': 189, ' ': 32, Enter: 13, Escape: 27 }[key] ?? key.toUpperCase().charCodeAt(0);
+      const init = { key, code, keyCode, which: keyCode, bubbles: true, cancelable: true, composed: true, view: W };
+      target.dispatchEvent(new W.KeyboardEvent('keydown', init));
+      if (key.length === 1) target.dispatchEvent(new W.KeyboardEvent('keypress', { ...init, charCode: key.charCodeAt(0), keyCode: key.charCodeAt(0), which: key.charCodeAt(0) }));
+      target.dispatchEvent(new W.KeyboardEvent('keyup', init));
+    },
+    /** Frozen time advances: a jump to 16·frames before `ms`, then `frames` frames at 60 Hz. */
+    async tick(ms, frames = 2) {
+      const clock = win().__checkClock;
+      if (ms > 16 * frames + 8) await clock.fastForward(ms - 16 * frames);
+      await clock.runFor(Math.min(ms, 16 * frames));
+      await settle();
+    },
+    /** The grader's experiment: WebGL draws with back-face culling off (true) or as the page set it (false). */
+    async setNoCull(on) {
+      g().noCull = on;
+    },
+    async sources() {
+      return { glsl: [...g().glsl], wgsl: [...g().wgsl] };
+    },
+    errors() {
+      return [...log.errors, ...watch().errors];
+    },
+    blocked() {
+      return [...log.blocked, ...watch().blocked];
+    },
+    /** The frame ran a loop that never returned (check/frame-watch.js stopped it): why, or null. */
+    hung() {
+      return watch().hung;
+    },
+  };
+}

@@ -1,0 +1,62 @@
+// What the check page hears from a part's frame, as the grader hears it from Playwright: page
+// errors, console errors, dialogs (alert, confirm, prompt: dismissed, their text kept), popups
+// (blocked), and loops that never return. An init script (a function, put at the top of the
+// part's HTML as source text, before the clock and the grader's instrumentation).
+//
+// A script that never returns would freeze the check page too (a same-origin frame shares its
+// thread), so every loop in the part's scripts calls __checkLoop() (check/guard.js puts the call
+// in): a loop still running `loopSeconds` after its task began (the frame last had a free moment,
+// or the check page started a task there: newTask) throws, the frame is marked hung, and every
+// later loop throws at once.
+
+/** The init script. options: { loopSeconds }. Publishes window.__checkWatch. */
+export function frameWatchScript(options) {
+  if (window.__checkWatch) return;
+  const watch = { errors: [], blocked: [], hung: null };
+  Object.defineProperty(window, '__checkWatch', { value: watch, enumerable: false });
+  const text = (x) => (x instanceof Error ? x.message : typeof x === 'string' ? x : (() => { try { return JSON.stringify(x); } catch { return String(x); } })());
+
+  window.addEventListener('error', (e) => { if (e.error !== undefined || e.message) watch.errors.push(`page error: ${e.error ? text(e.error) : e.message}`); });
+  window.addEventListener('unhandledrejection', (e) => watch.errors.push(`page error: ${text(e.reason)}`));
+  const consoleError = console.error.bind(console);
+  console.error = (...args) => {
+    watch.errors.push(`console: ${args.map(text).join(' ')}`);
+    consoleError(...args);
+  };
+  const dialog = (answer) => (message) => { watch.errors.push(`dialog: ${message === undefined ? '' : String(message)}`); return answer; };
+  window.alert = dialog(undefined);
+  window.confirm = dialog(false);
+  window.prompt = dialog(null);
+  window.open = (url) => { watch.blocked.push(`popup: ${url === undefined ? '' : new URL(String(url), location.href).href}`); return null; };
+  // the grader's pages have devicePixelRatio 1: a canvas sized from clientWidth × devicePixelRatio
+  // is as big here as there, on any screen
+  Object.defineProperty(window, 'devicePixelRatio', { get: () => 1, configurable: true });
+  // ... and no scrollbars (headless Chromium hides them): a canvas sized from clientWidth is as wide
+  document.documentElement.style.scrollbarWidth = 'none';
+
+  // the loop guard: a beat on the real clock (taken before check/frame-clock.js stands in for it)
+  const realSetTimeout = setTimeout.bind(window), realNow = performance.now.bind(performance);
+  let beat = 0, seen = -1, taskStart = 0, calls = 0;
+  const tick = () => { beat++; realSetTimeout(tick, 100); };
+  tick();
+  // a new task begun by the check page (a timer or frame its clock runs, a click, a key, a slider
+  // step): a loop there is timed from here, not from before the check page's own work in between
+  watch.newTask = () => { beat++; };
+  // loading has the rubric's loadSeconds; once loaded, a task may take up to the part's whole bound
+  // (a quadratic flatten() at a high level takes tens of seconds on a slow machine, as under the grader)
+  let limit = 1000 * (options.loopSeconds || 20);
+  watch.setLoopSeconds = (seconds) => { limit = 1000 * seconds; };
+  Object.defineProperty(window, '__checkLoop', {
+    enumerable: false,
+    value: () => {
+      if (watch.hung) throw new Error(watch.hung);
+      if ((++calls & 1023) !== 0) return;
+      const now = realNow();
+      if (beat !== seen) { seen = beat; taskStart = now; return; }
+      if (now - taskStart > limit) {
+        watch.hung = `a loop ran for ${Math.round((now - taskStart) / 1000)} s without returning (stopped by the self-check)`;
+        throw new Error(watch.hung);
+      }
+    },
+  });
+}

@@ -1,0 +1,131 @@
+// One part of a hand-in, checked as `npm run grade` checks it: opened in a frame of its own
+// (1000 × 1000 CSS pixels, as the grader's page; time frozen; only the hand-in's files served),
+// loaded within the rubric's loadSeconds, then driven and judged by the grader's own modules
+// (gradePart, tools/grade/drive.js; verdictOf and reasonsOf, tools/grade/verdict.js) through the
+// frame's page interface (check/frame-page.js), within the rubric's timeoutSeconds. A part that
+// never returns is stopped and said so. Our own part can be drawn beside it (drawReference).
+import { framePage } from './frame-page.js';
+import { frameWatchScript } from './frame-watch.js';
+import { frameClockScript } from './frame-clock.js';
+import { instrumentScript } from '../tools/grade/instrument.js';
+import { webgpuCaptureScript } from '../tools/webgpu-capture.js';
+import { gradePart } from '../tools/grade/drive.js';
+import { verdictOf, reasonsOf } from '../tools/grade/verdict.js';
+import { referenceQuery } from '../tools/grade/reference-state.js';
+
+/** The grader's frozen clock: the same wall time as tools/grade (2026-01-05 09:00 UTC). */
+export const FROZEN = Date.UTC(2026, 0, 5, 9, 0, 0);
+export const VIEWPORT = 1000;
+
+/** The script every part's HTML gets first: the watch, the WebGPU capture, the grader's instrumentation, the clock. */
+export function frameScript(rubric) {
+  return [
+    `(${frameWatchScript})(${JSON.stringify({ loopSeconds: rubric.loadSeconds ?? 20 })});`,
+    `(${webgpuCaptureScript})();`,
+    `(${instrumentScript})();`,
+    `(${frameClockScript})(${FROZEN});`,
+  ].join('\n');
+}
+
+const sleep = (ms) => new Promise((resolve) => setTimeout(resolve, ms));
+
+/** Loads `src` in a new frame in `stage`: 'load', 'hung' (a loop stopped) or 'timeout'. */
+async function load(stage, src, seconds) {
+  const frame = document.createElement('iframe');
+  // no popups, no top navigation, no dialogs (frame-watch.js records them), no downloads
+  frame.setAttribute('sandbox', 'allow-scripts allow-same-origin allow-forms allow-pointer-lock');
+  frame.title = 'The part being checked';
+  frame.width = frame.height = String(VIEWPORT);
+  const loaded = new Promise((resolve) => frame.addEventListener('load', () => resolve('load'), { once: true }));
+  frame.src = src;
+  stage.replaceChildren(frame);
+  const hung = (async () => {
+    for (;;) {
+      await sleep(200);
+      if (frame.contentWindow && frame.contentWindow.__checkWatch && frame.contentWindow.__checkWatch.hung) return 'hung';
+    }
+  })();
+  const how = await Promise.race([loaded, hung, sleep(seconds * 1000).then(() => 'timeout')]);
+  return { frame, how };
+}
+
+/** The grader's words for a part stopped by the time bound (as grade.spec.js's). */
+const timedOut = (rubric, why) => `the page did not finish within the rubric's bound of ${rubric.timeoutSeconds ?? 90} s (it never returns, or is far too slow)${why ? `: ${why}` : ''}`;
+
+/**
+ * Checks one part. Returns what report.json says of it ({ part, verdict, reasons, api, actions,
+ * controls, numbers, errors, blocked, notes, seconds }) and its pictures (images: { first, judged,
+ * ... } as { width, height, data }).
+ * @param {object} o { part, page (path in the hand-in), session (host.js), rubric, stage (element), progress (text) }
+ */
+export async function checkPart({ part, page, session, rubric, stage, progress = () => {} }) {
+  const started = performance.now();
+  const loadSeconds = rubric.loadSeconds ?? 20;
+  let graded = { fail: null, checks: [], actions: [], images: {}, busy: 0 };
+  progress(`opening ${page}`);
+  const { frame, how } = await load(stage, session.url(page), loadSeconds);
+  const fp = framePage(frame, session.log);
+  try {
+    if (how !== 'load' || fp.hung()) {
+      const notLoaded = `the page could not be opened: it did not finish loading in ${loadSeconds} s (a script that never returns?)`;
+      graded.fail = fp.hung() ? `${notLoaded}: ${fp.hung()}` : notLoaded;
+    } else {
+      await session.idle(500, 5000);
+      frame.contentWindow.__checkWatch.setLoopSeconds(rubric.timeoutSeconds ?? 90);
+      let timer;
+      const bound = new Promise((resolve) => { timer = setTimeout(() => resolve('timeout'), (rubric.timeoutSeconds ?? 90) * 1000); });
+      const grading = gradePart(fp, { part, rubric, progress });
+      grading.catch(() => {}); // after the time bound the frame is gone, and so is the grading
+      try {
+        const r = await Promise.race([grading, bound]);
+        if (r === 'timeout') graded.fail = timedOut(rubric);
+        else graded = r;
+      } catch (err) {
+        if (fp.hung()) graded.fail = timedOut(rubric, fp.hung());
+        // the grader's own trouble with this page: never a pass on it, a teacher looks (as grade.spec.js)
+        else graded.checks = [{ level: 'review', reason: `the grader could not finish on this page: ${err.message.split('\n')[0]}` }];
+      } finally {
+        clearTimeout(timer);
+      }
+    }
+  } finally {
+    frame.remove();
+  }
+  const seconds = (performance.now() - started) / 1000;
+  const errors = fp.errors();
+  return {
+    part, file: page, api: graded.api ?? null, canvas: graded.canvas, controls: graded.controls || {}, numbers: graded.numbers || {},
+    verdict: verdictOf(graded.checks, graded.fail),
+    reasons: reasonsOf({ fail: graded.fail, checks: graded.checks, seconds, busySeconds: graded.busy / 1000, slowSeconds: rubric.slowSeconds,
+      pageErrors: errors.filter((e) => /page error/.test(e)) }),
+    actions: graded.actions || [], images: graded.images || {}, errors, blocked: fp.blocked(), notes: [...session.log.notes], seconds,
+  };
+}
+
+/**
+ * Our own part beside the student's (as the grader's report has it): drawn at the student's canvas
+ * size, lit from the light the judge fitted, in a frame served from our site. { width, height, data } or null.
+ */
+export async function drawReference({ result, rubric, session, stage }) {
+  const judged = result.images.judged;
+  if (!judged || result.verdict === 'fail') return null;
+  const query = referenceQuery(judged, result.numbers, rubric.thresholds, {});
+  const { frame, how } = await load(stage, `${session.url(`${result.part}/index.html`)}?${query}`, rubric.loadSeconds ?? 20);
+  try {
+    if (how !== 'load') return null;
+    await session.idle(500, 5000);
+    const fp = framePage(frame, session.log);
+    await fp.tick(500, 30);
+    // our pages publish window.scene after each frame drawn: wait for one (a loaded machine is slow)
+    const drawn = () => frame.contentWindow.scene && frame.contentWindow.scene.frame >= 1;
+    for (const until = performance.now() + 1000 * (rubric.firstFrameSeconds ?? 10); !drawn() && performance.now() < until;) {
+      await sleep(100);
+      await fp.tick(16);
+    }
+    if (!drawn()) return null;
+    const img = await fp.snap();
+    return img && img.width === judged.width && img.height === judged.height ? img : null;
+  } finally {
+    frame.remove();
+  }
+}

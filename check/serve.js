@@ -1,0 +1,89 @@
+// The check page's side of serving a hand-in to its frames (check/sw.js only carries the
+// requests): a path asked for, answered from the dropped files as the grader's server answers it.
+// A folder gives its index.html; a file not where the page asked (other letter case, a folder too
+// far up) is found by findStandIn and said in the notes; HTML gets the frame's instrumentation as
+// its first script; JavaScript gets the loop guard. Nothing else is ever read.
+import { findStandIn, typeOf } from '../tools/grade/standin.js';
+import { guardInlineScripts, guardLoops } from './guard.js';
+
+/** The URL path under which the frames live: BASE + session + '/' + the hand-in's own path. */
+export const BASE = '/check/run/';
+/** The instrumentation's own path in a session (a name no hand-in uses). */
+export const FRAME_SCRIPT = '__check_frame__.js';
+
+/**
+ * The path inside the hand-in that a URL path of a session's frame asks for. A page that went one
+ * folder too far up ("../../Common/MV.js") or used a root-absolute path ("/Common/MV.js") lands
+ * beside or above the session's folder; as on the grader's server, whose root is the hand-in's
+ * root, that is the hand-in's root.
+ */
+export function askedPath(urlPath, session) {
+  let rel;
+  try {
+    rel = decodeURIComponent(urlPath);
+  } catch {
+    return null;
+  }
+  const segments = rel.split('/').filter(Boolean);
+  const base = [...BASE.split('/').filter(Boolean), session];
+  let k = 0;
+  while (k < base.length && segments[k] === base[k]) k++;
+  return segments.slice(k).join('/') + (rel.endsWith('/') && segments.length > k ? '/' : '');
+}
+
+/** Puts `<script src=FRAME_SCRIPT>` first in an HTML page: after <head>, else <html>, else the doctype. */
+export function injectFrameScript(html, src) {
+  const tag = `<script src="${src}"></script>`;
+  for (const re of [/<head\b[^>]*>/i, /<html\b[^>]*>/i, /<!doctype[^>]*>/i]) {
+    const m = re.exec(html);
+    if (m) return html.slice(0, m.index + m[0].length) + tag + html.slice(m.index + m[0].length);
+  }
+  return tag + html;
+}
+
+/** A hand-in as a source of files: its paths, and each file's contents. */
+export function handInSource(files) {
+  const paths = [...files.keys()];
+  return { paths, read: async (p) => files.get(p) ?? null };
+}
+
+/** Our own site as a source (for our reference part beside a student's): read from the server, never listed. */
+export function siteSource(root) {
+  return {
+    paths: [],
+    read: async (p) => {
+      const r = await fetch(new URL(p.split('/').map(encodeURIComponent).join('/'), root));
+      return r.ok ? r.blob() : null;
+    },
+  };
+}
+
+/**
+ * The answer to a frame's request for `rel` (a path inside the source).
+ * @param {{ paths: string[], read: (path: string) => Promise<Blob|null> }} source
+ * @param {string} rel
+ * @param {{ frameScript: string, session: string }} how
+ * @returns {Promise<{ status: number, type: string, body: string|Blob, note?: string, missing?: string }>}
+ */
+export async function answer(source, rel, { frameScript, session }) {
+  if (rel === FRAME_SCRIPT) return { status: 200, type: 'text/javascript', body: frameScript };
+  let file = rel.replace(/\/+$/, '');
+  const isFolder = (f) => !source.paths.includes(f) && source.paths.some((k) => k.startsWith(`${f}/`));
+  if (rel.endsWith('/') || file === '' || isFolder(file)) file = file ? `${file}/index.html` : 'index.html';
+  let note;
+  let blob = await source.read(file);
+  if (!blob) {
+    const standIn = findStandIn(rel, source.paths);
+    if (!standIn) return { status: 404, type: 'text/plain', body: 'not found', missing: `/${rel}` };
+    note = `served ${standIn} for /${rel}, which is not in the submission as written (letter case, or a folder above the submission)`;
+    file = standIn;
+    blob = await source.read(file);
+  }
+  const type = typeOf(file);
+  if (type === 'text/html') {
+    const html = await blob.text();
+    return { status: 200, type: 'text/html', note, body: injectFrameScript(guardInlineScripts(html), `${BASE}${session}/${FRAME_SCRIPT}`) };
+  }
+  if (type === 'text/javascript') return { status: 200, type, note, body: guardLoops(await blob.text(), { module: /\.mjs$/i.test(file) }) };
+  return { status: 200, type, note, body: blob };
+}

@@ -1,0 +1,64 @@
+// The self-check's reading of a dropped hand-in (check/files.js, check/serve.js): the root, what is
+// left out, what is refused, the parts found as the grader finds them, and paths asked from a frame.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { CheckInputError, MAX_BYTES, handInFrom, partsOfHandIn } from '../../check/files.js';
+import { askedPath, injectFrameScript } from '../../check/serve.js';
+import { guardLoops, guardInlineScripts } from '../../check/guard.js';
+
+const blob = (size = 10) => ({ size });
+const entries = (paths, size) => paths.map((p) => ({ path: p, blob: blob(size) }));
+
+test('a picked folder is the root; dot-files, node_modules and __MACOSX are left out', () => {
+  const files = handInFrom(entries(['ada/Part1/index.html', 'ada/.git/config', 'ada/node_modules/x.js', 'ada/__MACOSX/Part1/._index.html', 'ada/common/MV.js']));
+  assert.deepEqual([...files.keys()], ['Part1/index.html', 'common/MV.js']);
+  // several things dropped at once: no common top folder to take off
+  assert.deepEqual([...handInFrom(entries(['Part1/index.html', 'notes.txt'])).keys()], ['Part1/index.html', 'notes.txt']);
+});
+
+test('more than a worksheet is refused with what to do', () => {
+  assert.throws(() => handInFrom(entries(['big/a.mp4', 'big/b.mp4', 'big/Part1/index.html'], MAX_BYTES / 2)),
+    (err) => err instanceof CheckInputError && /3 files, 150 MB: more than a worksheet .* Drop the worksheet's own folder/.test(err.message));
+});
+
+test('parts are found as the grader finds them; no page or no part name is said', () => {
+  const files = handInFrom(entries(['s/Lab 4/w04/w04p03.html', 's/week04/part02/index.html']));
+  const { parts } = partsOfHandIn(files);
+  assert.equal(parts.WP04P3, 'Lab 4/w04/w04p03.html');
+  assert.equal(parts.WP04P2, 'week04/part02/index.html');
+  assert.equal(parts.WP04P1, null);
+  assert.throws(() => partsOfHandIn(handInFrom(entries(['s/a.txt']))), /No HTML page in what you dropped \(1 files\)/);
+  assert.throws(() => partsOfHandIn(handInFrom(entries(['s/hello.html', 's/x.txt']))), /None of the HTML pages is named for a part .*hello\.html/);
+});
+
+test('a frame\'s paths: its session\'s folder, and root-absolute or one folder too far up land on the hand-in\'s root', () => {
+  assert.equal(askedPath('/check/run/abc/Part1/index.html', 'abc'), 'Part1/index.html');
+  assert.equal(askedPath('/check/run/Common/MV.js', 'abc'), 'Common/MV.js'); // ../../Common/MV.js from Part1/
+  assert.equal(askedPath('/common/MV.js', 'abc'), 'common/MV.js');
+  assert.equal(askedPath('/check/run/abc/My%20Part/', 'abc'), 'My Part/');
+  assert.equal(askedPath('/check/run/abc/%E0%A4%A', 'abc'), null);
+});
+
+test('the frame script goes first; every loop gets the guard, shaders and other scripts stay', () => {
+  assert.equal(injectFrameScript('<!doctype html><html><head><title>t</title>', '/f.js'), '<!doctype html><html><head><script src="/f.js"></script><title>t</title>');
+  assert.equal(injectFrameScript('<p>bare', '/f.js'), '<script src="/f.js"></script><p>bare');
+  assert.equal(guardLoops('while (true) x++;'), 'while (true) {__checkLoop();x++;}');
+  assert.equal(guardLoops('for (;;) { f(); }'), 'for (;;) {__checkLoop(); f(); }');
+  assert.equal(guardLoops('let a = 1; a +'), 'let a = 1; a +'); // does not parse: as it is
+  const html = '<script type="x-shader/x-vertex">for (int i = 0; i < 3; i++) {}</script><script>do { i++ } while (i < 3)</script>';
+  assert.equal(guardInlineScripts(html), '<script type="x-shader/x-vertex">for (int i = 0; i < 3; i++) {}</script><script>do {__checkLoop(); i++ } while (i < 3)</script>');
+});
+
+test('a review or a fail names the slide sentence it misses', async () => {
+  const { missedSlides } = await import('../../check/slides.js');
+  const slide = (reason) => missedSlides([reason]).map((m) => m.slide.split(' ').slice(0, 4).join(' '))[0];
+  assert.equal(slide('REVIEW: the colours are not 0.5·n + 0.5: 2c − 1 is not a unit vector'), 'Get the normal from');
+  assert.equal(slide('REVIEW: the orbit does not show in the shading: the light moves with the camera (light and normals in different spaces?)'), 'Add a tick function');
+  assert.equal(slide('REVIEW: 2 slider(s) update the picture only on the change event, not while sliding'), 'Use the input event');
+  assert.equal(slide('drew nothing: the canvas is one colour, no draw call'), 'Draw a solid sphere');
+  assert.equal(slide('REVIEW: the highlight follows the triangles at a coarse level (RMS 0.043 from the finest): shading is per vertex, not per fragment'), 'We implement it by');
+  assert.equal(slide('REVIEW: nothing found that makes the sphere finer: 2 controls tried'), 'Insert buttons for subdividing');
+  assert.equal(slide('REVIEW: back faces show through the front (normals do not vary smoothly): depth test or culling missing'), 'Now, enable the depth');
+  assert.equal(slide('REVIEW: no specular highlight: nothing brighter than the diffuse fit'), 'Update your reflection model');
+  assert.deepEqual(missedSlides(['a round closed sphere (radius 80 px)']), []); // what passed names nothing
+});
