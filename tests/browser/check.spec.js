@@ -148,7 +148,9 @@ test('the check page gives the grader\'s verdicts: our own site passes in WebGL 
   const browser = await chromium.launch({ executablePath: CHROMIUM, args: [...CHROMIUM_ARGS, ...WEBGPU_ARGS] });
   const rows = [];
   try {
-    const page = await browser.newPage({ viewport: { width: 1200, height: 900 }, deviceScaleFactor: 1, baseURL: test.info().project.use.baseURL });
+    // a context of its own: axe (expectAccessible) opens its frames in the page's context
+    const context = await browser.newContext({ viewport: { width: 1200, height: 900 }, deviceScaleFactor: 1, baseURL: test.info().project.use.baseURL });
+    const page = await context.newPage();
     for (const name of picked) {
       const { check, seconds } = await checkFolder(page, path.join(dir, 'class', name), { query: ALL ? '?reference=0' : '' });
       expect(check.error, name).toBeUndefined();
