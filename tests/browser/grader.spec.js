@@ -77,7 +77,7 @@ test.describe('the WebGPU capture', () => {
 
 test.describe('grading the labelled class', () => {
   // one grading run, shared by the checks below (serial: one worker runs beforeAll once)
-  test.describe.configure({ mode: 'serial', timeout: 1_260_000 });
+  test.describe.configure({ mode: 'serial', timeout: 2_460_000 });
   let dir, out, report, labels;
   // eslint-disable-next-line no-empty-pattern -- Playwright wants the fixtures argument destructured
   test.beforeAll(async ({}, testInfo) => {
@@ -92,10 +92,10 @@ test.describe('grading the labelled class', () => {
     // the shipped rubric, with time bounds for a test run (the page that never returns costs loadSeconds,
     // the one that draws nothing firstFrameSeconds)
     const rubric = path.join(dir, 'rubric.json');
-    writeFileSync(rubric, JSON.stringify({ timeoutSeconds: 120, loadSeconds: 15, firstFrameSeconds: 6, reference: false }));
+    writeFileSync(rubric, JSON.stringify({ timeoutSeconds: 240, loadSeconds: 15, firstFrameSeconds: 6, reference: false }));
     const started = Date.now();
     const run = spawnSync(process.execPath, ['tools/grade/grade.js', '--batch', path.join(dir, 'class'), '--rubric', rubric, '--out', out],
-      { encoding: 'utf8', timeout: 1_200_000 });
+      { encoding: 'utf8', timeout: 2_400_000 });
     expect(run.status, run.stderr + run.stdout.slice(-3000)).toBe(0);
     report = JSON.parse(readFileSync(path.join(out, 'report.json'), 'utf8'));
     const parts = report.submissions.reduce((s, x) => s + x.parts.length, 0);
@@ -151,7 +151,7 @@ test.describe('grading the labelled class', () => {
   test('a rubric with mistakeVerdict "fail" fails the parts that draw but miss a point; broken parts fail either way', () => {
     // cy: one mistake a part (P1 colour = p, P2 no depth test, P3 no orbit button, P4 no highlight, P5 Gouraud)
     const strict = path.join(dir, 'strict.json');
-    writeFileSync(strict, JSON.stringify({ timeoutSeconds: 120, loadSeconds: 15, firstFrameSeconds: 6, reference: false, mistakeVerdict: 'fail' }));
+    writeFileSync(strict, JSON.stringify({ timeoutSeconds: 240, loadSeconds: 15, firstFrameSeconds: 6, reference: false, mistakeVerdict: 'fail' }));
     const run = spawnSync(process.execPath, ['tools/grade/grade.js', path.join(dir, 'class', 'cy'), '--rubric', strict, '--out', path.join(dir, 'strict')],
       { encoding: 'utf8', timeout: 480_000 });
     expect(run.status, run.stderr + run.stdout.slice(-2000)).toBe(0);
@@ -170,7 +170,7 @@ test.describe('grading the labelled class', () => {
 // the shipped rubric and its own time bounds, as a teacher runs it (our reference left out).
 const HANDINS = process.env.HANDINS_DIR || path.resolve(import.meta.dirname, '../../../shared/handins');
 test.describe('grading real hand-ins against their labels', () => {
-  test.describe.configure({ timeout: 1_260_000 });
+  test.describe.configure({ timeout: 2_460_000 });
   // eslint-disable-next-line no-empty-pattern -- Playwright wants the fixtures argument destructured
   test('the grader agrees with the labels as measured: 28 of 34 parts or more, 12 of 14 correct parts pass, no broken and at most 3 partial parts pass', async ({}, testInfo) => {
     test.skip(testInfo.project.name !== 'webgl2', 'the grader runs its own Chromium; once is enough');
@@ -181,7 +181,7 @@ test.describe('grading real hand-ins against their labels', () => {
     writeFileSync(rubric, JSON.stringify({ reference: false, timeoutSeconds: 300 }));
     const started = Date.now();
     const run = spawnSync(process.execPath, ['tools/grade/grade.js', '--batch', HANDINS, '--labels', path.join(HANDINS, 'labels.tsv'), '--rubric', rubric, '--out', out],
-      { encoding: 'utf8', timeout: 1_200_000 });
+      { encoding: 'utf8', timeout: 2_400_000 });
     expect(run.status, run.stderr + run.stdout.slice(-3000)).toBe(0);
     const a = JSON.parse(readFileSync(path.join(out, 'report.json'), 'utf8')).labels;
     const summary = run.stdout.split('\n').filter((l) => l.startsWith('labels:')).join('\n');
