@@ -30,7 +30,9 @@ export async function gradePart(page, { part, rubric, progress = () => {}, deadl
   const out = { fail: null, checks, actions: [], controls: {}, numbers: {}, images: {}, api: null, canvas: null, busy: 0 };
   const actions = out.actions;
   let frameMs = 16; // what a frame of this page costs here, from the last frames run
-  const tick = async (ms, frames = 2) => {
+  // a jump (one frame) and then one frame more: a change made in a click or input handler is drawn
+  // by the next frame, and on a software renderer a frame can cost half a second
+  const tick = async (ms, frames = 1) => {
     const t0 = Date.now();
     await page.tick(ms, frames);
     const took = Date.now() - t0;
@@ -147,15 +149,15 @@ export async function gradePart(page, { part, rubric, progress = () => {}, deadl
   const orbitFits = []; // the diffuse fit at each lit orbit position seen
   const viewFits = []; // ... and at every lit view seen (the first one too)
   const views = []; // every lit view: { img, an, fit }, to look for the highlight in
-  const look = (im, orbiting = true) => { // is the view lit? lit views' fits are kept
+  const look = (im, orbiting = true, keep = true) => { // is the view lit? lit views' fits are kept
     const a = analyse(im, T);
     if (a.blank) return false;
     const fit = diffuseFit(samples(im, a, { max: 1500 }), T);
     // lit: a clear spread of brightness, or a clean diffuse fit with a clear diffuse term (a light
     // from the eye's side spreads brightness little over the disc: n·w_i from 0.5 to 1 in the samples)
-    const lit = fit && a.roundness < 0.3 && (fit.spread >= T.litSpread * 1.5 ||
+    const lit = fit && a.roundness < T.orbitCoarseRoundness && (fit.spread >= T.litSpread * 1.5 ||
       (fit.spread >= T.litSpread / 2 && fit.r2 >= T.diffuseR2 && fit.diffuse >= T.diffuseMin));
-    if (lit) {
+    if (lit && keep) {
       viewFits.push(fit);
       views.push({ img: im, an: a, fit });
       if (orbiting) orbitFits.push(fit);
@@ -163,11 +165,19 @@ export async function gradePart(page, { part, rubric, progress = () => {}, deadl
     return !!lit;
   };
   if (shadedPart) look(first, false);
-  const sampleOrbit = async () => {
+  let orbitLater = false; // the orbit is sampled after the level ladder
+  let orbitStart = null, orbitStop = null; // the controls that start and stop it, where found
+  const sampleOrbit = async (afterLadder = false) => {
     // the light may be behind the sphere at first: look along the orbit (a few positions at least)
     // to see the lit side turn with the orbit (a light fixed in the world); many pages turn the
     // camera a fixed step per frame, or per setInterval tick: each sample runs more frames as the
     // search goes on, so such an orbit gets round too
+    // a silhouette too coarse to read the shading from (a tetrahedron at level 0) shows nothing lit
+    // anywhere on the orbit: looked at once the sphere is round, after the level ladder
+    if (!afterLadder && cur.an.roundness >= T.orbitCoarseRoundness) {
+      orbitLater = true;
+      return;
+    }
     progress('sampling the orbit');
     let k = 0, im = cur.img;
     for (; k < T.orbitSamples && (!look(im) || k < 2) && !late('more orbit positions', 0.4); k++) {
@@ -191,6 +201,7 @@ export async function gradePart(page, { part, rubric, progress = () => {}, deadl
       if (effect === 'stops') {
         assign('orbit', c, 'the picture stopped moving');
         orbitToggles = true;
+        orbitStart = orbitStop = c;
         break;
       }
     }
@@ -209,6 +220,8 @@ export async function gradePart(page, { part, rubric, progress = () => {}, deadl
           if (e === 'stops') {
             assign('orbit', c, s === c ? 'starts and stops the picture moving' : `starts the picture moving (${describe(s)} stops it)`);
             orbitToggles = true;
+            orbitStart = c;
+            orbitStop = s;
             break;
           }
         }
@@ -257,6 +270,7 @@ export async function gradePart(page, { part, rubric, progress = () => {}, deadl
         if (!R.orbit) {
           assign('orbit', c, again === 'stops' ? 'starts and stops the picture moving' : 'starts the picture moving; nothing found stops it');
           orbitToggles = again === 'stops';
+          if (orbitToggles) orbitStart = orbitStop = c;
         }
       }
       if ((levelBy.subdivide || levelBy.coarsen) && idle.length) {
@@ -389,6 +403,24 @@ export async function gradePart(page, { part, rubric, progress = () => {}, deadl
       if (settled) break;
     }
     actions.push(`set the level ${c.type === 'select' ? 'menu' : 'slider'} from ${values[0]} up to ${values[ladder.length - 1]}`);
+  }
+  // the orbit looked at where the shading can be read: on again, sampled, off again; the view it
+  // stops at is judged (the same level)
+  // Only where it buys evidence: the judged view is unlit, or the step asks for the orbit (P3: the
+  // lit side turning with it). Elsewhere the judged view stays, so that the sliders and a coarse
+  // level are compared with it in the same view.
+  let viewMoved = false;
+  if (orbitLater && shadedPart && (must.has('orbitToggle') || !look(ladder[ladder.length - 1].img, false, false)) && !late('the orbit at the finest level', 0.5)) {
+    const at = ladder.length - 1;
+    viewMoved = true;
+    if (!stopped) {
+      await sampleOrbit(true);
+      ladder[at] = cur;
+    } else if (orbitStart && orbitStop && await tryClick(orbitStart, 'the orbit control again', { watchMotion: true }) === 'starts') {
+      await sampleOrbit(true);
+      if (await tryClick(orbitStop, 'the orbit control again', { watchMotion: true }) === 'stops') ladder[at] = cur;
+      else say('review', 'the orbit did not stop again: the pictures were judged as it moves');
+    }
   }
   // a page that goes blank at a higher level (a buffer too small, an index type too narrow) is
   // judged at the last level it drew, and the blank level is a mistake
@@ -660,7 +692,7 @@ export async function gradePart(page, { part, rubric, progress = () => {}, deadl
 
   // ---- P5: the highlight per fragment, seen at a coarse level ----
   if (must.has('perFragment') && fit) {
-    const coarse = stopped ? ladder.find((s) => !s.an.blank && s.an.roundness < T.coarseRoundness && s !== judged) : null;
+    const coarse = stopped && !viewMoved ? ladder.find((s) => !s.an.blank && s.an.roundness < T.coarseRoundness && s !== judged) : null;
     const src = await page.sources();
     const fs = src.glsl.filter((s) => /gl_FragColor|out\s+vec4/.test(s) && !/gl_Position/.test(s));
     // a WGSL fragment entry point and the functions it calls

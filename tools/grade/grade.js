@@ -188,6 +188,10 @@ function main() {
         items.push({ name: s.name, part, root: s.root, page, referenceQuery: cfg.referenceQuery || {}, resultFile: path.join(out, 'parts', safeName(s.name), `${part}.json`) });
       }
     }
+    // the parts that try the most first (the sliders, then the orbit's), so that the workers end
+    // together on the short ones: a class's time is then near its sum over the workers
+    const FIRST = ['WP04P4', 'WP04P3', 'WP04P5', 'WP04P2', 'WP04P1'];
+    items.sort((a, b) => FIRST.indexOf(a.part) - FIRST.indexOf(b.part));
     const planFile = path.join(out, 'plan.json');
     writeFileSync(planFile, JSON.stringify({ repo, out, rubric, timeoutSeconds: rubric.timeoutSeconds, referenceSeconds: REFERENCE_SECONDS, items }, null, 1));
     console.log(`grade: ${submissions.length} submission(s), ${items.length} parts; ${o.workers || 2} at a time, at most ${rubric.timeoutSeconds} s for each student page, and ${REFERENCE_SECONDS} s more for our reference`);

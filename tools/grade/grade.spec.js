@@ -21,6 +21,22 @@ function png(img) {
   return PNG.sync.write(p);
 }
 
+// where a part's time goes: milliseconds and calls per page-interface method, in report.json
+function timed(driver, timing) {
+  const out = {};
+  for (const [k, f] of Object.entries(driver)) {
+    out[k] = typeof f !== 'function' || k === 'errors' ? f : async (...args) => {
+      const t0 = Date.now();
+      try { return await f(...args); } finally {
+        const t = timing[k] || (timing[k] = { ms: 0, calls: 0 });
+        t.ms += Date.now() - t0;
+        t.calls++;
+      }
+    };
+  }
+  return out;
+}
+
 function save(item, result) {
   mkdirSync(path.dirname(item.resultFile), { recursive: true });
   writeFileSync(item.resultFile, JSON.stringify(result, null, 1));
@@ -46,7 +62,7 @@ for (const item of plan.items) {
         // what has been done so far stays in the result if the time bound stops the part
         // the looking stops at 70% of the bound, so that a slow page is still judged on what was seen
         const deadline = started + 0.7 * rubric.timeoutSeconds * 1000;
-        graded = await gradePart(opened.driver, { part: item.part, rubric, deadline, progress: (what) => {
+        graded = await gradePart(timed(opened.driver, result.timing = {}), { part: item.part, rubric, deadline, progress: (what) => {
           result.reasons = [`the page did not finish within the rubric's bound of ${rubric.timeoutSeconds} s: stopped while ${what} (a click or frame that never returns?)`];
           save(item, result);
         } });

@@ -2,6 +2,7 @@
 // time frozen and the grader's instrumentation in, then click, step a slider, press a key, let
 // frames run, capture. The check page has its own implementation of the same interface for a
 // part in an iframe; drive.js knows neither.
+import { PNG } from 'pngjs';
 import { webgpuCaptureScript, readWebGPUFrame } from '../webgpu-capture.js';
 import { instrumentScript } from './instrument.js';
 import { serveSubmission } from './serve-submission.js';
@@ -38,7 +39,8 @@ export async function openPart(browser, { root, rel, origin, query = '', loadSec
     return { context, page, why: `it did not finish loading in ${loadSeconds} s (a script that never returns?)` };
   }
   if (!response || !response.ok()) return { context, page, why: `the page answered ${response ? response.status() : 'nothing'}` };
-  await page.waitForLoadState('networkidle', { timeout: 5000 }).catch(() => {});
+  // (no wait for the network to go quiet: drive.js waits for the first draw call, which comes after
+  // any shaders or models a page fetches)
   return { context, page, driver: playwrightDriver(page, log) };
 }
 
@@ -50,9 +52,10 @@ export function playwrightDriver(page, log) {
     /** The canvas as { width, height, api, data } (RGBA bytes), after the last WebGPU frame is copied; or null. */
     async snap() {
       await readWebGPUFrame(page);
-      const r = await page.evaluate(() => window.__grade.pixels());
+      const r = await page.evaluate(() => window.__grade.pixels('png'));
       if (!r) return null;
-      return { width: r.width, height: r.height, api: r.api, data: new Uint8Array(Buffer.from(r.rgba, 'base64')) };
+      const { data } = PNG.sync.read(Buffer.from(r.png.slice(r.png.indexOf(',') + 1), 'base64'));
+      return { width: r.width, height: r.height, api: r.api, data: new Uint8Array(data.buffer, data.byteOffset, data.length) };
     },
     controls: () => page.evaluate(() => window.__grade.controls()),
     /** Clicks a control; false when it is disabled or cannot be clicked, with why. */
