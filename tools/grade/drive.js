@@ -118,7 +118,7 @@ export async function gradePart(page, { part, rubric, progress = () => {}, deadl
     if (!after) return 'none';
     let later = after;
     if (watchMotion || moving) {
-      await tick(400);
+      await tick(400, 2); // three frames: an orbit a small step a frame shows it moved
       later = await shot();
     }
     const effect = effectOf({ before, after, later, wasMoving: moving }, T);
@@ -140,7 +140,7 @@ export async function gradePart(page, { part, rubric, progress = () => {}, deadl
   let trials = 0;
 
   // ---- the orbit: is the picture moving? sample it where lit, then stop it; or start it ----
-  await tick(500);
+  await tick(500, 2); // three frames, as above
   const second = await shot();
   moving = pictureChange(cur.img, second.img) > 0.001;
   cur = second;
