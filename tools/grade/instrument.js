@@ -150,7 +150,7 @@ export function instrumentScript() {
   g.state = () => ({ api: g.api, frames: window.__webgpuCapture ? window.__webgpuCapture.frames : 0, adapter: g.adapter, draws: g.draws,
     shaderErrors: [...g.shaderErrors], gpuErrors: [...g.gpuErrors], faces: { ...g.faces } });
 
-  /** The target canvas (the largest visible one) as base64 RGBA, composited over white. */
+  /** The target canvas (the largest visible one), composited over white: a PNG data URL with format 'png' (the grader, which sends it out of the page), else base64 RGBA (the check page, in the page). */
   g.pixels = (format) => {
     const all = [...document.querySelectorAll('canvas')].filter((c) => c.width > 0 && c.height > 0 && c.getClientRects().length);
     if (!all.length) return null;
