@@ -5,14 +5,6 @@
 // (tools/webgpu-capture.js), window.__checkClock (check/frame-clock.js), window.__checkWatch
 // (check/frame-watch.js).
 
-/** Base64 RGBA (as window.__grade.pixels() gives it) to bytes. */
-function bytesOf(b64) {
-  const s = atob(b64);
-  const out = new Uint8Array(s.length);
-  for (let k = 0; k < s.length; k++) out[k] = s.charCodeAt(k);
-  return out;
-}
-
 /**
  * @param {HTMLIFrameElement} frame a part's frame, loaded
  * @param {{ errors: string[], blocked: string[], notes: string[] }} log what the check page's
@@ -31,7 +23,6 @@ export function framePage(frame, log) {
     for (let k = 0; s && k < 100 && s.pending; k++) await s.pending;
   };
   const newTask = () => { const w = watch(); if (w.newTask) w.newTask(); }; // check/frame-watch.js's loop guard
-  const control = (c) => win().document.querySelector(`[data-grade-control="${c.index}"]`);
 
   return {
     async state() {
@@ -40,32 +31,15 @@ export function framePage(frame, log) {
     async snap() {
       await settle();
       const r = g().pixels();
-      return r ? { width: r.width, height: r.height, api: r.api, data: bytesOf(r.rgba) } : null;
+      return r ? { width: r.width, height: r.height, api: r.api, data: new Uint8Array(r.data) } : null; // (a copy out of the frame's realm)
     },
     async controls() {
       return plain(g().controls());
     },
-    /** A click as a user's: pointer and mouse down and up at the control's centre, then click. { ok, why }. */
+    /** A click as a user's (window.__grade.click): { ok, why }. */
     async click(c) {
       newTask();
-      const el = control(c);
-      if (!el) return { ok: false, why: 'it is no longer on the page' };
-      if (el.disabled) return { ok: false, why: 'it is disabled' };
-      el.scrollIntoView({ block: 'center', inline: 'center' });
-      const r = el.getBoundingClientRect();
-      const x = r.left + r.width / 2, y = r.top + r.height / 2;
-      const hit = win().document.elementFromPoint(x, y);
-      if (!r.width || !r.height) return { ok: false, why: 'it is not visible' };
-      if (!hit || !(hit === el || el.contains(hit) || hit.control === el)) return { ok: false, why: `another element (${hit ? hit.tagName.toLowerCase() : 'none'}) covers it` };
-      const W = win();
-      const opts = { bubbles: true, cancelable: true, composed: true, clientX: x, clientY: y, button: 0, view: W };
-      el.dispatchEvent(new W.PointerEvent('pointerdown', { ...opts, buttons: 1, pointerType: 'mouse', isPrimary: true }));
-      el.dispatchEvent(new W.MouseEvent('mousedown', { ...opts, buttons: 1 }));
-      if (el.focus) el.focus();
-      el.dispatchEvent(new W.PointerEvent('pointerup', { ...opts, pointerType: 'mouse', isPrimary: true }));
-      el.dispatchEvent(new W.MouseEvent('mouseup', opts));
-      el.click();
-      return { ok: true };
+      return plain(g().click(c.index));
     },
     async setValue(c, value, events) {
       newTask();

@@ -4,7 +4,7 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { partNumber } from '../../tools/grade/parts.js';
 import { findStandIn, typeOf } from '../../tools/grade/standin.js';
-import { analyse, diffuseFit, samples, highlightSeen } from '../../tools/grade/judge.js';
+import { analyse, diffuseFit, samples, highlightSeen, openMask } from '../../tools/grade/judge.js';
 import { effectOf, nameRole, trialOrder } from '../../tools/grade/controls.js';
 import { checkList, verdictOf, reasonsOf } from '../../tools/grade/verdict.js';
 import { parseLabels, agreement, agreementText } from '../../tools/grade/labels.js';
@@ -76,6 +76,41 @@ test('names only order the trials: the control named for a role first, unnamed o
   assert.deepEqual(trialOrder(cs, 'subdivide', P).map((c) => c.index), [0, 3, 1, 2]);
   assert.equal(nameRole(cs[2], P), 'orbit');
   assert.equal(nameRole({ index: 9, type: 'range', id: 'shininessSlider', text: 'Shininess' }, P), 's');
+});
+
+test('openMask is a morphological opening by a (2r + 1)² square, outside the picture counting as empty', () => {
+  // the definition, pixel by pixel: erode (every pixel of the square set), then dilate (any set)
+  const byDefinition = (m, w, h, r) => {
+    const at = (src, x, y) => (x >= 0 && y >= 0 && x < w && y < h ? src[y * w + x] : 0);
+    const over = (src, all) => {
+      const out = new Uint8Array(w * h);
+      for (let y = 0; y < h; y++) for (let x = 0; x < w; x++) {
+        let v = all ? 1 : 0;
+        for (let dy = -r; dy <= r; dy++) for (let dx = -r; dx <= r; dx++) v = all ? v & at(src, x + dx, y + dy) : v | at(src, x + dx, y + dy);
+        out[y * w + x] = v;
+      }
+      return out;
+    };
+    return over(over(m, true), false);
+  };
+  let seed = 7;
+  const rnd = () => ((seed = (seed * 1103515245 + 12345) % 2147483648) / 2147483648);
+  for (const [w, h, r, density] of [[37, 23, 2, 0.8], [16, 40, 1, 0.6], [30, 30, 3, 0.9], [5, 4, 2, 1]]) {
+    const m = Uint8Array.from({ length: w * h }, () => (rnd() < density ? 1 : 0));
+    assert.deepEqual([...openMask(m.slice(), w, h, r)], [...byDefinition(m, w, h, r)], `${w}×${h}, r ${r}`);
+  }
+});
+
+test('diffuseFit finds the light of a diffuse sphere, and its ambient and diffuse terms', () => {
+  const l = [-0.7, 0.4, 0.45].map((v, k, a) => v / Math.hypot(...a));
+  const shade = (nx, ny, nz) => { const v = 0.45 + 0.5 * Math.max(0, nx * l[0] + ny * l[1] + nz * l[2]); return [v, v, v]; };
+  const img = polygon(128, { w: 160, r: 64, shade }); // (the darkest side stays clear of the grey background)
+  const fit = diffuseFit(samples(img, analyse(img, T)), T);
+  const angle = (180 / Math.PI) * Math.acos(Math.min(1, fit.light.reduce((a, v, k) => a + v * l[k], 0)));
+  assert.ok(angle < 3, `light ${fit.light} is ${angle}° off`);
+  assert.ok(fit.r2 > 0.98, `R² ${fit.r2}`);
+  assert.ok(Math.abs(fit.ambient - 0.45) < 0.03 && Math.abs(fit.diffuse - 0.5) < 0.05, `ambient ${fit.ambient}, diffuse ${fit.diffuse}`);
+  assert.ok(fit.r2 > fit.r2TwoSided, 'one-sided fits a one-sided light better than |n·l|');
 });
 
 test('a small tinted highlight that stands out of a clean diffuse fit is a highlight; a plain diffuse sphere has none', () => {

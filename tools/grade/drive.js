@@ -18,16 +18,19 @@ const LEVEL_KEYS = [['ArrowUp', 'ArrowDown'], ['+', '-'], ['ArrowRight', 'ArrowL
 
 /**
  * Grades one opened part. `page` is the page interface; `rubric` the grader's rubric; `part`
- * WP04P1 … WP04P5. Returns { fail, checks, actions, controls, numbers, images, api, canvas, busy }:
+ * WP04P1 … WP04P5. Returns { fail, checks, actions, controls, numbers, images, api, canvas, timing, busy }:
  * `fail` (a reason) when the part cannot be judged at all (nothing drawn, no canvas), `checks` the
  * findings ({ level, reason }), `images` the pictures taken (first, judged, coarse, leastS),
- * `busy` the milliseconds spent letting the page draw. `progress(text)` hears what is being tried.
+ * `timing` where the time went (`timing`, filled as it goes when given), `busy` the milliseconds
+ * spent letting the page draw. `progress(text)` hears what is being tried.
  */
-export async function gradePart(page, { part, rubric, progress = () => {}, deadline = Infinity }) {
+export async function gradePart(page, { part, rubric, progress = () => {}, deadline = Infinity, timing = {} }) {
   const T = rubric.thresholds;
   const must = new Set((rubric.parts[part] || {}).must || []);
   const { checks, say } = checkList(rubric);
-  const out = { fail: null, checks, actions: [], controls: {}, numbers: {}, images: {}, api: null, canvas: null, busy: 0 };
+  const out = { fail: null, checks, actions: [], controls: {}, numbers: {}, images: {}, api: null, canvas: null, timing,
+    get busy() { return timing.tick ? timing.tick.ms : 0; } };
+  page = timed(page, timing);
   const actions = out.actions;
   let frameMs = 16; // what a frame of this page costs here, from the last frames run
   // a jump (one frame) and then one frame more: a change made in a click or input handler is drawn
@@ -36,7 +39,6 @@ export async function gradePart(page, { part, rubric, progress = () => {}, deadl
     const t0 = Date.now();
     await page.tick(ms, frames);
     const took = Date.now() - t0;
-    out.busy += took;
     frameMs = Math.max(1, took / (frames + 1));
   };
   const shot = async () => {
@@ -738,6 +740,28 @@ export async function gradePart(page, { part, rubric, progress = () => {}, deadl
       say('review', `s = ${lo} gives black spots inside the sphere (${fmt(100 * spots.share, 1)}% of it darker than diffuse + ambient): pow(0, 0) is undefined; guard it (e.g. cos φ > 0 ? pow(cos φ, s) : 0)`);
     } else say('pass', `s = ${lo} leaves no dark spots inside the sphere (pow(0, 0) guarded)`);
   }
+}
+
+/**
+ * The page interface with each call's milliseconds and count added up in `timing` ({ method: { ms,
+ * calls } }): where a part's time goes, in report.json and on the check page.
+ */
+export function timed(page, timing) {
+  const out = {};
+  for (const [k, f] of Object.entries(page)) {
+    out[k] = typeof f !== 'function' || k === 'errors' ? f : async (...args) => {
+      const t0 = Date.now();
+      try { return await f(...args); } finally { addTime(timing, k, Date.now() - t0); }
+    };
+  }
+  return out;
+}
+
+/** Adds `ms` to `timing[what]`. */
+export function addTime(timing, what, ms) {
+  const t = timing[what] || (timing[what] = { ms: 0, calls: 0 });
+  t.ms += ms;
+  t.calls++;
 }
 
 const effectWords = {

@@ -8,7 +8,7 @@ import path from 'node:path';
 import { PNG } from 'pngjs';
 import { compareImages } from './compare.js';
 import { openPart } from './playwright-page.js';
-import { gradePart } from './drive.js';
+import { gradePart, addTime } from './drive.js';
 import { verdictOf, reasonsOf } from './verdict.js';
 import { referenceQuery, referenceStateOf } from './reference-state.js';
 
@@ -19,22 +19,6 @@ function png(img) {
   const p = new PNG({ width: img.width, height: img.height });
   p.data.set(img.data);
   return PNG.sync.write(p);
-}
-
-// where a part's time goes: milliseconds and calls per page-interface method, in report.json
-function timed(driver, timing) {
-  const out = {};
-  for (const [k, f] of Object.entries(driver)) {
-    out[k] = typeof f !== 'function' || k === 'errors' ? f : async (...args) => {
-      const t0 = Date.now();
-      try { return await f(...args); } finally {
-        const t = timing[k] || (timing[k] = { ms: 0, calls: 0 });
-        t.ms += Date.now() - t0;
-        t.calls++;
-      }
-    };
-  }
-  return out;
 }
 
 function save(item, result) {
@@ -55,14 +39,19 @@ for (const item of plan.items) {
     const started = Date.now();
     let graded = { fail: null, checks: [], actions: [], images: {}, busy: 0 };
     let opened;
+    // where the part's time goes: opening it, each page-interface call, closing it, writing the pictures
+    const timing = result.timing = {};
+    const phase = (what, t0) => addTime(timing, what, Date.now() - t0);
     try {
+      const t0 = Date.now();
       opened = await openPart(browser, { root: item.root, rel: item.page, origin: 'http://submission.localhost', loadSeconds: rubric.loadSeconds ?? 20, log: result });
+      phase('open', t0);
       if (opened.why) graded.fail = `the page could not be opened: ${opened.why}`;
       else {
         // what has been done so far stays in the result if the time bound stops the part
         // the looking stops at 70% of the bound, so that a slow page is still judged on what was seen
         const deadline = started + 0.7 * rubric.timeoutSeconds * 1000;
-        graded = await gradePart(timed(opened.driver, result.timing = {}), { part: item.part, rubric, deadline, progress: (what) => {
+        graded = await gradePart(opened.driver, { part: item.part, rubric, deadline, timing, progress: (what) => {
           result.reasons = [`the page did not finish within the rubric's bound of ${rubric.timeoutSeconds} s: stopped while ${what} (a click or frame that never returns?)`];
           save(item, result);
         } });
@@ -72,7 +61,9 @@ for (const item of plan.items) {
       // the grader's own trouble with this page: never a pass on it, a teacher looks
       graded.checks = [{ level: 'review', reason: `the grader could not finish on this page: ${err.message.split('\n')[0]}` }];
     } finally {
+      const t0 = Date.now();
       if (opened) await opened.context.close().catch(() => {});
+      phase('close', t0);
     }
     const seconds = (Date.now() - started) / 1000;
     Object.assign(result, { api: graded.api ?? null, canvas: graded.canvas, controls: graded.controls || {}, numbers: graded.numbers || {} });
@@ -86,10 +77,12 @@ for (const item of plan.items) {
     const dir = path.dirname(item.resultFile);
     const stem = path.basename(item.resultFile, '.json');
     result.images = {};
+    const t0 = Date.now();
     for (const [k, im] of Object.entries(graded.images)) {
       writeFileSync(path.join(dir, `${stem}-${k}.png`), png(im));
       result.images[k] = `${stem}-${k}.png`;
     }
+    phase('write', t0);
     save(item, result);
 
     // our reference at the student's size, beside theirs: evidence, not the verdict

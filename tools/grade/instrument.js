@@ -150,7 +150,7 @@ export function instrumentScript() {
   g.state = () => ({ api: g.api, frames: window.__webgpuCapture ? window.__webgpuCapture.frames : 0, adapter: g.adapter, draws: g.draws,
     shaderErrors: [...g.shaderErrors], gpuErrors: [...g.gpuErrors], faces: { ...g.faces } });
 
-  /** The target canvas (the largest visible one), composited over white: a PNG data URL with format 'png' (the grader, which sends it out of the page), else base64 RGBA (the check page, in the page). */
+  /** The target canvas (the largest visible one), composited over white: a PNG data URL with format 'png' (the grader, which sends it out of the page: a tenth of the raw bytes, lossless), else its RGBA bytes (the check page, in the page). */
   g.pixels = (format) => {
     const all = [...document.querySelectorAll('canvas')].filter((c) => c.width > 0 && c.height > 0 && c.getClientRects().length);
     if (!all.length) return null;
@@ -163,13 +163,32 @@ export function instrumentScript() {
     c2.fillRect(0, 0, copy.width, copy.height);
     c2.drawImage(canvas, 0, 0);
     const api = canvas.getAttribute('data-grade-api');
-    // a PNG of the opaque copy (lossless, the same bytes as getImageData): a tenth of the raw bytes to
-    // send to the grader, which costs less than sending them raw
     if (format === 'png') return { width: copy.width, height: copy.height, api, png: copy.toDataURL('image/png') };
-    const data = c2.getImageData(0, 0, copy.width, copy.height).data;
-    let s = '';
-    for (let k = 0; k < data.length; k += 0x8000) s += String.fromCharCode.apply(null, data.subarray(k, k + 0x8000));
-    return { width: copy.width, height: copy.height, api, rgba: btoa(s) };
+    return { width: copy.width, height: copy.height, api, data: c2.getImageData(0, 0, copy.width, copy.height).data };
+  };
+
+  /**
+   * A click as a user's, on control `index`: pointer and mouse down and up at its centre, then
+   * click (which toggles a checkbox). { ok, why }: not when it is disabled, hidden or covered.
+   */
+  g.click = (index) => {
+    const el = document.querySelector(`[data-grade-control="${index}"]`);
+    if (!el) return { ok: false, why: 'it is no longer on the page' };
+    if (el.disabled) return { ok: false, why: 'it is disabled' };
+    el.scrollIntoView({ block: 'center', inline: 'center' });
+    const r = el.getBoundingClientRect();
+    if (!r.width || !r.height) return { ok: false, why: 'it is not visible' };
+    const x = r.left + r.width / 2, y = r.top + r.height / 2;
+    const hit = document.elementFromPoint(x, y);
+    if (!hit || !(hit === el || el.contains(hit) || hit.control === el)) return { ok: false, why: `another element (${hit ? hit.tagName.toLowerCase() : 'none'}) covers it` };
+    const opts = { bubbles: true, cancelable: true, composed: true, clientX: x, clientY: y, button: 0, view: window };
+    el.dispatchEvent(new PointerEvent('pointerdown', { ...opts, buttons: 1, pointerType: 'mouse', isPrimary: true }));
+    el.dispatchEvent(new MouseEvent('mousedown', { ...opts, buttons: 1 }));
+    if (el.focus) el.focus();
+    el.dispatchEvent(new PointerEvent('pointerup', { ...opts, pointerType: 'mouse', isPrimary: true }));
+    el.dispatchEvent(new MouseEvent('mouseup', opts));
+    el.click();
+    return { ok: true };
   };
 
   /** The words right before a control (and after it, for a checkbox), up to a line break or another control. */

@@ -19,11 +19,13 @@ export function analyse(img, rubric = {}) {
   const bg = [(top >> 16 & 63) * 4 + 2, (top >> 8 & 63) * 4 + 2, (top & 63) * 4 + 2];
   const n = w * h;
   const raw = new Uint8Array(n);
-  let colours = new Set();
+  const first = data[0] << 16 | data[1] << 8 | data[2];
+  let oneColour = true;
+  const b0 = bg[0], b1 = bg[1], b2 = bg[2];
   for (let p = 0; p < n; p++) {
-    const o = 4 * p;
-    if (colours.size < 3) colours.add(data[o] << 16 | data[o + 1] << 8 | data[o + 2]);
-    if (Math.abs(data[o] - bg[0]) + Math.abs(data[o + 1] - bg[1]) + Math.abs(data[o + 2] - bg[2]) > tol) raw[p] = 1;
+    const o = 4 * p, r = data[o], g = data[o + 1], b = data[o + 2];
+    if (oneColour && (r << 16 | g << 8 | b) !== first) oneColour = false;
+    if (Math.abs(r - b0) + Math.abs(g - b1) + Math.abs(b - b2) > tol) raw[p] = 1;
   }
   openMask(raw, w, h, rubric.thinLine ?? 2);
   // the largest 4-connected component is the object (text or a second canvas element aside)
@@ -53,7 +55,7 @@ export function analyse(img, rubric = {}) {
     if (label[p] === bestLabel && best) { mask[p] = 1; sx += p % w; sy += Math.floor(p / w); }
   }
   const area = best;
-  const result = { width: w, height: h, bg, area, coverage: area / n, oneColour: colours.size === 1, mask };
+  const result = { width: w, height: h, bg, area, coverage: area / n, oneColour, mask };
   if (area < Math.max(30, (rubric.minCoverage ?? 0.002) * n)) return { ...result, blank: true };
   const cx = sx / area + 0.5, cy = sy / area + 0.5;
   // radial profile: the farthest object pixel along 72 rays from the centroid
@@ -90,20 +92,30 @@ export function analyse(img, rubric = {}) {
 export function openMask(mask, w, h, r) {
   if (!r) return mask;
   const tmp = new Uint8Array(mask.length);
-  // erode then dilate, each as a horizontal and a vertical pass of a 1-D min (max) over 2r + 1
+  // erode then dilate, each as a horizontal and a vertical pass of a 1-D min (max) over 2r + 1,
+  // read off a count of ones in the window (outside the picture counts as 0); the vertical pass
+  // keeps a count per column and goes down the rows
+  const full = 2 * r + 1;
+  const count = new Int32Array(w + 1), col = new Int32Array(w);
   const pass = (src, dst, horizontal, keep) => {
-    const [n1, n2] = horizontal ? [h, w] : [w, h];
-    for (let a = 0; a < n1; a++) {
-      for (let b = 0; b < n2; b++) {
-        let v = keep ? 1 : 0;
-        for (let d = -r; d <= r; d++) {
-          const bb = b + d;
-          const inside = bb >= 0 && bb < n2;
-          const px = inside ? (horizontal ? src[a * w + bb] : src[bb * w + a]) : 0;
-          if (keep ? !px : px) { v = keep ? 0 : 1; break; }
+    if (horizontal) {
+      for (let y = 0, o = 0; y < h; y++, o += w) {
+        for (let x = 0; x < w; x++) count[x + 1] = count[x] + src[o + x];
+        for (let x = 0; x < w; x++) {
+          const lo = x - r, hi = x + r;
+          const ones = count[hi < w ? hi + 1 : w] - count[lo > 0 ? lo : 0];
+          dst[o + x] = keep ? (ones === full ? 1 : 0) : (ones > 0 ? 1 : 0); // (a window cut by the edge never holds full)
         }
-        dst[horizontal ? a * w + b : b * w + a] = v;
       }
+      return;
+    }
+    col.fill(0);
+    for (let y = 0; y < r && y < h; y++) for (let x = 0; x < w; x++) col[x] += src[y * w + x];
+    for (let y = 0; y < h; y++) {
+      const add = y + r, drop = y - r - 1;
+      if (add < h) for (let x = 0, o = add * w; x < w; x++) col[x] += src[o + x];
+      if (drop >= 0) for (let x = 0, o = drop * w; x < w; x++) col[x] -= src[o + x];
+      for (let x = 0, o = y * w; x < w; x++) dst[o + x] = keep ? (col[x] === full ? 1 : 0) : (col[x] > 0 ? 1 : 0);
     }
   };
   pass(mask, tmp, true, true);
@@ -227,27 +239,43 @@ function fibonacciDirections(n) {
 }
 const DIRS = fibonacciDirections(500);
 
-function fitDirection(pts, use, l, twoSided = false) {
-  // brightness ≈ a + b max(n·l, 0) (or a + b |n·l|, lit on both sides): linear in (a, b) for a given l
-  const f = twoSided ? Math.abs : (v) => Math.max(0, v);
-  let n = 0, sx = 0, sy = 0, sxx = 0, sxy = 0;
-  for (let i = 0; i < pts.length; i++) {
-    if (!use[i]) continue;
+/** The samples where `use` is set, as flat arrays (normals, brightness), which every fit below reads. */
+function flat(pts, use) {
+  let m = 0;
+  for (let i = 0; i < pts.length; i++) if (!use || use[i]) m++;
+  const nx = new Float64Array(m), ny = new Float64Array(m), nz = new Float64Array(m), y = new Float64Array(m);
+  for (let i = 0, j = 0; i < pts.length; i++) {
+    if (use && !use[i]) continue;
     const s = pts[i];
-    const x = f(s.n[0] * l[0] + s.n[1] * l[1] + s.n[2] * l[2]), y = s.y;
-    n++; sx += x; sy += y; sxx += x * x; sxy += x * y;
+    nx[j] = s.n[0]; ny[j] = s.n[1]; nz[j] = s.n[2]; y[j] = s.y;
+    j++;
   }
-  const den = n * sxx - sx * sx;
-  const b = den > 1e-9 ? (n * sxy - sx * sy) / den : 0;
-  const a = (sy - b * sx) / n;
-  let sse = 0;
-  for (let i = 0; i < pts.length; i++) {
-    if (!use[i]) continue;
-    const s = pts[i];
-    const x = f(s.n[0] * l[0] + s.n[1] * l[1] + s.n[2] * l[2]);
-    sse += (s.y - a - b * x) ** 2;
+  let sy = 0, syy = 0;
+  for (let j = 0; j < m; j++) { sy += y[j]; syy += y[j] * y[j]; }
+  return { m, nx, ny, nz, y, sy, syy };
+}
+
+function fitDirection(F, l, twoSided = false) {
+  // brightness ≈ a + b max(n·l, 0) (or a + b |n·l|, lit on both sides): linear in (a, b) for a given l;
+  // one pass: at the least-squares (a, b) the residual is Σy² − a Σy − b Σxy
+  const { m, nx, ny, nz, y, sy, syy } = F;
+  const l0 = l[0], l1 = l[1], l2 = l[2];
+  let sx = 0, sxx = 0, sxy = 0;
+  if (twoSided) {
+    for (let i = 0; i < m; i++) {
+      const x = Math.abs(nx[i] * l0 + ny[i] * l1 + nz[i] * l2);
+      sx += x; sxx += x * x; sxy += x * y[i];
+    }
+  } else {
+    for (let i = 0; i < m; i++) {
+      const x = nx[i] * l0 + ny[i] * l1 + nz[i] * l2;
+      if (x > 0) { sx += x; sxx += x * x; sxy += x * y[i]; }
+    }
   }
-  return { a, b, sse, l };
+  const den = m * sxx - sx * sx;
+  const b = den > 1e-9 ? (m * sxy - sx * sy) / den : 0;
+  const a = (sy - b * sx) / m;
+  return { a, b, sse: Math.max(0, syy - a * sy - b * sxy), l };
 }
 
 /**
@@ -262,31 +290,32 @@ export function diffuseFit(pts, rubric = {}) {
   const sst = pts.reduce((a, s) => a + (s.y - meanY) ** 2, 0);
   // a pixel clipped at white (a channel at 1) says only "at least this bright": left out of the fit
   // while enough are left (a washed-out material), kept for the highlight above it
-  const unclipped = pts.map((s) => Math.max(...s.c) < 0.99);
-  let use = unclipped.filter(Boolean).length >= Math.max(20, 0.3 * pts.length) ? unclipped : pts.map(() => true);
+  const unclipped = Uint8Array.from(pts, (s) => Math.max(...s.c) < 0.99);
+  let use = unclipped.reduce((a, v) => a + v, 0) >= Math.max(20, 0.3 * pts.length) ? unclipped : new Uint8Array(pts.length).fill(1);
   const use0 = use;
   let best = null, sseAll = null;
   const highlightMargin = rubric.highlightMargin ?? 0.12;
   for (let pass = 0; pass < 2; pass++) {
     best = null;
+    const F = flat(pts, use);
     for (const l of DIRS) {
-      const f = fitDirection(pts, use, l);
+      const f = fitDirection(F, l);
       if (f.b >= 0 && (!best || f.sse < best.sse)) best = f;
     }
     // refine around the best direction
     for (let step = 0.1; step > 0.005; step /= 2) {
       for (const d of [[1, 0, 0], [-1, 0, 0], [0, 1, 0], [0, -1, 0], [0, 0, 1], [0, 0, -1]]) {
         const l = best.l.map((v, k) => v + step * d[k]), len = Math.hypot(...l);
-        const f = fitDirection(pts, use, l.map((v) => v / len));
+        const f = fitDirection(F, l.map((v) => v / len));
         if (f.b >= 0 && f.sse < best.sse) best = f;
       }
     }
     if (pass === 0) {
       sseAll = best.sse;
-      use = pts.map((s, i) => use0[i] && s.y - (best.a + best.b * Math.max(0, s.n[0] * best.l[0] + s.n[1] * best.l[1] + s.n[2] * best.l[2])) < highlightMargin * 0.7);
+      use = Uint8Array.from(pts, (s, i) => use0[i] && s.y - (best.a + best.b * Math.max(0, s.n[0] * best.l[0] + s.n[1] * best.l[1] + s.n[2] * best.l[2])) < highlightMargin * 0.7);
     }
   }
-  const used = use.filter(Boolean).length;
+  const used = use.reduce((a, v) => a + v, 0);
   const meanU = pts.reduce((a, s, i) => a + (use[i] ? s.y : 0), 0) / Math.max(1, used);
   const sstU = pts.reduce((a, s, i) => a + (use[i] ? (s.y - meanU) ** 2 : 0), 0);
   // the highlight: how far above the diffuse fit a pixel is, as a share of the headroom left to
@@ -294,11 +323,11 @@ export function diffuseFit(pts, rubric = {}) {
   const hl = highlightOf(pts, (n) => best.a + best.b * Math.max(0, n[0] * best.l[0] + n[1] * best.l[1] + n[2] * best.l[2]), rubric);
   // the same pixels under a two-sided model: a page lit on both sides (|n·w_i|) fits it better
   let twoSided = null, twoSidedAll = null;
-  const all = pts.map(() => true);
+  const Fuse = flat(pts, use), Fall = flat(pts, null);
   for (const l of DIRS) {
-    const f = fitDirection(pts, use, l, true);
+    const f = fitDirection(Fuse, l, true);
     if (f.b >= 0 && (!twoSided || f.sse < twoSided.sse)) twoSided = f;
-    const g = fitDirection(pts, all, l, true);
+    const g = fitDirection(Fall, l, true);
     if (g.b >= 0 && (!twoSidedAll || g.sse < twoSidedAll.sse)) twoSidedAll = g;
   }
   // ... and both models over all pixels, none left out as a highlight
@@ -481,7 +510,7 @@ export function pointLightFit(pts, rubric = {}) {
       use = pts.map((s, i) => use0[i] && Math.min(s.y - none.a - none.b * none.xs[i], s.y - inv.a - inv.b * inv.xs[i]) < margin);
     }
   }
-  const used = use.filter(Boolean).length;
+  const used = use.reduce((a, v) => a + v, 0);
   const mean = pts.reduce((a, s, i) => a + (use[i] ? s.y : 0), 0) / used;
   const sst = pts.reduce((a, s, i) => a + (use[i] ? (s.y - mean) ** 2 : 0), 0);
   const brief = (f) => {
