@@ -588,6 +588,7 @@ export async function gradePart(page, { part, rubric, progress = () => {}, deadl
   // highlight is what rises above the point-light model (a page without a specular term has none)
   const nearModel = clearlyNearFalloff(pointLight, T) ? pointLight.falloff.model : null;
   if (fit && nearModel) Object.assign(fit, { highlightPeak: pointLight.falloff.highlightPeak, highlightRise: pointLight.falloff.highlightRise });
+  const lightAngle = (f) => (180 / Math.PI) * Math.acos(Math.max(-1, Math.min(1, f.light[2]))); // the light's angle from the viewer (+z)
   if (must.has('highlight') && fit) {
     // not seen where judged: the other lit views seen on the orbit may show it (a highlight on the rim, or behind)
     let seen = highlightSeen(fit, T) ? { fit, where: 'the judged view' } : null;
@@ -615,12 +616,25 @@ export async function gradePart(page, { part, rubric, progress = () => {}, deadl
     }
     out.numbers.highlightViews = 1 + views.length;
     if (seen) say('pass', `a specular highlight in ${seen.where} (up to ${fmt(100 * seen.fit.highlightPeak, 0)}% of the way from the diffuse fit to white, ${fmt(seen.fit.highlightRise, 2)} above it)`);
-    // where it is: at w_h, halfway between the light and the viewer (the slides' w_r · w_o peaks there too)
-    const offset = seen && !nearModel ? highlightOffset(seen.fit.highlightNormal, seen.fit.light) : null;
-    if (offset !== null) {
-      out.numbers.highlightOffset = offset;
-      if (offset > T.highlightPlaceDegrees) say('mistake', `the highlight is ${fmt(offset, 0)}° from where the model puts it (at the normal halfway between the light, fitted at ${seen.fit.light.map((v) => fmt(v)).join(', ')}, and the viewer): is w_o the direction from the surface to the eye, in the same space as n and w_i?`);
-      else say('pass', `the highlight sits where the normal is halfway between the light and the viewer (${fmt(offset, 0)}° off)`);
+    // where it is: at w_h, halfway between the light and the viewer (the slides' w_r · w_o peaks there
+    // too). w_h and w_i are half the light's angle from the viewer apart, so a view with the light
+    // well away from the viewer tells them apart best: of the views that show the highlight over a
+    // clean diffuse fit (the light is read from it), the one with the light farthest from the viewer
+    if (seen && !nearModel) {
+      const clean = (f) => f.r2 >= T.diffuseR2;
+      let place = seen;
+      for (const v of views) {
+        const f = diffuseFit(samples(v.img, v.an), T);
+        if (f && highlightSeen(f, T) && clean(f) && (!clean(place.fit) || lightAngle(f) > lightAngle(place.fit))) place = { fit: f, where: 'a lit view along the orbit' };
+      }
+      const offset = highlightOffset(place.fit.highlightNormal, place.fit.light);
+      if (offset !== null) {
+        out.numbers.highlightOffset = offset;
+        const near = lightAngle(place.fit) < T.highlightPlaceLightDegrees;
+        const where = `in ${place.where}, the light ${fmt(lightAngle(place.fit), 0)}° from the viewer`;
+        if (offset > T.highlightPlaceDegrees) say('mistake', `the highlight is ${fmt(offset, 0)}° from where the model puts it (at the normal halfway between the light, fitted at ${place.fit.light.map((v) => fmt(v)).join(', ')}, and the viewer; ${where}): is w_o the direction from the surface to the eye, in the same space as n and w_i?`);
+        else say('pass', `the highlight sits where the normal is halfway between the light and the viewer (${fmt(offset, 0)}° off, ${where}${near ? `; with the light this near the viewer that halfway normal is only ${fmt(lightAngle(place.fit) / 2, 0)}° from the light, so a highlight at the light would pass too` : ''})`);
+      }
     }
     if (!seen) say('mistake', `no specular highlight: nothing brighter than the diffuse fit (${fmt(fit.highlightPeak)}) in ${1 + views.length} views (the judged one${views.length ? ' and the lit ones along the orbit' : ''})`);
   }
