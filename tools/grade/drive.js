@@ -609,7 +609,7 @@ export async function gradePart(page, { part, rubric, progress = () => {}, deadl
         const sh = await shot();
         const f = sh && !sh.an.blank ? diffuseFit(samples(sh.img, sh.an), T) : null;
         actions.push(`set ${describe(c)} to ${to(c)} to look for a highlight${f && highlightSeen(f, T) ? ': one shows' : ''}`);
-        if (f && highlightSeen(f, T)) seen = { fit: f, where: `the judged view with ${set.map((x) => nameRole(x, P)).join(' and ')} set by the page's own slider${set.length > 1 ? 's' : ''}` };
+        if (f && highlightSeen(f, T)) seen = { fit: f, broad: set.some((x) => nameRole(x, P) === 's'), where: `the judged view with ${set.map((x) => nameRole(x, P)).join(' and ')} set by the page's own slider${set.length > 1 ? 's' : ''}` };
       }
       for (const c of set) await page.setValue(c, c.value, ['input', 'change']);
       if (set.length) await tick(100);
@@ -619,17 +619,20 @@ export async function gradePart(page, { part, rubric, progress = () => {}, deadl
     // where it is: at w_h, halfway between the light and the viewer (the slides' w_r · w_o peaks there
     // too). w_h and w_i are half the light's angle from the viewer apart, so a view with the light
     // well away from the viewer tells them apart best: of the views that show the highlight over a
-    // clean diffuse fit (the light is read from it), the one with the light farthest from the viewer
+    // clean diffuse fit (the light is read from it), the one with the light farthest from the viewer.
+    // Not where we lowered s: a highlight made broad by s = 10 is half taken into the diffuse fit,
+    // which then reads the light (and w_h) toward it
     if (seen && !nearModel) {
       const clean = (f) => f.r2 >= T.diffuseR2;
-      let place = seen;
+      let place = seen.broad ? null : seen;
       for (const v of views) {
         const f = diffuseFit(samples(v.img, v.an), T);
-        if (f && highlightSeen(f, T) && clean(f) && (!clean(place.fit) || lightAngle(f) > lightAngle(place.fit))) place = { fit: f, where: 'a lit view along the orbit' };
+        if (f && highlightSeen(f, T) && clean(f) && (!place || !clean(place.fit) || lightAngle(f) > lightAngle(place.fit))) place = { fit: f, where: 'a lit view along the orbit' };
       }
-      const offset = highlightOffset(place.fit.highlightNormal, place.fit.light);
+      const offset = place ? highlightOffset(place.fit.highlightNormal, place.fit.light) : null;
+      if (!place) say('pass', 'note: the highlight\'s place is not judged: it shows only with s lowered by the page\'s own slider, which makes it too broad to place');
       if (offset !== null) {
-        out.numbers.highlightOffset = offset;
+        Object.assign(out.numbers, { highlightOffset: offset, highlightPlaceLight: lightAngle(place.fit) });
         const near = lightAngle(place.fit) < T.highlightPlaceLightDegrees;
         const where = `in ${place.where}, the light ${fmt(lightAngle(place.fit), 0)}° from the viewer`;
         if (offset > T.highlightPlaceDegrees) say('mistake', `the highlight is ${fmt(offset, 0)}° from where the model puts it (at the normal halfway between the light, fitted at ${place.fit.light.map((v) => fmt(v)).join(', ')}, and the viewer; ${where}): is w_o the direction from the surface to the eye, in the same space as n and w_i?`);
