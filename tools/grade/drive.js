@@ -600,7 +600,8 @@ export async function gradePart(page, { part, rubric, progress = () => {}, deadl
     if (!seen && !nearModel && !late('raising ks to look for a highlight')) {
       const ctl = (role) => controls.find((x) => !taken.has(x.index) && (x.type === 'range' || x.type === 'number') && nameRole(x, P) === role);
       const set = [];
-      for (const [role, to] of [['ks', (c) => Number(c.max === '' || c.max === undefined ? 1 : c.max)], ['s', (c) => Math.max(Number(c.min || 0) + 1, Math.min(10, Number(c.max || 10)))]]) {
+      const s10 = (c) => Math.max(Number(c.min || 0) + 1, Math.min(10, Number(c.max || 10)));
+      for (const [role, to] of [['ks', (c) => Number(c.max === '' || c.max === undefined ? 1 : c.max)], ['s', s10]]) {
         const c = ctl(role);
         if (!c || seen) continue;
         await page.setValue(c, to(c), ['input', 'change']);
@@ -609,7 +610,7 @@ export async function gradePart(page, { part, rubric, progress = () => {}, deadl
         const sh = await shot();
         const f = sh && !sh.an.blank ? diffuseFit(samples(sh.img, sh.an), T) : null;
         actions.push(`set ${describe(c)} to ${to(c)} to look for a highlight${f && highlightSeen(f, T) ? ': one shows' : ''}`);
-        if (f && highlightSeen(f, T)) seen = { fit: f, broad: set.some((x) => nameRole(x, P) === 's'), where: `the judged view with ${set.map((x) => nameRole(x, P)).join(' and ')} set by the page's own slider${set.length > 1 ? 's' : ''}` };
+        if (f && highlightSeen(f, T)) seen = { fit: f, broad: set.some((x) => nameRole(x, P) === 's' && s10(x) < Number(x.value)), where: `the judged view with ${set.map((x) => nameRole(x, P)).join(' and ')} set by the page's own slider${set.length > 1 ? 's' : ''}` };
       }
       for (const c of set) await page.setValue(c, c.value, ['input', 'change']);
       if (set.length) await tick(100);
@@ -630,7 +631,7 @@ export async function gradePart(page, { part, rubric, progress = () => {}, deadl
         if (f && highlightSeen(f, T) && clean(f) && (!place || !clean(place.fit) || lightAngle(f) > lightAngle(place.fit))) place = { fit: f, where: 'a lit view along the orbit' };
       }
       const offset = place ? highlightOffset(place.fit.highlightNormal, place.fit.light) : null;
-      if (!place) say('pass', 'note: the highlight\'s place is not judged: it shows only with s lowered by the page\'s own slider, which makes it too broad to place');
+      if (!place) say('pass', 'note: the highlight\'s place is not judged: it shows only with s lowered to 10 by the page\'s own slider, which makes it too broad to place');
       if (offset !== null) {
         Object.assign(out.numbers, { highlightOffset: offset, highlightPlaceLight: lightAngle(place.fit) });
         const near = lightAngle(place.fit) < T.highlightPlaceLightDegrees;
