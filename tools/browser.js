@@ -7,9 +7,12 @@ import { fileURLToPath } from 'node:url';
 import { chromium } from '@playwright/test';
 
 export const CHROMIUM = process.env.CHROMIUM_PATH || '/usr/bin/chromium';
+// (--disable-gpu-compositing: the page is composited on the CPU, not through SwiftShader's GL; the
+// canvases still draw with SwiftShader, the screenshots and captures are the same pixels, and each
+// frame costs less: foundation and lighting specs 3m11 → 2m34, a class graded 2m57 → 2m35)
 export const CHROMIUM_ARGS = [
   '--disable-background-networking', '--disable-component-update', '--disable-sync',
-  '--no-first-run', '--disable-quic', '--use-angle=swiftshader', '--enable-unsafe-swiftshader',
+  '--no-first-run', '--disable-quic', '--use-angle=swiftshader', '--enable-unsafe-swiftshader', '--disable-gpu-compositing',
 ];
 
 /** A style sheet that pins the canvas to the viewport's top-left corner, on whole pixels, while a
