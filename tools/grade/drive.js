@@ -588,12 +588,14 @@ export async function gradePart(page, { part, rubric, progress = () => {}, deadl
   // highlight is what rises above the point-light model (a page without a specular term has none)
   const nearModel = clearlyNearFalloff(pointLight, T) ? pointLight.falloff.model : null;
   if (fit && nearModel) Object.assign(fit, { highlightPeak: pointLight.falloff.highlightPeak, highlightRise: pointLight.falloff.highlightRise });
+  // a lit orbit view's diffuse fit over all its samples (look() fitted a sparser 1500), once
+  const fullFit = (v) => (v.fullFit === undefined ? (v.fullFit = diffuseFit(samples(v.img, v.an), T)) : v.fullFit);
   const lightAngle = (f) => (180 / Math.PI) * Math.acos(Math.max(-1, Math.min(1, f.light[2]))); // the light's angle from the viewer (+z)
   if (must.has('highlight') && fit) {
     // not seen where judged: the other lit views seen on the orbit may show it (a highlight on the rim, or behind)
     let seen = highlightSeen(fit, T) ? { fit, where: 'the judged view' } : null;
     if (!seen && !nearModel) {
-      const other = views.map((v) => ({ fit: diffuseFit(samples(v.img, v.an), T), img: v.img })).find((v) => v.fit && highlightSeen(v.fit, T));
+      const other = views.map((v) => ({ fit: fullFit(v), img: v.img })).find((v) => v.fit && highlightSeen(v.fit, T));
       if (other) seen = { fit: other.fit, where: `one of ${views.length} lit views along the orbit` };
     }
     // ... or the page's own material controls show it: ks up to its greatest, then s down (a broad highlight)
@@ -627,7 +629,7 @@ export async function gradePart(page, { part, rubric, progress = () => {}, deadl
       const clean = (f) => f.r2 >= T.diffuseR2;
       let place = seen.broad ? null : seen;
       for (const v of views) {
-        const f = diffuseFit(samples(v.img, v.an), T);
+        const f = fullFit(v);
         if (f && highlightSeen(f, T) && clean(f) && (!place || !clean(place.fit) || lightAngle(f) > lightAngle(place.fit))) place = { fit: f, where: 'a lit view along the orbit' };
       }
       const offset = place ? highlightOffset(place.fit.highlightNormal, place.fit.light) : null;

@@ -293,11 +293,11 @@ export function diffuseFit(pts, rubric = {}) {
   const unclipped = Uint8Array.from(pts, (s) => Math.max(...s.c) < 0.99);
   let use = unclipped.reduce((a, v) => a + v, 0) >= Math.max(20, 0.3 * pts.length) ? unclipped : new Uint8Array(pts.length).fill(1);
   const use0 = use;
-  let best = null, sseAll = null;
+  let best = null, sseAll = null, F = null;
   const highlightMargin = rubric.highlightMargin ?? 0.12;
   for (let pass = 0; pass < 2; pass++) {
     best = null;
-    const F = flat(pts, use);
+    F = flat(pts, use);
     for (const l of DIRS) {
       const f = fitDirection(F, l);
       if (f.b >= 0 && (!best || f.sse < best.sse)) best = f;
@@ -323,7 +323,7 @@ export function diffuseFit(pts, rubric = {}) {
   const hl = highlightOf(pts, (n) => best.a + best.b * Math.max(0, n[0] * best.l[0] + n[1] * best.l[1] + n[2] * best.l[2]), rubric);
   // the same pixels under a two-sided model: a page lit on both sides (|n·w_i|) fits it better
   let twoSided = null, twoSidedAll = null;
-  const Fuse = flat(pts, use), Fall = flat(pts, null);
+  const Fuse = F, Fall = flat(pts, null); // (F: the second pass's pixels, the highlight left out)
   for (const l of DIRS) {
     const f = fitDirection(Fuse, l, true);
     if (f.b >= 0 && (!twoSided || f.sse < twoSided.sse)) twoSided = f;
