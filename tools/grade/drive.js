@@ -356,17 +356,27 @@ export async function gradePart(page, { part, rubric, progress = () => {}, deadl
   // ---- the level ladder: coarsen to the bottom (P5), then subdivide until the silhouette settles ----
   progress('subdividing until the sphere is round');
   let last = cur;
-  const step = async (how, bound, settled) => {
+  // A level that took seconds to draw ends the climb once the sphere is nearly round: the next has
+  // four times the triangles, and a click cannot be stopped once it runs (a page that builds its
+  // arrays by concat took 7 s at level 5, minutes at level 6)
+  let slowLevel = null;
+  const step = async (how, bound, settled, up = false) => {
     const got = [];
     for (let k = 0; k < bound; k++) {
       if (late('more levels')) break;
+      const t0 = Date.now();
       if (!await how.act()) break;
+      const took = (Date.now() - t0) / 1000;
       const s = await shot();
       if (!s) break;
       const isDone = settled(last, s);
       last = s;
       got.push(last);
       if (isDone) break;
+      if (up && took >= T.slowLevelSeconds && !s.an.blank && s.an.roundness <= T.roundEnoughWhenSlow) {
+        slowLevel = took;
+        break;
+      }
     }
     return got;
   };
@@ -383,7 +393,8 @@ export async function gradePart(page, { part, rubric, progress = () => {}, deadl
     coarsened = down.length > 0;
   }
   if (levelBy.subdivide) {
-    ladder.push(...await step(levelBy.subdivide, T.maxSubdivisions + (coarsened ? T.maxCoarsenings : 0), settledSilhouette));
+    ladder.push(...await step(levelBy.subdivide, T.maxSubdivisions + (coarsened ? T.maxCoarsenings : 0), settledSilhouette, true));
+    if (slowLevel) say('pass', `note: slow: the last level reached took ${fmt(slowLevel, 1)} s to draw; with the sphere round to ${fmt(100 * last.an.roundness, 1)}% there, no finer level was tried (each has four times the triangles)`);
   } else if (levelSlider) {
     // a level slider or <select> (which may start at level 0): stepped from its least up, as
     // Subdivide is clicked, until the silhouette settles (at most maxSubdivisions steps)
