@@ -4,7 +4,7 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { partNumber } from '../../tools/grade/parts.js';
 import { findStandIn, typeOf } from '../../tools/grade/standin.js';
-import { analyse, diffuseFit, samples, highlightSeen, openMask } from '../../tools/grade/judge.js';
+import { analyse, diffuseFit, samples, highlightSeen, highlightOffset, openMask } from '../../tools/grade/judge.js';
 import { effectOf, nameRole, trialOrder } from '../../tools/grade/controls.js';
 import { checkList, verdictOf, reasonsOf } from '../../tools/grade/verdict.js';
 import { parseLabels, agreement, agreementText } from '../../tools/grade/labels.js';
@@ -127,6 +127,25 @@ test('a small tinted highlight that stands out of a clean diffuse fit is a highl
   assert.equal(highlightSeen(fp, T), false, `plain: rise ${fp.highlightRise}, peak ${fp.highlightPeak}`);
   assert.equal(highlightSeen(fs, T), true, `spot: rise ${fs.highlightRise}, peak ${fs.highlightPeak}, rms ${fs.rms}`);
   assert.ok(fs.highlightPeak < T.highlightPeak, 'the spot is one the peak share alone would miss');
+});
+
+test('a highlight at w_h is never read as one at the light (highlightAtLightDegrees), the light 50–63° from the viewer', () => {
+  // (the converse is weaker: the diffuse fit takes in much of a highlight at the light, and the rise
+  // left above it sits toward the viewer, so a highlight at the light is often not told; on the real
+  // hand-ins it was, 7° from the light and 24° from w_h)
+  for (const deg of [50, 55, 63]) {
+    for (const s of [10, 20]) {
+      const l = [Math.sin(deg * Math.PI / 180), 0, Math.cos(deg * Math.PI / 180)];
+      const h = [l[0], l[1], l[2] + 1].map((v, k, a) => v / Math.hypot(...a));
+      const img = polygon(128, { w: 160, r: 64, shade: (nx, ny, nz) => {
+        const d = 0.1 + 0.6 * Math.max(0, nx * l[0] + ny * l[1] + nz * l[2]), sp = 0.4 * Math.max(0, nx * h[0] + ny * h[1] + nz * h[2]) ** s;
+        return [d + sp, d + sp, d + sp];
+      } });
+      const fit = diffuseFit(samples(img, analyse(img, T)), T);
+      const fromHalf = highlightOffset(fit.highlightNormal, fit.light), fromLight = highlightOffset(fit.highlightNormal, fit.light, 0);
+      assert.ok(fromHalf - fromLight < T.highlightAtLightDegrees, `light ${deg}°, s = ${s}: ${fromHalf}° from w_h, ${fromLight}° from the light`);
+    }
+  }
 });
 
 test('verdicts from findings: a fail wins, then a review; a mistake costs what the rubric says; reasons worst first', () => {

@@ -602,6 +602,8 @@ export async function gradePart(page, { part, rubric, progress = () => {}, deadl
   // a lit orbit view's diffuse fit over all its samples (look() fitted a sparser 1500), once
   const fullFit = (v) => (v.fullFit === undefined ? (v.fullFit = diffuseFit(samples(v.img, v.an), T)) : v.fullFit);
   const lightAngle = (f) => (180 / Math.PI) * Math.acos(Math.max(-1, Math.min(1, f.light[2]))); // the light's angle from the viewer (+z)
+  let raised = []; // [control, value]: the page's own sliders as set to show the highlight
+  let placeLater = null; // the highlight's place, seen only with the light near the viewer: looked for farther along the orbit at the end
   if (must.has('highlight') && fit) {
     // not seen where judged: the other lit views seen on the orbit may show it (a highlight on the rim, or behind)
     let seen = highlightSeen(fit, T) ? { fit, where: 'the judged view' } : null;
@@ -627,6 +629,7 @@ export async function gradePart(page, { part, rubric, progress = () => {}, deadl
       }
       for (const c of set) await page.setValue(c, c.value, ['input', 'change']);
       if (set.length) await tick(100);
+      if (seen) raised = set.map((c) => [c, nameRole(c, P) === 'ks' ? Number(c.max === '' || c.max === undefined ? 1 : c.max) : s10(c)]);
     }
     out.numbers.highlightViews = 1 + views.length;
     if (seen) say('pass', `a specular highlight in ${seen.where} (up to ${fmt(100 * seen.fit.highlightPeak, 0)}% of the way from the diffuse fit to white, ${fmt(seen.fit.highlightRise, 2)} above it)`);
@@ -643,15 +646,11 @@ export async function gradePart(page, { part, rubric, progress = () => {}, deadl
         const f = fullFit(v);
         if (f && highlightSeen(f, T) && clean(f) && (!place || !clean(place.fit) || lightAngle(f) > lightAngle(place.fit))) place = { fit: f, where: 'a lit view along the orbit' };
       }
-      const offset = place ? highlightOffset(place.fit.highlightNormal, place.fit.light) : null;
       if (!place) say('pass', 'note: the highlight\'s place is not judged: it shows only with s lowered to 10 by the page\'s own slider, which makes it too broad to place');
-      if (offset !== null) {
-        Object.assign(out.numbers, { highlightOffset: offset, highlightPlaceLight: lightAngle(place.fit) });
-        const near = lightAngle(place.fit) < T.highlightPlaceLightDegrees;
-        const where = `in ${place.where}, the light ${fmt(lightAngle(place.fit), 0)}° from the viewer`;
-        if (offset > T.highlightPlaceDegrees) say('mistake', `the highlight is ${fmt(offset, 0)}° from where the model puts it (at the normal halfway between the light, fitted at ${place.fit.light.map((v) => fmt(v)).join(', ')}, and the viewer; ${where}): is w_o the direction from the surface to the eye, in the same space as n and w_i?`);
-        else say('pass', `the highlight sits where the normal is halfway between the light and the viewer (${fmt(offset, 0)}° off, ${where}${near ? `; with the light this near the viewer that halfway normal is only ${fmt(lightAngle(place.fit) / 2, 0)}° from the light, so a highlight at the light would pass too` : ''})`);
-      }
+      // the light this near the viewer puts w_h near w_i too: farther along the orbit (at the end, where
+      // moving the view changes nothing else judged) a view may tell them apart
+      else if (lightAngle(place.fit) < T.highlightPlaceLightDegrees && orbitStart && orbitStop && stopped) placeLater = place;
+      else judgePlace(place);
     }
     if (!seen) say('mistake', `no specular highlight: nothing brighter than the diffuse fit (${fmt(fit.highlightPeak)}) in ${1 + views.length} views (the judged one${views.length ? ' and the lit ones along the orbit' : ''})`);
   }
@@ -744,9 +743,54 @@ export async function gradePart(page, { part, rubric, progress = () => {}, deadl
     } else if (frag) say('pass', `no coarse level to compare${levelBy.coarsen ? '' : ' (nothing found that coarsens)'}; the fragment shader evaluates the specular term (pow): per fragment`);
     else say('mistake', 'no coarse level to compare, and no pow() in the fragment shader: the model seems evaluated per vertex');
   }
+  if (placeLater) await placeFarther(placeLater);
   if (!stopped) say('pass', 'note: the orbit could not be stopped: the pictures were judged as it moves');
   if (out.cutShort.length) say('pass', `note: slow: the rubric's time ran out before ${out.cutShort.join(', ')}; judged on what was seen`);
   return out;
+
+  /** Says whether the highlight sits at w_h in `place` ({ fit, where }), the light's angle from the viewer given. */
+  function judgePlace(place) {
+    const offset = highlightOffset(place.fit.highlightNormal, place.fit.light);
+    if (offset === null) return;
+    Object.assign(out.numbers, { highlightOffset: offset, highlightPlaceLight: lightAngle(place.fit) });
+    const near = lightAngle(place.fit) < T.highlightPlaceLightDegrees;
+    const where = `in ${place.where}, the light ${fmt(lightAngle(place.fit), 0)}° from the viewer`;
+    // w_h is half the light's angle from w_i: with the light well away from the viewer, a highlight
+    // clearly nearer the light than w_h is at the light (w_o or w_r wrong), even within the bound above
+    const fromLight = highlightOffset(place.fit.highlightNormal, place.fit.light, 0);
+    out.numbers.highlightFromLight = fromLight;
+    if (!near && offset - fromLight >= T.highlightAtLightDegrees) say('mistake', `the highlight sits at the light, not halfway between the light and the viewer: ${fmt(fromLight, 0)}° from the light, ${fmt(offset, 0)}° from the halfway normal (the light fitted at ${place.fit.light.map((v) => fmt(v)).join(', ')}; ${where}): is w_o the direction from the surface to the eye, in the same space as n and w_i?`);
+    else if (offset > T.highlightPlaceDegrees) say('mistake', `the highlight is ${fmt(offset, 0)}° from where the model puts it (at the normal halfway between the light, fitted at ${place.fit.light.map((v) => fmt(v)).join(', ')}, and the viewer; ${where}): is w_o the direction from the surface to the eye, in the same space as n and w_i?`);
+    else say('pass', `the highlight sits where the normal is halfway between the light and the viewer (${fmt(offset, 0)}° off, ${where}${near ? `; with the light this near the viewer that halfway normal is only ${fmt(lightAngle(place.fit) / 2, 0)}° from the light, so a highlight at the light would pass too` : ''})`);
+  }
+
+  /**
+   * The highlight's place where the light is at least highlightPlaceLightDegrees from the viewer:
+   * the orbit on (with the sliders as they showed the highlight), sampled until such a view shows
+   * the highlight over a clean diffuse fit, or orbitSamples positions; then off again. Judged there,
+   * or where it was seen before.
+   */
+  async function placeFarther(near) {
+    // (a page slow enough to have used most of its time is judged where the highlight was seen)
+    if (late('a view with the light away from the viewer', 0.6)) return judgePlace(near);
+    progress('looking along the orbit for a view with the light away from the viewer');
+    for (const [c, v] of raised) await page.setValue(c, v, ['input', 'change']);
+    let far = null, k = 0;
+    if (await tryClick(orbitStart, 'the orbit control', { watchMotion: true }) === 'starts') {
+      for (; k < T.orbitSamples && !far && !late('a view with the light away from the viewer', 0.9); k++) {
+        const frames = Math.max(2, Math.min(8 << k, Math.round(60 * T.orbitSampleSeconds), Math.floor((T.orbitSampleBudgetSeconds ?? 3) * 1000 / frameMs)));
+        await tick(T.orbitSampleSeconds * 1000, frames);
+        const sh = await shot();
+        const f = sh && !sh.an.blank && sh.an.roundness < T.orbitCoarseRoundness ? diffuseFit(samples(sh.img, sh.an), T) : null;
+        if (f && f.r2 >= T.diffuseR2 && highlightSeen(f, T) && lightAngle(f) >= T.highlightPlaceLightDegrees) far = { fit: f, img: sh.img };
+      }
+      await tryClick(orbitStop, 'the orbit control again', { watchMotion: true });
+    }
+    for (const [c] of raised) await page.setValue(c, c.value, ['input', 'change']);
+    actions.push(`sampled the orbit at ${k} positions for a view with the light ${T.highlightPlaceLightDegrees}° or more from the viewer${raised.length ? `, ${raised.map(([c, v]) => `${nameRole(c, P)} at ${v}`).join(' and ')}` : ''}: ${far ? 'one shows the highlight' : 'none shows the highlight over a clean diffuse fit'}`);
+    if (far) out.images.highlightPlace = far.img;
+    judgePlace(far ? { fit: far.fit, where: 'a view along the orbit' } : near);
+  }
 
   /**
    * s at its least (where that is 0 or below): the Phong term max(cos φ, 0)^s with s = 0 is pow(0, 0)

@@ -373,10 +373,11 @@ export function highlightOf(pts, predict, rubric = {}) {
  * How far (degrees) a highlight sits from where the Phong and Blinn-Phong models put it: at the
  * normal halfway between the direction to the light and the direction to the viewer (w_h =
  * normalize(w_i + w_o), w_o = +z toward the viewer; a perspective camera moves it a few degrees).
+ * `toViewer` 0: how far from the light itself (w_i).
  */
-export function highlightOffset(highlightNormal, light) {
+export function highlightOffset(highlightNormal, light, toViewer = 1) {
   if (!highlightNormal || !light) return null;
-  const h = [light[0], light[1], light[2] + 1];
+  const h = [light[0], light[1], light[2] + toViewer];
   const len = Math.hypot(...h);
   if (len < 1e-6) return null; // the light straight behind: no half vector
   const c = (highlightNormal[0] * h[0] + highlightNormal[1] * h[1] + highlightNormal[2] * h[2]) / len;
