@@ -169,6 +169,9 @@ export async function gradePart(page, { part, rubric, progress = () => {}, deadl
   if (shadedPart) look(first, false);
   let orbitLater = false; // the orbit is sampled after the level ladder
   let orbitStart = null, orbitStop = null; // the controls that start and stop it, where found
+  // the k-th orbit sample's time, in frames as the page can afford them: a page that takes a second a frame gets a few
+  const tickOrbit = (k) => tick(T.orbitSampleSeconds * 1000,
+    Math.max(2, Math.min(8 << k, Math.round(60 * T.orbitSampleSeconds), Math.floor((T.orbitSampleBudgetSeconds ?? 3) * 1000 / frameMs))));
   const sampleOrbit = async (afterLadder = false) => {
     // the light may be behind the sphere at first: look along the orbit (a few positions at least)
     // to see the lit side turn with the orbit (a light fixed in the world); many pages turn the
@@ -183,9 +186,7 @@ export async function gradePart(page, { part, rubric, progress = () => {}, deadl
     progress('sampling the orbit');
     let k = 0, im = cur.img;
     for (; k < T.orbitSamples && (!look(im) || k < 2) && !late('more orbit positions', 0.4); k++) {
-      // frames as the page can afford them: a page that takes a second a frame gets a few
-      const frames = Math.max(2, Math.min(8 << k, Math.round(60 * T.orbitSampleSeconds), Math.floor((T.orbitSampleBudgetSeconds ?? 3) * 1000 / frameMs)));
-      await tick(T.orbitSampleSeconds * 1000, frames);
+      await tickOrbit(k);
       im = await page.snap();
     }
     cur = { img: im, an: analyse(im, T) };
@@ -602,7 +603,7 @@ export async function gradePart(page, { part, rubric, progress = () => {}, deadl
   // a lit orbit view's diffuse fit over all its samples (look() fitted a sparser 1500), once
   const fullFit = (v) => (v.fullFit === undefined ? (v.fullFit = diffuseFit(samples(v.img, v.an), T)) : v.fullFit);
   const lightAngle = (f) => (180 / Math.PI) * Math.acos(Math.max(-1, Math.min(1, f.light[2]))); // the light's angle from the viewer (+z)
-  let raised = []; // [control, value]: the page's own sliders as set to show the highlight
+  let raised = []; // [control, value]: the page's own sliders as set to show the highlight (where they showed it)
   let placeLater = null; // the highlight's place, seen only with the light near the viewer: looked for farther along the orbit at the end
   if (must.has('highlight') && fit) {
     // not seen where judged: the other lit views seen on the orbit may show it (a highlight on the rim, or behind)
@@ -621,6 +622,7 @@ export async function gradePart(page, { part, rubric, progress = () => {}, deadl
         if (!c || seen) continue;
         await page.setValue(c, to(c), ['input', 'change']);
         set.push(c);
+        raised.push([c, to(c)]);
         await tick(100);
         const sh = await shot();
         const f = sh && !sh.an.blank ? diffuseFit(samples(sh.img, sh.an), T) : null;
@@ -629,7 +631,7 @@ export async function gradePart(page, { part, rubric, progress = () => {}, deadl
       }
       for (const c of set) await page.setValue(c, c.value, ['input', 'change']);
       if (set.length) await tick(100);
-      if (seen) raised = set.map((c) => [c, nameRole(c, P) === 'ks' ? Number(c.max === '' || c.max === undefined ? 1 : c.max) : s10(c)]);
+      if (!seen) raised = [];
     }
     out.numbers.highlightViews = 1 + views.length;
     if (seen) say('pass', `a specular highlight in ${seen.where} (up to ${fmt(100 * seen.fit.highlightPeak, 0)}% of the way from the diffuse fit to white, ${fmt(seen.fit.highlightRise, 2)} above it)`);
@@ -755,12 +757,14 @@ export async function gradePart(page, { part, rubric, progress = () => {}, deadl
     Object.assign(out.numbers, { highlightOffset: offset, highlightPlaceLight: lightAngle(place.fit) });
     const near = lightAngle(place.fit) < T.highlightPlaceLightDegrees;
     const where = `in ${place.where}, the light ${fmt(lightAngle(place.fit), 0)}° from the viewer`;
+    const light = place.fit.light.map((v) => fmt(v)).join(', ');
+    const ask = 'is w_o the direction from the surface to the eye, in the same space as n and w_i?';
     // w_h is half the light's angle from w_i: with the light well away from the viewer, a highlight
     // clearly nearer the light than w_h is at the light (w_o or w_r wrong), even within the bound above
     const fromLight = highlightOffset(place.fit.highlightNormal, place.fit.light, 0);
     out.numbers.highlightFromLight = fromLight;
-    if (!near && offset - fromLight >= T.highlightAtLightDegrees) say('mistake', `the highlight sits at the light, not halfway between the light and the viewer: ${fmt(fromLight, 0)}° from the light, ${fmt(offset, 0)}° from the halfway normal (the light fitted at ${place.fit.light.map((v) => fmt(v)).join(', ')}; ${where}): is w_o the direction from the surface to the eye, in the same space as n and w_i?`);
-    else if (offset > T.highlightPlaceDegrees) say('mistake', `the highlight is ${fmt(offset, 0)}° from where the model puts it (at the normal halfway between the light, fitted at ${place.fit.light.map((v) => fmt(v)).join(', ')}, and the viewer; ${where}): is w_o the direction from the surface to the eye, in the same space as n and w_i?`);
+    if (!near && offset - fromLight >= T.highlightAtLightDegrees) say('mistake', `the highlight sits at the light, not halfway between the light and the viewer: ${fmt(fromLight, 0)}° from the light, ${fmt(offset, 0)}° from the halfway normal (the light fitted at ${light}; ${where}): ${ask}`);
+    else if (offset > T.highlightPlaceDegrees) say('mistake', `the highlight is ${fmt(offset, 0)}° from where the model puts it (at the normal halfway between the light, fitted at ${light}, and the viewer; ${where}): ${ask}`);
     else say('pass', `the highlight sits where the normal is halfway between the light and the viewer (${fmt(offset, 0)}° off, ${where}${near ? `; with the light this near the viewer that halfway normal is only ${fmt(lightAngle(place.fit) / 2, 0)}° from the light, so a highlight at the light would pass too` : ''})`);
   }
 
@@ -778,8 +782,7 @@ export async function gradePart(page, { part, rubric, progress = () => {}, deadl
     let far = null, k = 0;
     if (await tryClick(orbitStart, 'the orbit control', { watchMotion: true }) === 'starts') {
       for (; k < T.orbitSamples && !far && !late('a view with the light away from the viewer', 0.9); k++) {
-        const frames = Math.max(2, Math.min(8 << k, Math.round(60 * T.orbitSampleSeconds), Math.floor((T.orbitSampleBudgetSeconds ?? 3) * 1000 / frameMs)));
-        await tick(T.orbitSampleSeconds * 1000, frames);
+        await tickOrbit(k);
         const sh = await shot();
         const f = sh && !sh.an.blank && sh.an.roundness < T.orbitCoarseRoundness ? diffuseFit(samples(sh.img, sh.an), T) : null;
         if (f && f.r2 >= T.diffuseR2 && highlightSeen(f, T) && lightAngle(f) >= T.highlightPlaceLightDegrees) far = { fit: f, img: sh.img };

@@ -323,9 +323,9 @@ export function diffuseFit(pts, rubric = {}) {
   const hl = highlightOf(pts, (n) => best.a + best.b * Math.max(0, n[0] * best.l[0] + n[1] * best.l[1] + n[2] * best.l[2]), rubric);
   // the same pixels under a two-sided model: a page lit on both sides (|n·w_i|) fits it better
   let twoSided = null, twoSidedAll = null;
-  const Fuse = F, Fall = flat(pts, null); // (F: the second pass's pixels, the highlight left out)
+  const Fall = flat(pts, null); // (F: the second pass's pixels, the highlight left out)
   for (const l of DIRS) {
-    const f = fitDirection(Fuse, l, true);
+    const f = fitDirection(F, l, true);
     if (f.b >= 0 && (!twoSided || f.sse < twoSided.sse)) twoSided = f;
     const g = fitDirection(Fall, l, true);
     if (g.b >= 0 && (!twoSidedAll || g.sse < twoSidedAll.sse)) twoSidedAll = g;
