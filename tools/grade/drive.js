@@ -33,9 +33,10 @@ export async function gradePart(page, { part, rubric, progress = () => {}, deadl
   page = timed(page, timing);
   const actions = out.actions;
   let frameMs = 16; // what a frame of this page costs here, from the last frames run
-  // a jump (one frame) and then one frame more: a change made in a click or input handler is drawn
-  // by the next frame, and on a software renderer a frame can cost half a second
-  const tick = async (ms, frames = 1) => {
+  // a jump: the frame it fires draws a change made in a click or input handler (on a software
+  // renderer a frame can cost a second: a page that draws each triangle on its own); `frames` more
+  // at 60 Hz where motion is watched
+  const tick = async (ms, frames = 0) => {
     const t0 = Date.now();
     await page.tick(ms, frames);
     const took = Date.now() - t0;
@@ -59,7 +60,7 @@ export async function gradePart(page, { part, rubric, progress = () => {}, deadl
 
   // ---- the first frame ----
   progress('waiting for the first frame');
-  await tick(1000);
+  await tick(1000, 1);
   // a page may start drawing only after promises that take real time (shaders fetched, a WebGPU
   // adapter and device): wait for its first draw call, within firstFrameSeconds
   const waitUntil = Date.now() + (rubric.firstFrameSeconds ?? 10) * 1000;
