@@ -4,6 +4,7 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { partNumber } from '../../tools/grade/parts.js';
 import { findStandIn, typeOf } from '../../tools/grade/standin.js';
+import { serveSubmission } from '../../tools/grade/serve-submission.js';
 import { analyse, diffuseFit, samples, highlightSeen, highlightOffset, openMask } from '../../tools/grade/judge.js';
 import { effectOf, nameRole, trialOrder } from '../../tools/grade/controls.js';
 import { checkList, verdictOf, reasonsOf } from '../../tools/grade/verdict.js';
@@ -53,6 +54,35 @@ test('a file asked for in other letter case or one folder too far up is found in
   assert.equal(findStandIn('/nothing.js', files), null);
   assert.equal(typeOf('x/shader.WGSL'), 'text/plain');
   assert.equal(typeOf('x/page.html'), 'text/html');
+});
+
+test('a kept context serves the part open now: its folder at its origin, an empty page between parts, the parts before refused silently', async () => {
+  const handins = new URL('../fixtures/handins/', import.meta.url).pathname;
+  const site = { root: `${handins}anna`, origin: 'http://p1.submission.localhost', log: { errors: [], blocked: [], notes: [] }, former: new Set() };
+  let handler = null;
+  await serveSubmission({ route: async (pattern, h) => { handler = h; } }, site);
+  const ask = async (href) => {
+    let answer = null;
+    const request = { url: () => href, isNavigationRequest: () => false };
+    await handler({ request: () => request, fulfill: (r) => { answer = { status: r.status, body: String(r.body) }; }, abort: (why) => { answer = { abort: why }; } });
+    return answer;
+  };
+  const anna = 'Worksheet4/Part1/index.html', bjorn = 'week4/p1/index.html';
+  assert.deepEqual(await ask(`http://p1.submission.localhost/${anna}`), { status: 200, body: readFileSync(`${handins}anna/${anna}`, 'utf8') });
+  // between two parts: an empty page at a new origin; the origin before is refused without a word
+  site.former.add(site.origin);
+  Object.assign(site, { root: null, origin: 'http://p2.submission.localhost', log: { errors: [], blocked: [], notes: [] } });
+  assert.deepEqual(await ask('http://p2.submission.localhost/'), { status: 200, body: '<!doctype html>' });
+  assert.deepEqual(await ask(`http://p1.submission.localhost/${anna}`), { abort: 'blockedbyclient' });
+  assert.deepEqual(site.log.blocked, []);
+  // the next part: its own folder only; another host is refused and said
+  site.former.add(site.origin);
+  Object.assign(site, { root: `${handins}bjorn`, origin: 'http://p3.submission.localhost' });
+  assert.deepEqual(await ask(`http://p3.submission.localhost/${bjorn}`), { status: 200, body: readFileSync(`${handins}bjorn/${bjorn}`, 'utf8') });
+  assert.equal((await ask(`http://p3.submission.localhost/${anna}`)).status, 404);
+  assert.deepEqual(site.log.errors, [`missing file: /${anna}`]);
+  assert.deepEqual(await ask('http://example.com/x.js'), { abort: 'blockedbyclient' });
+  assert.deepEqual(site.log.blocked, ['request: http://example.com/x.js']);
 });
 
 test('a control is sorted by what it does to the picture: rounder, coarser, shading, moving', () => {

@@ -7,7 +7,7 @@ import { readFileSync, writeFileSync, mkdirSync } from 'node:fs';
 import path from 'node:path';
 import { PNG } from 'pngjs';
 import { compareImages } from './compare.js';
-import { openPart } from './playwright-page.js';
+import { partOpener } from './playwright-page.js';
 import { gradePart, addTime } from './drive.js';
 import { verdictOf, reasonsOf } from './verdict.js';
 import { referenceQuery, referenceStateOf } from './reference-state.js';
@@ -26,8 +26,12 @@ function save(item, result) {
   writeFileSync(item.resultFile, JSON.stringify(result, null, 1));
 }
 
+// a worker's parts open one after another in one page (and ours beside them in another)
+let openers = null;
+
 for (const item of plan.items) {
   test(`${item.name} ${item.part}`, async ({ browser }, testInfo) => {
+    openers ??= { student: partOpener(browser, 'submission.localhost'), reference: partOpener(browser, 'reference.localhost') };
     const result = { name: item.name, part: item.part, file: item.page, status: 'timeout', verdict: 'fail', api: null,
       reasons: [`the page did not finish within the rubric's bound of ${rubric.timeoutSeconds} s (it never returns, or is far too slow)`], actions: [], controls: {},
       numbers: {}, mismatch: null, rmse: null, pass: false, comparison: null, notes: [], errors: [], blocked: [], images: null };
@@ -38,13 +42,13 @@ for (const item of plan.items) {
     }
     const started = Date.now();
     let graded = { fail: null, checks: [], actions: [], images: {}, busy: 0 };
-    let opened;
+    let opened, clean = false;
     // where the part's time goes: opening it, each page-interface call, closing it, writing the pictures
     const timing = result.timing = {};
     const phase = (what, t0) => addTime(timing, what, Date.now() - t0);
     try {
       const t0 = Date.now();
-      opened = await openPart(browser, { root: item.root, rel: item.page, origin: 'http://submission.localhost', loadSeconds: rubric.loadSeconds ?? 20, log: result });
+      opened = await openers.student.open({ root: item.root, rel: item.page, loadSeconds: rubric.loadSeconds ?? 20, log: result });
       phase('open', t0);
       if (opened.why) graded.fail = `the page could not be opened: ${opened.why}`;
       else {
@@ -56,13 +60,14 @@ for (const item of plan.items) {
           save(item, result);
         } });
       }
+      clean = true;
     } catch (err) {
       if (/Test ended|Target page, context or browser has been closed/.test(err.message)) throw err; // the time bound: stays 'timeout'
       // the grader's own trouble with this page: never a pass on it, a teacher looks
       graded.checks = [{ level: 'review', reason: `the grader could not finish on this page: ${err.message.split('\n')[0]}` }];
     } finally {
       const t0 = Date.now();
-      if (opened) await opened.context.close().catch(() => {});
+      await openers.student.done(clean);
       phase('close', t0);
     }
     const seconds = (Date.now() - started) / 1000;
@@ -92,18 +97,16 @@ for (const item of plan.items) {
       const query = referenceQuery(graded.images.judged, result.numbers, rubric.thresholds, item.referenceQuery);
       let ref = null;
       try {
-        const r = await openPart(browser, { root: plan.repo, rel: `${item.part}/index.html`, origin: 'http://reference.localhost', query: query.toString(), log: refLog });
-        try {
-          if (!r.why) {
-            await r.driver.tick(500, 30);
-            ref = await r.driver.snap();
-            const scene = await r.page.evaluate(() => window.scene || null).catch(() => null);
-            result.referenceState = referenceStateOf(query, scene);
-          }
-        } finally {
-          await r.context.close().catch(() => {});
+        const r = await openers.reference.open({ root: plan.repo, rel: `${item.part}/index.html`, query: query.toString(), log: refLog });
+        if (!r.why) {
+          await r.driver.tick(500, 30);
+          ref = await r.driver.snap();
+          const scene = await r.page.evaluate(() => window.scene || null).catch(() => null);
+          result.referenceState = referenceStateOf(query, scene);
         }
+        await openers.reference.done(true);
       } catch (err) {
+        await openers.reference.done(false);
         result.notes.push(`our reference could not be drawn: ${err.message.split('\n')[0]}`);
       }
       const { width, height } = graded.images.judged;

@@ -11,37 +11,81 @@ import { serveSubmission } from './serve-submission.js';
 const FROZEN = new Date('2026-01-05T09:00:00Z');
 
 /**
- * Opens `rel` (a path inside `root`) at `origin` in a new context of `browser`. `log` ({ errors,
- * blocked, notes }) gets what the page prints or is refused. Returns { context, page, driver, why }:
- * `why` says why the page could not be opened (then there is no driver).
+ * Opens the parts a worker grades, one after another, in one browser context and page: each part
+ * is a new document at an origin of its own (`http://p<n>.<host>`: its storage apart from the
+ * others', the site and so the renderer process the same), served from its own folder, with time
+ * frozen anew. A new context and page cost 0.5–1 s a part on this machine. `host`: e.g.
+ * 'submission.localhost'.
+ * open({ root, rel, query, loadSeconds, log }) → { page, driver, why }: `why` says why the page
+ * could not be opened (then there is no driver); `log` ({ errors, blocked, notes }) gets what the
+ * page prints or is refused.
+ * done(clean): the part is over; a part that did not end cleanly (the grader threw, or the page did
+ * not finish loading) takes the context with it, and the next part gets a new one.
  */
-export async function openPart(browser, { root, rel, origin, query = '', loadSeconds = 20, log }) {
-  const context = await browser.newContext({ viewport: { width: 1000, height: 1000 }, deviceScaleFactor: 1 });
-  await serveSubmission(context, root, origin, log);
-  await context.addInitScript(webgpuCaptureScript);
-  await context.addInitScript(instrumentScript);
-  const page = await context.newPage();
-  page.on('popup', (popup) => {
-    log.blocked.push(`popup: ${popup.url()}`);
-    popup.close().catch(() => {});
-  });
-  page.on('pageerror', (e) => log.errors.push(`page error: ${e.message}`));
-  page.on('console', (m) => { if (m.type() === 'error' && !/Failed to load resource/.test(m.text())) log.errors.push(`console: ${m.text()}`); });
-  page.on('dialog', (d) => { log.errors.push(`dialog: ${d.message()}`); d.dismiss().catch(() => {}); });
-  await page.clock.install({ time: FROZEN });
-  await page.clock.pauseAt(new Date(FROZEN.getTime() + 2000)); // from here time moves only when we say so
-  const url = `${origin}/${rel.split(/[\\/]/).map(encodeURIComponent).join('/')}${query ? `?${query}` : ''}`;
-  let response;
-  try {
-    response = await page.goto(url, { waitUntil: 'load', timeout: loadSeconds * 1000 });
-  } catch (err) {
-    if (!/Timeout/i.test(err.message)) throw err;
-    return { context, page, why: `it did not finish loading in ${loadSeconds} s (a script that never returns?)` };
-  }
-  if (!response || !response.ok()) return { context, page, why: `the page answered ${response ? response.status() : 'nothing'}` };
-  // (no wait for the network to go quiet: drive.js waits for the first draw call, which comes after
-  // any shaders or models a page fetches)
-  return { context, page, driver: playwrightDriver(page, log) };
+export function partOpener(browser, host) {
+  let kept = null; // { context, page, site }
+  let n = 0;
+  const keep = async () => {
+    const site = { root: null, origin: null, log: { errors: [], blocked: [], notes: [] }, former: new Set() };
+    const context = await browser.newContext({ viewport: { width: 1000, height: 1000 }, deviceScaleFactor: 1 });
+    await serveSubmission(context, site);
+    await context.addInitScript(webgpuCaptureScript);
+    await context.addInitScript(instrumentScript);
+    const page = await context.newPage();
+    page.on('popup', (popup) => {
+      site.log.blocked.push(`popup: ${popup.url()}`);
+      popup.close().catch(() => {});
+    });
+    page.on('pageerror', (e) => site.log.errors.push(`page error: ${e.message}`));
+    page.on('console', (m) => { if (m.type() === 'error' && !/Failed to load resource/.test(m.text())) site.log.errors.push(`console: ${m.text()}`); });
+    // (leaving a part's page for the next one: a beforeunload prompt lets it go)
+    page.on('dialog', (d) => {
+      if (d.type() === 'beforeunload') return d.accept().catch(() => {});
+      site.log.errors.push(`dialog: ${d.message()}`);
+      return d.dismiss().catch(() => {});
+    });
+    return { context, page, site };
+  };
+  const drop = async () => {
+    if (!kept) return;
+    const { context } = kept;
+    kept = null;
+    await context.close().catch(() => {});
+  };
+  return {
+    async open({ root, rel, query = '', loadSeconds = 20, log }) {
+      kept ??= await keep();
+      const { page, site } = kept;
+      const serve = (folder) => {
+        if (site.origin) site.former.add(site.origin);
+        Object.assign(site, { root: folder, origin: `http://p${++n}.${host}`, log });
+      };
+      if (site.origin) {
+        // the part before is left for an empty page first: its frames would run once as time is frozen anew
+        serve(null);
+        await page.goto(`${site.origin}/`, { timeout: loadSeconds * 1000 });
+      }
+      serve(root);
+      await page.clock.install({ time: FROZEN });
+      await page.clock.pauseAt(new Date(FROZEN.getTime() + 2000)); // from here time moves only when we say so
+      const url = `${site.origin}/${rel.split(/[\\/]/).map(encodeURIComponent).join('/')}${query ? `?${query}` : ''}`;
+      let response;
+      try {
+        response = await page.goto(url, { waitUntil: 'load', timeout: loadSeconds * 1000 });
+      } catch (err) {
+        if (!/Timeout/i.test(err.message)) throw err;
+        await drop(); // (a page whose script never returns is not kept)
+        return { page, why: `it did not finish loading in ${loadSeconds} s (a script that never returns?)` };
+      }
+      if (!response || !response.ok()) return { page, why: `the page answered ${response ? response.status() : 'nothing'}` };
+      // (no wait for the network to go quiet: drive.js waits for the first draw call, which comes after
+      // any shaders or models a page fetches)
+      return { page, driver: playwrightDriver(page, log) };
+    },
+    async done(clean) {
+      if (!clean) await drop();
+    },
+  };
 }
 
 /** The page interface over a Playwright page whose instrumentation (instrument.js) is in. */

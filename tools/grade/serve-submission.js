@@ -24,14 +24,21 @@ export function filesUnder(root, dir = '', out = [], depth = 0) {
 }
 
 /**
- * Serves `root` at `origin` in a Playwright browser context. `log` gets { blocked, errors, notes }
- * pushed to: requests to other hosts and outside the submission, missing files, stand-ins.
+ * Serves a submission in a Playwright browser context: `site` ({ root, origin, log }) is read at
+ * each request, so that a context kept for the next part serves that part's folder at its origin
+ * (`former`: the origins of the parts before, refused without a word; no `root`: an empty page, between
+ * two parts). `log` gets { blocked, errors, notes } pushed to: requests to other hosts and outside the
+ * submission, missing files, stand-ins.
  */
-export async function serveSubmission(context, root, origin, log) {
-  let files = null; // the submission's files, listed on the first miss
+export async function serveSubmission(context, site) {
+  let files = null, listed = null; // the submission's files, listed on the first miss
   await context.route('**/*', async (route) => {
+    const { root, origin, log } = site;
+    if (listed !== root) [files, listed] = [null, root];
     const url = new URL(route.request().url());
+    if (!root && url.origin === origin) return route.fulfill({ status: 200, contentType: 'text/html', body: '<!doctype html>' }); // between two parts
     if (url.origin !== origin) {
+      if (site.former && site.former.has(url.origin)) return route.abort('blockedbyclient'); // a part graded before, left behind
       const kind = route.request().isNavigationRequest() ? 'navigation or popup' : 'request';
       if (!url.protocol.startsWith('data') && !url.protocol.startsWith('blob')) log.blocked.push(`${kind}: ${url.href}`);
       return route.abort('blockedbyclient');
