@@ -5,13 +5,14 @@
 // grader must agree on every labelled part, and no broken part may pass. Also: the WebGPU
 // capture returns exactly what a page drew.
 import { spawnSync } from 'node:child_process';
-import { existsSync, mkdtempSync, readFileSync, writeFileSync } from 'node:fs';
+import { existsSync, mkdirSync, mkdtempSync, readFileSync, writeFileSync } from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
 import { test, expect, chromium } from '@playwright/test';
 import { buildClass } from '../fixtures/build.js';
 import { copyHandins } from '../fixtures/handins.js';
 import { findParts, partNumber } from '../../tools/grade/parts.js';
+import { partOpener } from '../../tools/grade/playwright-page.js';
 import { CHROMIUM, CHROMIUM_ARGS } from '../../tools/browser.js';
 import { WEBGPU_ARGS, webgpuCaptureScript, readWebGPUFrame } from '../../tools/webgpu-capture.js';
 
@@ -69,6 +70,40 @@ test.describe('the WebGPU capture', () => {
         expect(at(99, 0), format).toEqual(clear);
         await context.close();
       }
+    } finally {
+      await browser.close();
+    }
+  });
+});
+
+test.describe("the grader's kept page", () => {
+  // eslint-disable-next-line no-empty-pattern -- Playwright wants the fixtures argument destructured
+  test.beforeEach(({}, testInfo) => test.skip(testInfo.project.name !== 'webgl2', 'its own Chromium; once is enough'));
+
+  test('parts one after another: each its own folder, time frozen anew, storage apart; a crashed page is replaced', async () => {
+    const dir = mkdtempSync(path.join(os.tmpdir(), 'kept-'));
+    for (const name of ['one', 'two']) {
+      mkdirSync(path.join(dir, name));
+      writeFileSync(path.join(dir, name, 'index.html'),
+        `<script>document.title = ['${name}', new Date().toISOString(), localStorage.n = Number(localStorage.n || 0) + 1].join(' ');</script>`);
+    }
+    const browser = await chromium.launch({ executablePath: CHROMIUM, args: CHROMIUM_ARGS });
+    try {
+      const opener = partOpener(browser, 'submission.localhost');
+      const open = (name) => opener.open({ root: path.join(dir, name), rel: 'index.html', log: { errors: [], blocked: [], notes: [] } });
+      const loaded = '2026-01-05T09:00:02.000Z';
+      const a = await open('one');
+      expect(await a.page.title()).toBe(`one ${loaded} 1`);
+      await a.page.clock.runFor(5000); // time moves in the first part
+      await opener.done(true);
+      const b = await open('two');
+      expect(b.page, 'the same page, kept').toBe(a.page);
+      expect(await b.page.title(), 'its own folder, the time frozen where it starts, no storage from the part before').toBe(`two ${loaded} 1`);
+      await opener.done(true);
+      await b.page.goto('chrome://crash').catch(() => {});
+      const c = await open('one');
+      expect(c.page, 'a new page for the one that crashed').not.toBe(b.page);
+      expect(await c.page.title()).toBe(`one ${loaded} 1`);
     } finally {
       await browser.close();
     }

@@ -32,6 +32,8 @@ export function partOpener(browser, host) {
     await context.addInitScript(webgpuCaptureScript);
     await context.addInitScript(instrumentScript);
     const page = await context.newPage();
+    const k = { context, page, site, crashed: false };
+    page.on('crash', () => { k.crashed = true; });
     page.on('popup', (popup) => {
       site.log.blocked.push(`popup: ${popup.url()}`);
       popup.close().catch(() => {});
@@ -44,7 +46,15 @@ export function partOpener(browser, host) {
       site.log.errors.push(`dialog: ${d.message()}`);
       return d.dismiss().catch(() => {});
     });
-    return { context, page, site };
+    return k;
+  };
+  const serve = (site, root, log) => {
+    if (site.origin) site.former.add(site.origin);
+    Object.assign(site, { root, origin: `http://p${++n}.${host}`, log });
+  };
+  const leave = async ({ page, site }) => {
+    serve(site, null, site.log);
+    return page.goto(`${site.origin}/`, { timeout: 10_000 }).then(() => true, () => false);
   };
   const drop = async () => {
     if (!kept) return;
@@ -54,18 +64,12 @@ export function partOpener(browser, host) {
   };
   return {
     async open({ root, rel, query = '', loadSeconds = 20, log }) {
+      // the part before is left for an empty page first (its frames would run once as time is frozen
+      // anew); a page that crashed or will not let go takes the context with it
+      if (kept && (kept.crashed || kept.page.isClosed() || !await leave(kept))) await drop();
       kept ??= await keep();
       const { page, site } = kept;
-      const serve = (folder) => {
-        if (site.origin) site.former.add(site.origin);
-        Object.assign(site, { root: folder, origin: `http://p${++n}.${host}`, log });
-      };
-      if (site.origin) {
-        // the part before is left for an empty page first: its frames would run once as time is frozen anew
-        serve(null);
-        await page.goto(`${site.origin}/`, { timeout: loadSeconds * 1000 });
-      }
-      serve(root);
+      serve(site, root, log);
       await page.clock.install({ time: FROZEN });
       await page.clock.pauseAt(new Date(FROZEN.getTime() + 2000)); // from here time moves only when we say so
       const url = `${site.origin}/${rel.split(/[\\/]/).map(encodeURIComponent).join('/')}${query ? `?${query}` : ''}`;
