@@ -427,11 +427,12 @@ export async function gradePart(page, { part, rubric, progress = () => {}, deadl
   let viewMoved = false;
   if (orbitLater && shadedPart && (must.has('orbitToggle') || !look(ladder[ladder.length - 1].img, false, false)) && !late('the orbit at the finest level', 0.5)) {
     const at = ladder.length - 1;
-    viewMoved = true;
     if (!stopped) {
       await sampleOrbit(true);
       ladder[at] = cur;
+      viewMoved = true;
     } else if (orbitStart && orbitStop && await tryClick(orbitStart, 'the orbit control again', { watchMotion: true }) === 'starts') {
+      viewMoved = true;
       await sampleOrbit(true);
       if (await tryClick(orbitStop, 'the orbit control again', { watchMotion: true }) === 'stops') ladder[at] = cur;
       else say('review', 'the orbit did not stop again: the pictures were judged as it moves');
