@@ -42,13 +42,13 @@ for (const item of plan.items) {
     }
     const started = Date.now();
     let graded = { fail: null, checks: [], actions: [], images: {}, busy: 0 };
-    let opened, clean = false;
+    let clean = false;
     // where the part's time goes: opening it, each page-interface call, closing it, writing the pictures
     const timing = result.timing = {};
     const phase = (what, t0) => addTime(timing, what, Date.now() - t0);
     try {
       const t0 = Date.now();
-      opened = await openers.student.open({ root: item.root, rel: item.page, loadSeconds: rubric.loadSeconds ?? 20, log: result });
+      const opened = await openers.student.open({ root: item.root, rel: item.page, loadSeconds: rubric.loadSeconds ?? 20, log: result });
       phase('open', t0);
       if (opened.why) graded.fail = `the page could not be opened: ${opened.why}`;
       else {

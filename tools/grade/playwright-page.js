@@ -32,8 +32,6 @@ export function partOpener(browser, host) {
     await context.addInitScript(webgpuCaptureScript);
     await context.addInitScript(instrumentScript);
     const page = await context.newPage();
-    const k = { context, page, site, crashed: false };
-    page.on('crash', () => { k.crashed = true; });
     page.on('popup', (popup) => {
       site.log.blocked.push(`popup: ${popup.url()}`);
       popup.close().catch(() => {});
@@ -46,7 +44,7 @@ export function partOpener(browser, host) {
       site.log.errors.push(`dialog: ${d.message()}`);
       return d.dismiss().catch(() => {});
     });
-    return k;
+    return { context, page, site };
   };
   const serve = (site, root, log) => {
     if (site.origin) site.former.add(site.origin);
@@ -65,8 +63,8 @@ export function partOpener(browser, host) {
   return {
     async open({ root, rel, query = '', loadSeconds = 20, log }) {
       // the part before is left for an empty page first (its frames would run once as time is frozen
-      // anew); a page that crashed or will not let go takes the context with it
-      if (kept && (kept.crashed || kept.page.isClosed() || !await leave(kept))) await drop();
+      // anew); a page that crashed, was closed or will not let go takes the context with it (its goto fails)
+      if (kept && !await leave(kept)) await drop();
       kept ??= await keep();
       const { page, site } = kept;
       serve(site, root, log);
