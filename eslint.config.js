@@ -7,12 +7,26 @@ export default [
   { ignores: ['node_modules/', 'out/', 'test-results/', 'playwright-report/', 'tests/fixtures/'] },
   js.configs.recommended,
   {
-    languageOptions: { ecmaVersion: 2023, sourceType: 'module', globals: { ...globals.browser } },
+    languageOptions: { ecmaVersion: 2023, sourceType: 'module' },
     rules: { 'no-unused-vars': ['error', { argsIgnorePattern: '^_' }] },
   },
+  { ignores: ['grader/core/**'], languageOptions: { globals: { ...globals.browser } } },
   {
     files: ['tools/**', 'tests/**', '*.config.js'],
     languageOptions: { globals: { ...globals.node, ...globals.browser } },
   },
   { files: ['common/boot.js'], languageOptions: { sourceType: 'script' } },
+  {
+    files: ['grader/node/**'],
+    languageOptions: { globals: { ...globals.node, ...globals.browser } },
+  },
+  // the grader's core runs in Node (npm run grade) and in the browser (the check page) alike: no
+  // Node module, no DOM; only the language and the timers both have
+  {
+    files: ['grader/core/**'],
+    languageOptions: { globals: { ...globals.es2021, URL: 'readonly', URLSearchParams: 'readonly', setTimeout: 'readonly', clearTimeout: 'readonly', queueMicrotask: 'readonly' } },
+    rules: {
+      'no-restricted-imports': ['error', { patterns: [{ regex: '^(node:|[a-z@])', message: 'the grader\'s core imports only its own modules (no Node, no packages)' }] }],
+    },
+  },
 ];

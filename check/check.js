@@ -9,7 +9,7 @@ import { openSession, startHost, unsupported } from './host.js';
 import { checkPart, drawReference, frameScript } from './runner.js';
 import { handInSource, siteSource } from './serve.js';
 import { missedSlides, stepLink } from './slides.js';
-import { PARTS } from '../tools/grade/part-names.js';
+import { PARTS } from '../grader/core/part-names.js';
 
 const $ = (id) => document.getElementById(id);
 const el = (tag, props = {}, ...children) => {
@@ -82,7 +82,7 @@ async function run(gather) {
       throw new CheckInputError(`This browser would not start the service worker the self-check needs to show your pages to the grader (${err.message}). ` +
         'Service workers may be off in a private window or by a setting: try a normal window of a current Chrome, Edge or Firefox.');
     });
-    const rubric = await (await fetch(new URL('../tools/grade/rubric.json', import.meta.url))).json();
+    const rubric = await (await fetch(new URL('../grader/core/rubric.json', import.meta.url))).json();
     const session = openSession(handInSource(files), frameScript(rubric));
     const ours = openSession(siteSource(new URL('../', import.meta.url)), frameScript(rubric));
     const results = [];

@@ -5,7 +5,7 @@
 // node_modules and __MACOSX are left out as the grader leaves them out. Every refusal is a
 // CheckInputError whose message says what to do.
 import { unzip } from '../node_modules/fflate/esm/browser.js';
-import { partsOf } from '../tools/grade/part-names.js';
+import { partsOf } from '../grader/core/part-names.js';
 
 /** More than this is not a worksheet (a course folder, videos, node_modules?). */
 export const MAX_BYTES = 100 * 1024 * 1024;

@@ -7,11 +7,11 @@
 import { framePage } from './frame-page.js';
 import { frameWatchScript } from './frame-watch.js';
 import { frameClockScript } from './frame-clock.js';
-import { instrumentScript } from '../tools/grade/instrument.js';
+import { instrumentScript } from '../grader/browser/instrument.js';
 import { webgpuCaptureScript } from '../tools/webgpu-capture.js';
-import { gradePart } from '../tools/grade/drive.js';
-import { verdictOf, reasonsOf } from '../tools/grade/verdict.js';
-import { referenceQuery } from '../tools/grade/reference-state.js';
+import { gradePart } from '../grader/core/gather.js';
+import { verdictOf, reasonsOf } from '../grader/core/verdict.js';
+import { referenceQuery } from '../grader/core/reference-state.js';
 
 /** The grader's frozen clock: the same wall time as tools/grade (2026-01-05 09:00 UTC). */
 export const FROZEN = Date.UTC(2026, 0, 5, 9, 0, 0);

@@ -3,7 +3,7 @@
 // A folder gives its index.html; a file not where the page asked (other letter case, a folder too
 // far up) is found by findStandIn and said in the notes; HTML gets the frame's instrumentation as
 // its first script; JavaScript gets the loop guard. Nothing else is ever read.
-import { findStandIn, typeOf } from '../tools/grade/standin.js';
+import { findStandIn, typeOf } from '../grader/core/standin.js';
 import { guardInlineScripts, guardLoops } from './guard.js';
 
 /** The URL path under which the frames live: BASE + session + '/' + the hand-in's own path. */

@@ -73,7 +73,7 @@ test('bad input gets a clear message and the page stays usable; a zip is unpacke
   // a part that never returns, alone: stopped, said so, and the page goes on
   // ... which also asks for a file of another host and one of our site outside the hand-in: blocked, not served
   make('hangs/Part1/index.html', '<!doctype html><title>p1</title><canvas width=64 height=64></canvas>' +
-    '<script src="https://cdn.example.com/lib.js"></script><script src="/tools/grade/rubric.json"></script><script>for (;;) {}</script>');
+    '<script src="https://cdn.example.com/lib.js"></script><script src="/grader/core/rubric.json"></script><script>for (;;) {}</script>');
   const message = () => page.locator('#messages').innerText();
 
   await page.goto('/check/');
@@ -99,7 +99,7 @@ test('bad input gets a clear message and the page stays usable; a zip is unpacke
   await expect(page.locator('#card-WP04P1').getByRole('link', { name: /Our WP04P1/ })).toHaveAttribute('href', '../WP04P1/');
   await expect(page.locator('#messages')).toContainText('no WebGPU');
   await expect(page.locator('#card-WP04P1')).toContainText('request: https://cdn.example.com/lib.js');
-  await expect(page.locator('#card-WP04P1')).toContainText('missing file: /tools/grade/rubric.json');
+  await expect(page.locator('#card-WP04P1')).toContainText('missing file: /grader/core/rubric.json');
 
   // a browser that refuses service workers
   const blocked = await page.context().browser().newContext({ serviceWorkers: 'block' });
@@ -131,7 +131,7 @@ function gradeVerdicts(dir, names) {
   for (const n of names) cpSync(path.join(dir, 'class', n), path.join(batch, n), { recursive: true });
   const rubric = path.join(dir, 'rubric.json');
   writeFileSync(rubric, JSON.stringify({ reference: false }));
-  const run = spawnSync(process.execPath, ['tools/grade/grade.js', '--batch', batch, '--rubric', rubric, '--out', path.join(dir, 'report')],
+  const run = spawnSync(process.execPath, ['grader/node/grade.js', '--batch', batch, '--rubric', rubric, '--out', path.join(dir, 'report')],
     { encoding: 'utf8', timeout: 3_000_000 });
   expect(run.status, run.stderr + run.stdout.slice(-2000)).toBe(0);
   const report = JSON.parse(readFileSync(path.join(dir, 'report', 'report.json'), 'utf8'));

@@ -11,8 +11,8 @@ import path from 'node:path';
 import { test, expect, chromium } from '@playwright/test';
 import { buildClass } from '../fixtures/build.js';
 import { copyHandins } from '../fixtures/handins.js';
-import { findParts, partNumber } from '../../tools/grade/parts.js';
-import { partOpener } from '../../tools/grade/playwright-page.js';
+import { findParts, partNumber } from '../../grader/node/parts.js';
+import { partOpener } from '../../grader/node/playwright-page.js';
 import { CHROMIUM, CHROMIUM_ARGS } from '../../tools/browser.js';
 import { WEBGPU_ARGS, webgpuCaptureScript, readWebGPUFrame } from '../../tools/webgpu-capture.js';
 
@@ -129,7 +129,7 @@ test.describe('grading the labelled class', () => {
     const rubric = path.join(dir, 'rubric.json');
     writeFileSync(rubric, JSON.stringify({ timeoutSeconds: 240, loadSeconds: 15, firstFrameSeconds: 6, reference: false }));
     const started = Date.now();
-    const run = spawnSync(process.execPath, ['tools/grade/grade.js', '--batch', path.join(dir, 'class'), '--rubric', rubric, '--out', out],
+    const run = spawnSync(process.execPath, ['grader/node/grade.js', '--batch', path.join(dir, 'class'), '--rubric', rubric, '--out', out],
       { encoding: 'utf8', timeout: 2_400_000 });
     expect(run.status, run.stderr + run.stdout.slice(-3000)).toBe(0);
     report = JSON.parse(readFileSync(path.join(out, 'report.json'), 'utf8'));
@@ -187,7 +187,7 @@ test.describe('grading the labelled class', () => {
     // cy: one mistake a part (P1 colour = p, P2 no depth test, P3 no orbit button, P4 no highlight, P5 Gouraud)
     const strict = path.join(dir, 'strict.json');
     writeFileSync(strict, JSON.stringify({ timeoutSeconds: 240, loadSeconds: 15, firstFrameSeconds: 6, reference: false, mistakeVerdict: 'fail' }));
-    const run = spawnSync(process.execPath, ['tools/grade/grade.js', path.join(dir, 'class', 'cy'), '--rubric', strict, '--out', path.join(dir, 'strict')],
+    const run = spawnSync(process.execPath, ['grader/node/grade.js', path.join(dir, 'class', 'cy'), '--rubric', strict, '--out', path.join(dir, 'strict')],
       { encoding: 'utf8', timeout: 480_000 });
     expect(run.status, run.stderr + run.stdout.slice(-2000)).toBe(0);
     const cy = JSON.parse(readFileSync(path.join(dir, 'strict', 'report.json'), 'utf8')).submissions[0];
@@ -215,7 +215,7 @@ test.describe('grading real hand-ins against their labels', () => {
     const rubric = path.join(out, 'rubric.json');
     writeFileSync(rubric, JSON.stringify({ reference: false, timeoutSeconds: 300 }));
     const started = Date.now();
-    const run = spawnSync(process.execPath, ['tools/grade/grade.js', '--batch', HANDINS, '--labels', path.join(HANDINS, 'labels.tsv'), '--rubric', rubric, '--out', out],
+    const run = spawnSync(process.execPath, ['grader/node/grade.js', '--batch', HANDINS, '--labels', path.join(HANDINS, 'labels.tsv'), '--rubric', rubric, '--out', out],
       { encoding: 'utf8', timeout: 2_400_000 });
     expect(run.status, run.stderr + run.stdout.slice(-3000)).toBe(0);
     const a = JSON.parse(readFileSync(path.join(out, 'report.json'), 'utf8')).labels;
@@ -231,12 +231,12 @@ test.describe('grading real hand-ins against their labels', () => {
 });
 
 test('a submission folder that does not exist: a clear message and exit code 1; a bad rubric: exit code 2', () => {
-  const run = spawnSync(process.execPath, ['tools/grade/grade.js', '/nonexistent/student'], { encoding: 'utf8' });
+  const run = spawnSync(process.execPath, ['grader/node/grade.js', '/nonexistent/student'], { encoding: 'utf8' });
   expect(run.status).toBe(1);
   expect(run.stderr).toContain('grade: no such folder: /nonexistent/student');
-  const usage = spawnSync(process.execPath, ['tools/grade/grade.js', '--bogus'], { encoding: 'utf8' });
+  const usage = spawnSync(process.execPath, ['grader/node/grade.js', '--bogus'], { encoding: 'utf8' });
   expect(usage.status).toBe(2);
-  const rubric = spawnSync(process.execPath, ['tools/grade/grade.js', '--rubric', '/nonexistent/rubric.json', '/tmp'], { encoding: 'utf8' });
+  const rubric = spawnSync(process.execPath, ['grader/node/grade.js', '--rubric', '/nonexistent/rubric.json', '/tmp'], { encoding: 'utf8' });
   expect(rubric.status).toBe(2);
   expect(rubric.stderr).toContain('cannot read the rubric');
   expect(findParts('/nonexistent')).toEqual({ WP04P1: null, WP04P2: null, WP04P3: null, WP04P4: null, WP04P5: null });

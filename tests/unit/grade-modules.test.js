@@ -2,16 +2,16 @@
 // effect on pictures, verdicts and reasons from findings, and a teacher's labels against verdicts.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { partNumber } from '../../tools/grade/parts.js';
-import { findStandIn, typeOf } from '../../tools/grade/standin.js';
-import { serveSubmission } from '../../tools/grade/serve-submission.js';
-import { analyse, diffuseFit, samples, highlightSeen, highlightOffset, openMask } from '../../tools/grade/judge.js';
-import { effectOf, nameRole, trialOrder } from '../../tools/grade/controls.js';
-import { checkList, verdictOf, reasonsOf } from '../../tools/grade/verdict.js';
-import { parseLabels, agreement, agreementText } from '../../tools/grade/labels.js';
+import { partNumber } from '../../grader/node/parts.js';
+import { findStandIn, typeOf } from '../../grader/core/standin.js';
+import { serveSubmission } from '../../grader/node/serve-submission.js';
+import { analyse, diffuseFit, samples, highlightSeen, highlightOffset, openMask } from '../../grader/core/measure.js';
+import { effectOf, nameRole, trialOrder } from '../../grader/core/controls.js';
+import { checkList, verdictOf, reasonsOf } from '../../grader/core/verdict.js';
+import { parseLabels, agreement, agreementText } from '../../grader/node/labels.js';
 import { readFileSync } from 'node:fs';
 
-const rubric = JSON.parse(readFileSync(new URL('../../tools/grade/rubric.json', import.meta.url), 'utf8'));
+const rubric = JSON.parse(readFileSync(new URL('../../grader/core/rubric.json', import.meta.url), 'utf8'));
 const T = rubric.thresholds;
 
 /** A w×w picture: a regular polygon of `sides` corners (a sphere's outline at some level) shaded by `shade(nx, ny, nz)`, on grey. */
@@ -246,7 +246,7 @@ function fakePart({ controls, act = () => {}, key = () => {}, level = 1 }) {
 }
 
 test('drive: Subdivide and Coarsen found by what they do, whatever they are called', async () => {
-  const { gradePart } = await import('../../tools/grade/drive.js');
+  const { gradePart } = await import('../../grader/core/gather.js');
   const controls = [{ index: 0, type: 'button', id: 'makeSquare', text: 'reduce', events: ['click'] }, { index: 1, type: 'button', id: 'makeSphere', text: 'grow', events: ['click'] }];
   const { page } = fakePart({ controls, act: (c, s) => { s.level = Math.max(0, Math.min(6, s.level + (c.index === 1 ? 1 : -1))); } });
   const out = await gradePart(page, { part: 'WP04P1', rubric });
@@ -256,7 +256,7 @@ test('drive: Subdivide and Coarsen found by what they do, whatever they are call
 });
 
 test('drive: the level on the arrow keys when no control changes it; no level control at all is a review that says what was tried', async () => {
-  const { gradePart } = await import('../../tools/grade/drive.js');
+  const { gradePart } = await import('../../grader/core/gather.js');
   const { page } = fakePart({ controls: [], key: (k, s) => { if (k === 'ArrowUp') s.level++; if (k === 'ArrowDown') s.level = Math.max(0, s.level - 1); } });
   const out = await gradePart(page, { part: 'WP04P1', rubric });
   assert.equal(verdictOf(out.checks, out.fail), 'pass', out.checks.map((c) => c.reason).join(' | '));

@@ -1,8 +1,8 @@
 // Finding a submission's parts on disk: its HTML pages, walked in sorted order, named as
-// tools/grade/part-names.js reads them (the check page reads a dropped folder the same way).
+// grader/core/part-names.js reads them (the check page reads a dropped folder the same way).
 import { readdirSync, statSync } from 'node:fs';
 import path from 'node:path';
-import { PARTS, partNumber, partsOf } from './part-names.js';
+import { PARTS, partNumber, partsOf } from '../core/part-names.js';
 
 export { PARTS, partNumber };
 

@@ -3,7 +3,7 @@
 // listed; a file not where the page asks is looked for by findStandIn (standin.js) and said.
 import { readFileSync, readdirSync, statSync } from 'node:fs';
 import path from 'node:path';
-import { findStandIn, typeOf } from './standin.js';
+import { findStandIn, typeOf } from '../core/standin.js';
 
 /** Every file under `root` (relative paths, '/'-separated), up to a depth and a count. */
 export function filesUnder(root, dir = '', out = [], depth = 0) {

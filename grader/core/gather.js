@@ -7,7 +7,7 @@
 //   sources(), errors()
 // and runs in Node and in a browser alike (no Node modules; images are { width, height, data }).
 import { analyse, samples, normalColours, diffuseFit, silhouetteChange, shadingChange, pictureChange, pointLightFit, perspectiveSamples, darkSpots,
-  highlightAbove, highlightSeen, highlightOffset, nearPointLight, clearlyBetter, clearlyNearFalloff } from './judge.js';
+  highlightAbove, highlightSeen, highlightOffset, nearPointLight, clearlyBetter, clearlyNearFalloff } from './measure.js';
 import { describe, nameRole, named, effectOf, trialOrder, isClickable, isValued } from './controls.js';
 import { checkList } from './verdict.js';
 

@@ -1,9 +1,9 @@
-// The grader's own Playwright Test run: one test per part (tools/grade/grade.spec.js), its workers,
+// The grader's own Playwright Test run: one test per part (grader/node/grade.spec.js), its workers,
 // its --shard for splitting a class over machines, its reporters (blob for merge-reports, list).
 // Chromium gets a SwiftShader WebGPU adapter too: hand-ins come in both APIs.
 import { defineConfig } from '@playwright/test';
-import { CHROMIUM, CHROMIUM_ARGS } from '../browser.js';
-import { WEBGPU_ARGS } from '../webgpu-capture.js';
+import { CHROMIUM, CHROMIUM_ARGS } from '../../tools/browser.js';
+import { WEBGPU_ARGS } from '../../tools/webgpu-capture.js';
 
 const plan = process.env.GRADE_PLAN ? JSON.parse(await import('node:fs').then((fs) => fs.readFileSync(process.env.GRADE_PLAN, 'utf8'))) : { timeoutSeconds: 30, out: 'out/grade' };
 

@@ -7,7 +7,7 @@ import path from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { PARTS, findParts } from './parts.js';
 import { readLabels, agreement, agreementText, agreementHtml } from './labels.js';
-import { CHROMIUM } from '../browser.js';
+import { CHROMIUM } from '../../tools/browser.js';
 
 const here = path.dirname(fileURLToPath(import.meta.url));
 const repo = path.resolve(here, '../..');
@@ -20,7 +20,7 @@ week04p01, ...) in Chromium (WebGL or WebGPU) with time frozen, finds its contro
 orbit, subdivides until the silhouette settles, and gives each part a verdict (pass, review,
 fail) with reasons, from what the slide's step asks for. Our reference part is drawn beside it.
   --part P=FILE     use FILE (relative to the submission) for part P
-  --rubric FILE     a rubric in place of tools/grade/rubric.json (copy that file and edit it: time bounds,
+  --rubric FILE     a rubric in place of grader/core/rubric.json (copy that file and edit it: time bounds,
                     thresholds, control patterns, what each part must show)
   --out DIR         where report.html, report.json (and grades.csv in batch mode) go
                     (default out/grade/<name>)
@@ -66,9 +66,9 @@ function parseArgs(argv) {
 const esc = (s) => String(s).replace(/[&<>"']/g, (c) => ({ '&': '&amp;', '<': '&lt;', '>': '&gt;', '"': '&quot;', "'": '&#39;' })[c]);
 const safeName = (s) => s.replace(/[^A-Za-z0-9._-]+/g, '_');
 
-const DEFAULT_RUBRIC = path.join(here, 'rubric.json');
+const DEFAULT_RUBRIC = path.join(here, '../core/rubric.json');
 
-/** The rubric: tools/grade/rubric.json, or the teacher's file in its place (keys it leaves out keep the defaults). */
+/** The rubric: grader/core/rubric.json, or the teacher's file in its place (keys it leaves out keep the defaults). */
 function readRubric(file) {
   const load = (f) => {
     try {

@@ -3,8 +3,8 @@
 // frames run, capture. The check page has its own implementation of the same interface for a
 // part in an iframe; drive.js knows neither.
 import { PNG } from 'pngjs';
-import { webgpuCaptureScript, readWebGPUFrame } from '../webgpu-capture.js';
-import { instrumentScript } from './instrument.js';
+import { webgpuCaptureScript, readWebGPUFrame } from '../../tools/webgpu-capture.js';
+import { instrumentScript } from '../browser/instrument.js';
 import { serveSubmission } from './serve-submission.js';
 
 // the time the page sees: frozen, moving only when the grader lets frames run

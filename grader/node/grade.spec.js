@@ -1,4 +1,4 @@
-// The grader's harness: one Playwright test per part of the plan that tools/grade/grade.js wrote
+// The grader's harness: one Playwright test per part of the plan that grader/node/grade.js wrote
 // (GRADE_PLAN). Each opens the part (playwright-page.js: served by serve-submission.js, time
 // frozen, instrumented), lets drive.js bring it to a state and judge it, turns the findings into a
 // verdict with reasons (verdict.js), writes the pictures, and draws our reference beside them.
@@ -8,9 +8,9 @@ import path from 'node:path';
 import { PNG } from 'pngjs';
 import { compareImages } from './compare.js';
 import { partOpener } from './playwright-page.js';
-import { gradePart, addTime } from './drive.js';
-import { verdictOf, reasonsOf } from './verdict.js';
-import { referenceQuery, referenceStateOf } from './reference-state.js';
+import { gradePart, addTime } from '../core/gather.js';
+import { verdictOf, reasonsOf } from '../core/verdict.js';
+import { referenceQuery, referenceStateOf } from '../core/reference-state.js';
 
 const plan = JSON.parse(readFileSync(process.env.GRADE_PLAN, 'utf8'));
 const rubric = plan.rubric;

@@ -1,7 +1,7 @@
 // Which part of worksheet 4 a page is, from its path alone (pure: no file system, so the grader
 // and the check page in the browser find the same parts): WP04P1 … WP04P5 by folder or file name,
 // case-insensitive, in the spellings students use (WP04P1, Part1, part1, p1, p01, w4p1, week04p01,
-// worksheet4/part1, W4-1, Danish Del1, ...). tools/grade/parts.js walks the folders on disk.
+// worksheet4/part1, W4-1, Danish Del1, ...). grader/node/parts.js walks the folders on disk.
 
 export const PARTS = ['WP04P1', 'WP04P2', 'WP04P3', 'WP04P4', 'WP04P5'];
 
