@@ -1,7 +1,7 @@
 // One part of a hand-in, checked as `npm run grade` checks it: opened in a frame of its own
 // (1000 × 1000 CSS pixels, as the grader's page; time frozen; only the hand-in's files served),
 // loaded within the rubric's loadSeconds, then driven and judged by the grader's own modules
-// (gradePart, tools/grade/drive.js; verdictOf and reasonsOf, tools/grade/verdict.js) through the
+// (gradePart, grader/core/grade-part.js; verdictOf and reasonsOf, grader/core/verdict.js) through the
 // frame's page interface (check/frame-page.js), within the rubric's timeoutSeconds. A part that
 // never returns is stopped and said so. Our own part can be drawn beside it (drawReference).
 import { framePage } from './frame-page.js';
@@ -9,7 +9,7 @@ import { frameWatchScript } from './frame-watch.js';
 import { frameClockScript } from './frame-clock.js';
 import { instrumentScript } from '../grader/browser/instrument.js';
 import { webgpuCaptureScript } from '../tools/webgpu-capture.js';
-import { gradePart } from '../grader/core/gather.js';
+import { gradePart } from '../grader/core/grade-part.js';
 import { verdictOf, reasonsOf } from '../grader/core/verdict.js';
 import { referenceQuery } from '../grader/core/reference-state.js';
 
@@ -74,7 +74,9 @@ export async function checkPart({ part, page, session, rubric, stage, progress =
       frame.contentWindow.__checkWatch.setLoopSeconds(rubric.timeoutSeconds ?? 90);
       let timer;
       const bound = new Promise((resolve) => { timer = setTimeout(() => resolve('timeout'), (rubric.timeoutSeconds ?? 90) * 1000); });
-      const grading = gradePart(fp, { part, rubric, progress });
+      // the grader's outer bound (as grade.spec.js's): past it the part is too slow to judge here
+      const deadline = Date.now() + 0.85 * rubric.timeoutSeconds * 1000;
+      const grading = gradePart(fp, { part, rubric, progress, deadline });
       grading.catch(() => {}); // after the time bound the frame is gone, and so is the grading
       try {
         const r = await Promise.race([grading, bound]);
@@ -96,8 +98,7 @@ export async function checkPart({ part, page, session, rubric, stage, progress =
   return {
     part, file: page, api: graded.api ?? null, canvas: graded.canvas, controls: graded.controls || {}, numbers: graded.numbers || {},
     verdict: verdictOf(graded.checks, graded.fail),
-    reasons: reasonsOf({ fail: graded.fail, checks: graded.checks, seconds, busySeconds: graded.busy / 1000, slowSeconds: rubric.slowSeconds,
-      pageErrors: errors.filter((e) => /page error/.test(e)) }),
+    reasons: reasonsOf({ fail: graded.fail, checks: graded.checks, pageErrors: errors.filter((e) => /page error/.test(e)) }),
     actions: graded.actions || [], images: graded.images || {}, errors, blocked: fp.blocked(), notes: [...session.log.notes], seconds,
   };
 }

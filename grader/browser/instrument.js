@@ -4,8 +4,9 @@
 // (WebGL contexts get preserveDrawingBuffer so the last frame can be read at any time; WebGPU
 // frames come from tools/webgpu-capture.js, which must be added first).
 export function instrumentScript() {
-  const g = { api: null, apis: [], draws: 0, shaderErrors: [], gpuErrors: [], adapter: undefined, wgsl: [], glsl: [], faces: { depthTest: false, culling: false, cullMode: null }, noCull: false, cullOn: false };
+  const g = { api: null, apis: [], draws: 0, vertices: 0, pending: 0, shaderErrors: [], gpuErrors: [], adapter: undefined, wgsl: [], glsl: [], faces: { depthTest: false, culling: false, cullMode: null }, noCull: false, cullOn: false };
   Object.defineProperty(window, '__grade', { value: g, enumerable: false });
+  const add = EventTarget.prototype.addEventListener;
   const apiOf = { webgl: 'webgl', 'experimental-webgl': 'webgl', webgl2: 'webgl2', webgpu: 'webgpu' };
   const realGetContext = HTMLCanvasElement.prototype.getContext;
   // a WebGL canvas keeps its drawing buffer (preserveDrawingBuffer) so the last frame can be read
@@ -95,20 +96,46 @@ export function instrumentScript() {
       g.faces.cullMode = mode === this.FRONT ? 'front' : mode === this.BACK ? 'back' : 'front-and-back';
       return cullFace.call(this, mode);
     };
-    proto.drawArrays = function (...a) { g.draws++; drew(this); return bare(this, drawArrays, a); };
-    proto.drawElements = function (...a) { g.draws++; drew(this); return bare(this, drawElements, a); };
+    // the page's own work, counted (draw calls and vertices): what a page costs, never read off a clock
+    proto.drawArrays = function (...a) { g.draws++; g.vertices += Math.max(0, a[2] | 0); drew(this); return bare(this, drawArrays, a); };
+    proto.drawElements = function (...a) { g.draws++; g.vertices += Math.max(0, a[1] | 0); drew(this); return bare(this, drawElements, a); };
+  }
+  // what the page waits for in real time (a fetch, an XHR, a WebGPU adapter or device): the grader
+  // lets frames run only once none is pending, so that what a page shows after n frames does not
+  // depend on how long the network or the GPU took
+  const awaited = (promise) => {
+    g.pending++;
+    const done = () => { g.pending--; };
+    promise.then(done, done);
+    return promise;
+  };
+  if (window.fetch) {
+    const realFetch = window.fetch;
+    window.fetch = function (...a) { return awaited(realFetch.apply(this, a)); };
+  }
+  if (window.XMLHttpRequest) {
+    const send = XMLHttpRequest.prototype.send;
+    XMLHttpRequest.prototype.send = function (...a) {
+      if (!this.__gradeAwaited) {
+        Object.defineProperty(this, '__gradeAwaited', { value: true });
+        // (a synchronous request is over when send returns: loadend has fired by then)
+        g.pending++;
+        add.call(this, 'loadend', () => { g.pending--; });
+      }
+      return send.apply(this, a);
+    };
   }
   if (navigator.gpu && window.GPUAdapter) {
     const gpu = navigator.gpu, requestAdapter = gpu.requestAdapter.bind(gpu);
     gpu.requestAdapter = async (...a) => {
-      const adapter = await requestAdapter(...a);
+      const adapter = await awaited(requestAdapter(...a));
       g.adapter = adapter ? 'ok' : null;
       if (!adapter) g.gpuErrors.push('requestAdapter() gave no adapter');
       return adapter;
     };
     const requestDevice = GPUAdapter.prototype.requestDevice;
     GPUAdapter.prototype.requestDevice = async function (...a) {
-      const device = await requestDevice.apply(this, a);
+      const device = await awaited(requestDevice.apply(this, a));
       device.addEventListener('uncapturederror', (e) => { if (g.gpuErrors.length < 20) g.gpuErrors.push(`WebGPU: ${e.error.message}`); });
       return device;
     };
@@ -122,21 +149,24 @@ export function instrumentScript() {
       return module;
     };
     const createRenderPipeline = GPUDevice.prototype.createRenderPipeline, createRenderPipelineAsync = GPUDevice.prototype.createRenderPipelineAsync;
+    const mapAsync = GPUBuffer.prototype.mapAsync, onSubmittedWorkDone = GPUQueue.prototype.onSubmittedWorkDone;
+    GPUBuffer.prototype.mapAsync = function (...a) { return awaited(mapAsync.apply(this, a)); };
+    GPUQueue.prototype.onSubmittedWorkDone = function (...a) { return awaited(onSubmittedWorkDone.apply(this, a)); };
     const seePipeline = (desc) => {
       const ds = desc && desc.depthStencil, prim = (desc && desc.primitive) || {};
       if (ds && ds.depthCompare && ds.depthCompare !== 'always') g.faces.depthTest = true;
       if (prim.cullMode && prim.cullMode !== 'none') { g.faces.culling = true; g.faces.cullMode = prim.cullMode; }
     };
     GPUDevice.prototype.createRenderPipeline = function (desc) { seePipeline(desc); return createRenderPipeline.call(this, desc); };
-    GPUDevice.prototype.createRenderPipelineAsync = function (desc) { seePipeline(desc); return createRenderPipelineAsync.call(this, desc); };
+    GPUDevice.prototype.createRenderPipelineAsync = function (desc) { seePipeline(desc); return awaited(createRenderPipelineAsync.call(this, desc)); };
     const draw = GPURenderPassEncoder.prototype.draw, drawIndexed = GPURenderPassEncoder.prototype.drawIndexed;
-    GPURenderPassEncoder.prototype.draw = function (...a) { g.draws++; return draw.apply(this, a); };
-    GPURenderPassEncoder.prototype.drawIndexed = function (...a) { g.draws++; return drawIndexed.apply(this, a); };
+    const count = (n, instances) => Math.max(0, n | 0) * (instances === undefined ? 1 : Math.max(0, instances | 0));
+    GPURenderPassEncoder.prototype.draw = function (...a) { g.draws++; g.vertices += count(a[0], a[1]); return draw.apply(this, a); };
+    GPURenderPassEncoder.prototype.drawIndexed = function (...a) { g.draws++; g.vertices += count(a[0], a[1]); return drawIndexed.apply(this, a); };
   } else {
     g.adapter = null;
   }
   // which events each control listens to (addEventListener, or on<event> properties/attributes)
-  const add = EventTarget.prototype.addEventListener;
   EventTarget.prototype.addEventListener = function (type, ...rest) {
     if (this instanceof Element) {
       const set = this.__gradeEvents || (this.__gradeEvents = new Set());
@@ -148,6 +178,7 @@ export function instrumentScript() {
   /** What the page interface's state() gives the grading core (playwright-page.js and the check page's
    * frame driver both read it here, so they cannot drift apart). */
   g.state = () => ({ api: g.api, frames: window.__webgpuCapture ? window.__webgpuCapture.frames : 0, adapter: g.adapter, draws: g.draws,
+    vertices: g.vertices, pending: g.pending,
     shaderErrors: [...g.shaderErrors], gpuErrors: [...g.gpuErrors], faces: { ...g.faces } });
 
   /** The target canvas (the largest visible one), composited over white: a PNG data URL with format 'png' (the grader, which sends it out of the page: a tenth of the raw bytes, lossless), else its RGBA bytes (the check page, in the page). */

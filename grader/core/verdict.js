@@ -22,13 +22,13 @@ export function verdictOf(checks, fail) {
 
 /**
  * The reasons in the order a teacher reads them: why it could not be judged, then FAIL: …,
- * REVIEW: …, then what passed; then slowness and page errors, which change no verdict.
+ * REVIEW: …, then what passed; then page errors, which change no verdict. (How long a part took
+ * is never a reason: it depends on the machine; the report shows it beside the part.)
  */
-export function reasonsOf({ fail, checks = [], seconds = 0, busySeconds = 0, slowSeconds = Infinity, pageErrors = [] }) {
+export function reasonsOf({ fail, checks = [], pageErrors = [] }) {
   const reasons = [];
   if (fail) reasons.push(fail);
   for (const lvl of ['fail', 'review', 'pass']) for (const c of checks) if (c.level === lvl) reasons.push(lvl === 'pass' ? c.reason : `${lvl.toUpperCase()}: ${c.reason}`);
-  if (seconds > slowSeconds) reasons.push(`slow: ${seconds.toFixed(0)} s to grade (${busySeconds.toFixed(0)} s drawing frames) on a software renderer; given the time it needed`);
   if (!fail && pageErrors.length) reasons.push(`the page reported errors: ${pageErrors[0]}`);
   return reasons;
 }

@@ -8,7 +8,7 @@ import path from 'node:path';
 import { PNG } from 'pngjs';
 import { compareImages } from './compare.js';
 import { partOpener } from './playwright-page.js';
-import { gradePart, addTime } from '../core/gather.js';
+import { gradePart, addTime } from '../core/grade-part.js';
 import { verdictOf, reasonsOf } from '../core/verdict.js';
 import { referenceQuery, referenceStateOf } from '../core/reference-state.js';
 
@@ -53,8 +53,8 @@ for (const item of plan.items) {
       if (opened.why) graded.fail = `the page could not be opened: ${opened.why}`;
       else {
         // what has been done so far stays in the result if the time bound stops the part
-        // the looking stops at 70% of the bound, so that a slow page is still judged on what was seen
-        const deadline = started + 0.7 * rubric.timeoutSeconds * 1000;
+        // the outer bound: past 85% of it a part is too slow to judge here (time is left to write what was seen)
+        const deadline = started + 0.85 * rubric.timeoutSeconds * 1000;
         graded = await gradePart(opened.driver, { part: item.part, rubric, deadline, timing, progress: (what) => {
           result.reasons = [`the page did not finish within the rubric's bound of ${rubric.timeoutSeconds} s: stopped while ${what} (a click or frame that never returns?)`];
           save(item, result);

@@ -1,0 +1,69 @@
+// Judging a gathered part: pure functions from its artifact ({ facts, images }) and the rubric to
+// findings ({ level, reason }), numbers, and the pictures a teacher should see. One audit a point
+// of the slides (grader/core/audits/), run in the order a teacher reads them; the verdict and its
+// reasons come from the findings only (verdict.js). No browser: `npm run grade -- --audit-only`
+// re-judges a class from its saved artifacts.
+import { analyse } from './measure.js';
+import { checkList } from './verdict.js';
+import { litView } from './views.js';
+import { sphereView, shadingOf, viewFits } from './evidence.js';
+import { auditFirstFrame } from './audits/first-frame.js';
+import { auditLevelControls, auditHeavyLevel, auditSphere } from './audits/sphere.js';
+import { auditNormals, auditDepthCulling } from './audits/normals.js';
+import { auditDiffuse, auditPointLight } from './audits/diffuse.js';
+import { auditOrbitStopsAgain, auditOrbit, auditNotStopped } from './audits/orbit.js';
+import { auditHighlight, auditPlaceFarther } from './audits/highlight.js';
+import { auditSliders } from './audits/sliders.js';
+import { auditLeastShininess, auditPerFragment } from './audits/shading.js';
+
+/**
+ * { fail, checks, numbers, shown } for one part's artifact: `fail` (a reason) when the part could
+ * not be judged at all, `checks` the findings, `shown` the artifact's picture names a report shows
+ * (first, judged, coarse, highlightPlace, leastS).
+ */
+export function auditPart({ facts, images }, rubric) {
+  const { checks, say } = checkList(rubric);
+  const T = rubric.thresholds;
+  const part = facts.part;
+  const must = new Set((rubric.parts[part] || {}).must || []);
+  const numbers = {};
+  const shown = {};
+  if (images.first) shown.first = 'first';
+  const C = { facts, images, T, rubric, part, must, say, numbers, imagesShown: shown };
+  const result = (fail) => ({ fail, checks, numbers, shown, tooSlow: facts.tooSlow || null });
+  if (facts.tooSlow) {
+    // nothing judged: where the bound ran out depends on the machine, the verdict must not
+    say(rubric.tooSlowVerdict, `too slow to judge here: the rubric's bound of ${rubric.timeoutSeconds} s ran out while ${facts.tooSlow}; nothing was judged (what was done is listed under what the grader did)`);
+    return result(null);
+  }
+  const fail = auditFirstFrame(C);
+  if (fail) return result(fail);
+  if (!facts.ladder) return result('the grader stopped before the level ladder');
+  auditHeavyLevel(C);
+  auditOrbitStopsAgain(C);
+  if (facts.blankAtHigherLevel) say('mistake', 'the picture goes blank at a higher level: judged at the last level that drew');
+  shown.judged = facts.facesImage || facts.judged;
+  auditLevelControls(C);
+  const img = images[facts.judged];
+  const raw = analyse(img, T);
+  if (raw.blank) return result('the picture went blank after the controls were used');
+  const { an, circleArc } = sphereView(img, T);
+  const judged = { img, an, raw, circleArc };
+  auditSphere(C, judged, facts.ladder.map((l) => analyse(images[l.image], T).roundness), analyse(images.first, T).roundness);
+  auditNormals(C, judged);
+  auditDepthCulling(C);
+  const shaded = must.has('diffuse') || must.has('highlight');
+  const shading = shaded ? shadingOf(img, an, T) : null;
+  // the lit views kept along the orbit: their sparse fits (the orbit's), and full fits (the highlight's)
+  const lit = facts.views.map((v) => ({ ...litView(images[v.image], T), orbiting: v.orbiting, image: v.image })).filter((v) => v.lit);
+  if (shaded) auditDiffuse(C, shading, lit);
+  auditOrbit(C, lit);
+  if (shaded) auditPointLight(C, shading);
+  const later = shaded ? auditHighlight(C, shading, viewFits(lit.map((v) => ({ img: images[v.image] })), T)) : null;
+  auditSliders(C, judged, shading);
+  if (must.has('highlight')) auditLeastShininess(C, judged, shading);
+  auditPerFragment(C, judged, shading);
+  if (later) auditPlaceFarther(C, later);
+  auditNotStopped(C);
+  return result(null);
+}

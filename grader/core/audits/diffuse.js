@@ -1,0 +1,43 @@
+// WP04P3: the diffuse term, brightness = max(n·w_i, 0)·kd·Le + ambient for a fitted light, in the
+// judged view and in every lit view along the orbit; a point light and its 1/r² fall-off.
+import { nearPointLight, clearlyBetter } from '../measure.js';
+
+const fmt = (x, d = 2) => (x === null || x === undefined || Number.isNaN(x) ? '–' : Number(x).toFixed(d));
+
+/** The diffuse fit of the judged view (`shading`: evidence.shadingOf), with the lit views' sparse fits (`lit`). */
+export function auditDiffuse({ T, must, say, numbers }, shading, lit) {
+  if (!must.has('diffuse') && !must.has('highlight')) return;
+  const { fit, pointLight } = shading;
+  if (pointLight) numbers.pointLight = pointLight;
+  numbers.fit = fit && { r2: fit.r2, ambient: fit.ambient, diffuse: fit.diffuse, light: fit.light, highlightPeak: fit.highlightPeak, highlightRise: fit.highlightRise, spread: fit.spread };
+  const orbitFits = lit.filter((v) => v.orbiting).map((v) => v.fit);
+  // lit on both sides shows where the light comes from the side: any view seen on the orbit (or
+  // over all pixels: a crescent lit from behind is left out of the first fit as if a highlight; on
+  // a page lit one-sided, |n·w_i| never explains all pixels better, it lights the dark side)
+  const twoSided = [fit, ...lit.map((v) => v.fit)].filter(Boolean).find((f) => (f.r2TwoSided > f.r2 + 0.03 && f.r2 < 0.97) ||
+    (f.r2TwoSidedAll > f.r2All + 0.015 && f.r2TwoSidedAll >= T.diffuseR2));
+  if (!fit) say('mistake', 'too little of the sphere to read its shading');
+  else if (fit.spread < T.litSpread / 2) say('mistake', `the sphere is evenly bright: no diffuse shading to see (in ${1 + lit.length} views${orbitFits.length ? ' along the orbit' : ''})`);
+  else if (twoSided) {
+    say('mistake', `the sphere is lit on both sides: brightness follows |n·w_i| (R² ${fmt(twoSided.r2TwoSided)}), not max(n·w_i, 0) (R² ${fmt(twoSided.r2)})`);
+  } else if (!must.has('highlight') && orbitFits.length && Math.min(...orbitFits.map((f) => f.r2)) < T.diffuseR2 - 0.1) {
+    const worst = orbitFits.reduce((a, b) => (b.r2 < a.r2 ? b : a));
+    say('mistake', `brightness does not follow max(n·w_i, 0)·kd·Le + ambient at every orbit position (R² down to ${fmt(worst.r2)}): lit where it should be dark?`);
+  } else if (fit.r2 >= T.diffuseR2 && fit.diffuse >= T.diffuseMin) {
+    say('pass', `brightness follows max(n·w_i, 0)·kd·Le + ambient (R² ${fmt(fit.r2)}, fitted light ${fit.light.map((v) => fmt(v)).join(', ')})`);
+  } else if (nearPointLight(pointLight, T) && fit.diffuse >= T.diffuseMin) {
+    const f = pointLight[nearPointLight(pointLight, T)];
+    say('pass', `brightness follows max(n·w_i, 0)·kd·L_i + ambient for a point light ${fmt(f.distance, 1)} radii from the centre (R² ${fmt(f.r2)})`);
+  } else say('mistake', `brightness does not follow max(n·w_i, 0)·kd·Le + ambient for any light direction (R² ${fmt(fit.r2)})`);
+}
+
+/** A point light: with the 1/r² fall-off, or clearly without it. */
+export function auditPointLight({ T, say }, shading) {
+  const { pointLight } = shading;
+  if (!pointLight) return;
+  if (clearlyBetter(pointLight, 'none', 'falloff', T)) {
+    say('review', `point light without the 1/r² fall-off: brightness fits a light ${fmt(pointLight.none.distance, 1)} radii from the centre with no fall-off (R² ${fmt(pointLight.none.r2, 3)}) better than with L_i = I/‖p_ℓ − x‖² (R² ${fmt(pointLight.falloff.r2, 3)})`);
+  } else if (clearlyBetter(pointLight, 'falloff', 'none', T)) {
+    say('pass', `a point light ${fmt(pointLight.falloff.distance, 1)} radii from the centre, with the 1/r² fall-off (R² ${fmt(pointLight.falloff.r2, 3)}; without it ${fmt(pointLight.none.r2, 3)})`);
+  }
+}

@@ -1,0 +1,59 @@
+// WP04P4/P5: the specular term: a highlight shows (in the judged view, a lit view along the orbit,
+// or with the page's own ks and s sliders raised), and it sits at w_h, halfway between the light
+// and the viewer (the slides' w_r · w_o peaks there too), not at the light.
+import { analyse, highlightOffset } from '../measure.js';
+import { highlightShown, placeView, raisedSeen } from '../evidence.js';
+import { fullFit, lightAngle } from '../views.js';
+
+const fmt = (x, d = 2) => (x === null || x === undefined || Number.isNaN(x) ? '–' : Number(x).toFixed(d));
+
+/**
+ * Whether a highlight shows, and where it is placed. Returns the place to judge at the end (the
+ * gatherer looked farther along the orbit for it), or null.
+ */
+export function auditHighlight(C, shading, views) {
+  const { facts, images, T, must, say, numbers } = C;
+  if (!must.has('highlight') || !shading.fit) return null;
+  const fit = shading.judgedFit;
+  let seen = highlightShown(shading, views, T);
+  if (!seen && !shading.nearModel && facts.raised) seen = raisedSeen(facts.raised, images, T);
+  numbers.highlightViews = 1 + views.length;
+  if (seen) say('pass', `a specular highlight in ${seen.where} (up to ${fmt(100 * seen.fit.highlightPeak, 0)}% of the way from the diffuse fit to white, ${fmt(seen.fit.highlightRise, 2)} above it)`);
+  let later = null;
+  if (seen && !shading.nearModel) {
+    const place = placeView(seen, views, T);
+    if (!place) say('pass', 'note: the highlight\'s place is not judged: it shows only with s lowered to 10 by the page\'s own slider, which makes it too broad to place');
+    else if (facts.placeFarther) later = place;
+    else judgePlace(C, place);
+  }
+  if (!seen) say('mistake', `no specular highlight: nothing brighter than the diffuse fit (${fmt(fit.highlightPeak)}) in ${1 + views.length} views (the judged one${views.length ? ' and the lit ones along the orbit' : ''})`);
+  return later;
+}
+
+/** The highlight's place, judged in the view the gatherer found farther along the orbit, else where it was seen (`near`). */
+export function auditPlaceFarther(C, near) {
+  const name = C.facts.placeFarther.image;
+  if (!name) return judgePlace(C, near);
+  const img = C.images[name];
+  C.imagesShown.highlightPlace = name;
+  judgePlace(C, { fit: fullFit(img, analyse(img, C.T), C.T), where: 'a view along the orbit' });
+}
+
+/** Says whether the highlight sits at w_h in `place` ({ fit, where }). */
+function judgePlace({ T, say, numbers }, place) {
+  const offset = highlightOffset(place.fit.highlightNormal, place.fit.light);
+  if (offset === null) return;
+  const light = lightAngle(place.fit);
+  Object.assign(numbers, { highlightOffset: offset, highlightPlaceLight: light });
+  const near = light < T.highlightPlaceLightDegrees;
+  const where = `in ${place.where}, the light ${fmt(light, 0)}° from the viewer`;
+  const fitted = place.fit.light.map((v) => fmt(v)).join(', ');
+  const ask = 'is w_o the direction from the surface to the eye, in the same space as n and w_i?';
+  // w_h is half the light's angle from w_i: with the light well away from the viewer, a highlight
+  // clearly nearer the light than w_h is at the light (w_o or w_r wrong), even within the bound below
+  const fromLight = highlightOffset(place.fit.highlightNormal, place.fit.light, 0);
+  numbers.highlightFromLight = fromLight;
+  if (!near && offset - fromLight >= T.highlightAtLightDegrees) say('mistake', `the highlight sits at the light, not halfway between the light and the viewer: ${fmt(fromLight, 0)}° from the light, ${fmt(offset, 0)}° from the halfway normal (the light fitted at ${fitted}; ${where}): ${ask}`);
+  else if (offset > T.highlightPlaceDegrees) say('mistake', `the highlight is ${fmt(offset, 0)}° from where the model puts it (at the normal halfway between the light, fitted at ${fitted}, and the viewer; ${where}): ${ask}`);
+  else say('pass', `the highlight sits where the normal is halfway between the light and the viewer (${fmt(offset, 0)}° off, ${where}${near ? `; with the light this near the viewer that halfway normal is only ${fmt(light / 2, 0)}° from the light, so a highlight at the light would pass too` : ''})`);
+}

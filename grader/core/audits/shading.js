@@ -1,0 +1,49 @@
+// s at its least (the Phong term with s = 0 is pow(0, 0) where cos φ ≤ 0: undefined, black on
+// many GPUs), and WP04P5's shading per fragment, seen at a coarse level.
+import { analyse, darkSpots, shadingChange } from '../measure.js';
+
+const fmt = (x, d = 2) => (x === null || x === undefined || Number.isNaN(x) ? '–' : Number(x).toFixed(d));
+
+/** The picture at the least s against the judged one (`judged`: { img, an }; the same view). */
+export function auditLeastShininess({ facts, images, T, say, numbers, imagesShown }, judged, shading) {
+  const least = facts.leastS;
+  if (!least || !shading || !shading.fit) return;
+  const after = images[least.image];
+  const { img, an } = judged;
+  if (after.width !== img.width || after.height !== img.height) return;
+  const spots = darkSpots(img, an, after, shading.judgedFit, T);
+  if (!spots) return;
+  numbers.darkSpotsAtLeastS = spots;
+  imagesShown.leastS = least.image;
+  if (spots.share >= T.darkSpotShare && spots.count >= 5) {
+    say('review', `s = ${least.value} gives black spots inside the sphere (${fmt(100 * spots.share, 1)}% of it darker than diffuse + ambient): pow(0, 0) is undefined; guard it (e.g. cos φ > 0 ? pow(cos φ, s) : 0)`);
+  } else say('pass', `s = ${least.value} leaves no dark spots inside the sphere (pow(0, 0) guarded)`);
+}
+
+/** The fragment shader's own code (GLSL writing a colour, or WGSL's @fragment and what it calls): does it call pow()? */
+export function fragmentPow(sources) {
+  const fs = sources.glsl.filter((s) => /gl_FragColor|out\s+vec4/.test(s) && !/gl_Position/.test(s));
+  const wg = sources.wgsl.map((s) => {
+    const body = s.split(/@fragment/)[1] || '';
+    const called = [...body.matchAll(/([A-Za-z_]\w*)\s*\(/g)].map((m) => m[1]);
+    return body + called.map((name) => (s.split(new RegExp(`fn\\s+${name}\\s*\\(`))[1] || '').split(/\n}\s*\n/)[0]).join('\n');
+  });
+  return [...fs, ...wg].some((s) => /pow\s*\(/.test(s));
+}
+
+/** P5: the highlight per fragment: as smooth at a coarse level as at the finest; else pow() in the fragment shader. */
+export function auditPerFragment({ facts, images, T, must, say, numbers, imagesShown }, judged, shading) {
+  if (!must.has('perFragment') || !shading || !shading.fit) return;
+  const j = facts.judgedLevel;
+  const coarseAt = facts.stopped && !facts.viewMoved ? facts.ladder.findIndex((s, k) => k !== j && !s.blank && analyse(images[s.image], T).roundness < T.coarseRoundness) : -1;
+  const coarse = coarseAt >= 0 ? images[facts.ladder[coarseAt].image] : null;
+  if (coarse && coarse.width === judged.img.width) {
+    const change = shadingChange(coarse, analyse(coarse, T), judged.img, judged.raw);
+    numbers.coarseShadingChange = change;
+    imagesShown.coarse = facts.ladder[coarseAt].image;
+    const r = analyse(coarse, T).roundness;
+    if (change !== null && change <= T.phongCoarseChange) say('pass', `the shading at a coarse level (roundness ${fmt(r)}) stays as smooth as at the finest (RMS ${fmt(change, 3)}): per fragment`);
+    else say('mistake', `the highlight follows the triangles at a coarse level (RMS ${fmt(change, 3)} from the finest): shading is per vertex, not per fragment (or the normals are not re-normalised in the fragment shader)`);
+  } else if (fragmentPow(facts.sources)) say('pass', `no coarse level to compare${facts.level.coarsen ? '' : ' (nothing found that coarsens)'}; the fragment shader evaluates the specular term (pow): per fragment`);
+  else say('mistake', 'no coarse level to compare, and no pow() in the fragment shader: the model seems evaluated per vertex');
+}

@@ -1,0 +1,47 @@
+// WP04P4: "sliders for the material and light parameters" that act on the input event (while
+// sliding), and ks used in the specular term.
+import { analyse, samples, diffuseFit, perspectiveSamples, highlightAbove } from '../measure.js';
+
+const fmt = (x, d = 2) => (x === null || x === undefined || Number.isNaN(x) ? '–' : Number(x).toFixed(d));
+const SLIDERS = ['kd', 'ks', 's', 'Le', 'La'];
+
+/** The sliders tried (facts.sliders), against the judged view (`judged`: { an }) and its shading. */
+export function auditSliders({ facts, images, T, must, say, rubric, part }, judged, shading) {
+  if (!must.has('sliders')) return;
+  const looked = (rubric.parts[part] || {}).sliders || SLIDERS;
+  const required = (rubric.parts[part] || {}).requiredSliders || [];
+  const baseFit = shading && shading.judgedFit;
+  const nearModel = shading && shading.nearModel;
+  let inputOk = 0, changeOnly = 0, dead = 0;
+  const found = {};
+  for (const s of facts.sliders) {
+    const { how, role, target } = s;
+    if (how !== 'none' && !s.levelSlider) {
+      if (role && !found[role]) found[role] = true;
+      if (how === 'input') inputOk++;
+      else changeOnly++;
+    } else if (how === 'none') dead++;
+    if (how !== 'none' && baseFit && role === 'ks') {
+      // the highlight left with ks at its least: above the base picture's near point-light model (its
+      // 1/r² spot stays and is no highlight), or above the after picture's own directional fit
+      const after = images[s.image];
+      const a = analyse(after, T);
+      const f = a.blank ? null : nearModel ? { highlightPeak: highlightAbove(perspectiveSamples(after, judged.an, T.pointLightFovy, { max: 1500 }), nearModel, T) }
+        : diffuseFit(samples(after, a), T);
+      if (f && f.highlightPeak >= baseFit.highlightPeak * 0.5 && f.highlightPeak >= T.highlightPeak) {
+        say('review', `ks at ${target} leaves the highlight as it was (${fmt(f.highlightPeak)}): is ks used in the specular term?`);
+      }
+    }
+  }
+  const named = Object.keys(found);
+  const missing = looked.filter((k) => !found[k]);
+  const changeOnlyWords = `${changeOnly} slider(s) update the picture only on the change event, not while sliding (the slide asks for the input event)`;
+  if (inputOk) say('pass', `${inputOk} slider(s) change the material or light on the input event${named.length ? ` (${named.join(', ')})` : ''}`);
+  else if (changeOnly) say('review', changeOnlyWords);
+  else say('review', `no slider changes the material or light (${facts.slidersFound} tried; the slide asks for sliders for the parameters)`);
+  if (inputOk && changeOnly) say('review', changeOnlyWords);
+  const requiredMissing = required.filter((k) => !found[k]);
+  if (requiredMissing.length) say('review', `no slider found for ${requiredMissing.join(', ')} (this rubric asks for each)`);
+  else if (missing.length && inputOk) say('pass', `note: no slider found for ${missing.join(', ')}`);
+  if (must.has('sliderEffects') && dead) say('pass', `note: ${dead} slider(s) change nothing in the picture`);
+}

@@ -1,0 +1,39 @@
+// "Draw a solid sphere": the subdivision controls, a round closed outline at the judged level, and
+// the outline getting rounder with each level.
+const fmt = (x, d = 2) => (x === null || x === undefined || Number.isNaN(x) ? '–' : Number(x).toFixed(d));
+
+/** The slide's Subdivide and Coarsen buttons, as found by their effect. */
+export function auditLevelControls({ facts, must, say }) {
+  const L = facts.level;
+  if (!must.has('subdivideControls') || !L) return;
+  const hasLevel = L.subdivide || L.slider;
+  if (hasLevel) say('pass', `has controls to subdivide (${facts.roles.subdivide || facts.roles.levelSlider})`);
+  else if (!L.stopped) say('review', 'the level controls could not be looked for: the picture never stood still');
+  else say('review', `nothing found that makes the sphere finer: ${L.trials} controls tried${L.valued ? ', sliders and menus stepped' : ''}, and the arrow, + and − keys pressed (the slide asks for Subdivide and Coarsen buttons)`);
+  if (L.subdivide && !L.coarsen && !L.slider) say('review', 'nothing found that makes the sphere coarser (the slide asks for a Coarsen button too)');
+}
+
+/** A level with heavy work a frame ended the climb: said as a note. */
+export function auditHeavyLevel({ facts, say }) {
+  const last = facts.ladder[facts.ladder.length - 1];
+  if (facts.heavyLevel) say('pass', `note: the last level reached draws ${fmt(facts.heavyLevel / 1000, 0)}k vertices a frame; with the sphere round to ${fmt(100 * last.roundness, 1)}% there, no finer level was tried (each has four times the triangles)`);
+}
+
+/**
+ * A round closed sphere at the judged level (`judged`: { an, circleArc }), and rounder with each
+ * level (`ladder`: each level's roundness, as climbed; `firstRoundness`: the first frame's).
+ */
+export function auditSphere({ T, say, numbers }, judged, ladder, firstRoundness) {
+  const { an, circleArc } = judged;
+  Object.assign(numbers, { radius: an.radius, roundness: an.roundness, fill: an.fill, coverage: an.coverage, firstRoundness, levelsSeen: ladder.length });
+  if (circleArc) say('pass', `part of the sphere is as dark as the background: its outline was fitted to the lit edge (${circleArc}° of a circle)`);
+  if (an.radius < T.minRadiusPixels) say('review', `the sphere is very small on screen (${fmt(an.radius, 0)} px radius): hard to judge`);
+  else if (an.roundness <= T.roundness && an.fill >= T.fill) {
+    say('pass', `a round closed sphere (radius ${fmt(an.radius, 0)} px, roundness ${fmt(an.roundness, 3)})`);
+  } else if (an.touches) say('review', 'the object touches the canvas edge: its silhouette cannot be judged');
+  else say('mistake', `the object is not a round closed sphere (roundness ${fmt(an.roundness, 3)}, fill ${fmt(an.fill)}${ladder.length > 1 ? ', after subdividing' : ''})`);
+  if (ladder.length > 2) {
+    const rs = ladder.filter((r) => Number.isFinite(r));
+    if (rs[0] > rs[rs.length - 1] + 0.02) say('pass', `rounder with each level (roundness ${fmt(rs[0], 3)} → ${fmt(rs[rs.length - 1], 3)})`);
+  }
+}

@@ -1,0 +1,83 @@
+// Readings of the judged picture that gatherers and audits share: the sphere's outline (fitted to
+// the lit edge where the unlit side merges with the background), the diffuse fit and point-light
+// fit of its shading, and where a highlight shows. Pure: a gatherer that acts on one of these (to
+// raise ks, or look farther along the orbit) and the audit that judges it read the same numbers.
+import { analyse, samples, diffuseFit, pointLightFit, perspectiveSamples, highlightSeen, clearlyNearFalloff } from './measure.js';
+import { fullFit, lightAngle } from './views.js';
+
+/**
+ * The judged picture's analysis: `an`, with a dark unlit side on a dark background read as the
+ * lit edge's circle (`circleArc`, the degrees of circle it fits) when the outline is not round.
+ */
+export function sphereView(img, T) {
+  let an = analyse(img, T);
+  let circleArc = null;
+  const circ = an.circle;
+  if (!an.blank && !(an.roundness <= T.roundness && an.fill >= T.fill) && circ && circ.roundness <= T.roundness && circ.arc >= 180 && !an.touches) {
+    an = { ...an, cx: circ.cx, cy: circ.cy, radius: circ.r, roundness: circ.roundness, fill: 1 };
+    circleArc = circ.arc;
+  }
+  return { an, circleArc };
+}
+
+/**
+ * The shading of a picture (its analysis `an`): the diffuse fit over all samples, a point-light
+ * fit where the picture is lit, and `nearModel`, the near point light with 1/r² fall-off where it
+ * fits clearly better (then the highlight is what rises above it, in `fit`'s highlight fields).
+ */
+export function shadingOf(img, an, T) {
+  const fit = diffuseFit(samples(img, an), T);
+  let pointLight = null;
+  if (fit && fit.spread >= T.litSpread) {
+    pointLight = pointLightFit(perspectiveSamples(img, an, T.pointLightFovy, { max: 1500 }), { ...T, around: fit.light });
+  }
+  const nearModel = clearlyNearFalloff(pointLight, T) ? pointLight.falloff.model : null;
+  const judgedFit = fit && nearModel ? { ...fit, highlightPeak: pointLight.falloff.highlightPeak, highlightRise: pointLight.falloff.highlightRise } : fit;
+  return { fit, judgedFit, pointLight, nearModel };
+}
+
+/** The kept views' full fits (the lit views along the orbit), in the order kept. */
+export function viewFits(views, T) {
+  return views.map((v) => ({ ...v, fit: fullFit(v.img, analyse(v.img, T), T) }));
+}
+
+/**
+ * Where the highlight shows without touching the page: the judged view, else one of the lit views
+ * along the orbit (not with a near point light: its 1/r² spot is read against its own model).
+ * { fit, where } or null.
+ */
+export function highlightShown(shading, views, T) {
+  if (highlightSeen(shading.judgedFit, T)) return { fit: shading.judgedFit, where: 'the judged view' };
+  if (shading.nearModel) return null;
+  const other = views.find((v) => v.fit && highlightSeen(v.fit, T));
+  return other ? { fit: other.fit, where: `one of ${views.length} lit views along the orbit` } : null;
+}
+
+/**
+ * The view to place the highlight in: the one that tells w_h from w_i best, of those that show the
+ * highlight over a clean diffuse fit, the light farthest from the viewer; not where only a
+ * broadened highlight (s lowered to 10) shows. { fit, where } or null.
+ */
+export function placeView(seen, views, T) {
+  const clean = (f) => f.r2 >= T.diffuseR2;
+  let place = seen.broad ? null : seen;
+  for (const v of views) {
+    const f = v.fit;
+    if (f && highlightSeen(f, T) && clean(f) && (!place || !clean(place.fit) || lightAngle(f) > lightAngle(place.fit))) place = { fit: f, where: 'a lit view along the orbit' };
+  }
+  return place;
+}
+
+/**
+ * The highlight as the page's own sliders showed it once raised (`raised`: [{ role, image, seen,
+ * broad }] in the order set): { fit, broad, where } or null.
+ */
+export function raisedSeen(raised, images, T) {
+  const k = raised.findIndex((x) => x.seen);
+  if (k < 0) return null;
+  const x = raised[k];
+  const img = images[x.image];
+  const set = raised.slice(0, k + 1).map((r) => r.role);
+  return { fit: fullFit(img, analyse(img, T), T), broad: x.broad,
+    where: `the judged view with ${set.join(' and ')} set by the page's own slider${set.length > 1 ? 's' : ''}` };
+}

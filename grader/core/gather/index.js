@@ -1,0 +1,137 @@
+// Gathering one part, as a teacher brings it to a state by hand: its first frame, its controls
+// found by what they do, the orbit sampled and stopped, the sphere subdivided until round, then
+// what the step asks to be tried. The result is an artifact, plain data: `facts` (JSON) and
+// `images` (named pictures); it holds no verdict and no reason (the audits give those). What is
+// gathered depends only on the page, the rubric and counts: the page's clock is frozen and
+// stepped, and the wall clock is an outer bound (facts.tooSlow says where it ran out).
+//
+// It drives the page only through the page interface (grader/node/playwright-page.js for the
+// grader, check/frame-page.js for the check page): state(), snap(), controls(), click(c),
+// setValue(c, v, events), press(key), tick(ms, frames), setNoCull(on), sources(), errors().
+import { session, TooSlow } from './session.js';
+import { findOrbit, sampleOrbit, look } from './orbit.js';
+import { findLevel, climb } from './level.js';
+import { probeFaces, probeDepthCulling, raiseHighlight, trySliders, leastShininess, placeFarther } from './probes.js';
+import { sphereView, shadingOf, viewFits, highlightShown, placeView, raisedSeen } from '../evidence.js';
+import { lightAngle } from '../views.js';
+
+/** Gathers one opened part: { facts, images }. `timing` ({ method: { ms, calls } }) hears where the time went. */
+export async function gatherPart(page, { part, rubric, progress = () => {}, deadline = Infinity, timing = {} }) {
+  const S = session(timed(page, timing), { part, rubric, progress, deadline });
+  try {
+    await gather(S);
+  } catch (err) {
+    if (!(err instanceof TooSlow)) throw err;
+    S.facts.tooSlow = err.doing;
+  }
+  S.facts.errors = [...page.errors()];
+  return { facts: S.facts, images: S.images };
+}
+
+async function gather(S) {
+  const { page, T, facts, must } = S;
+  // ---- the first frame: frames run only once nothing the page awaits in real time is pending ----
+  S.step('waiting for the first frame');
+  await S.settle();
+  await S.tick(1000, 1);
+  for (let k = 0; k < T.firstFrameTicks; k++) {
+    const s = await S.settle();
+    if (s.draws > 0 && (s.api !== 'webgpu' || s.frames > 0)) break;
+    if (s.adapter === null || s.shaderErrors.length || (!s.api && k >= 20)) break;
+    if (k >= 10 && page.errors().some((e) => /^(page error|dialog)/.test(e))) break; // it threw or alerted: no need to wait longer
+    await S.tick(16);
+  }
+  const g = await page.state();
+  facts.api = g.api;
+  facts.first = { api: g.api, adapter: g.adapter, draws: g.draws, shaderErrors: g.shaderErrors, gpuErrors: g.gpuErrors };
+  const firstShot = await S.shot();
+  if (!firstShot) return;
+  facts.canvas = { width: firstShot.img.width, height: firstShot.img.height };
+  S.keep('first', firstShot.img);
+  if (firstShot.an.blank) return;
+
+  // ---- the controls, the orbit, the level ----
+  const controls = await page.controls();
+  facts.controls = controls;
+  S.cur = firstShot;
+  await findOrbit(S, controls);
+  const stopped = facts.stopped = !S.moving;
+  await findLevel(S, controls);
+  await climb(S);
+  const ladder = S.ladder;
+  // the orbit looked at where the shading can be read (it was too coarse at first): on again,
+  // sampled, off again; the view it stops at is judged. Only where it buys evidence: the judged view
+  // is unlit, or the step asks for the orbit (P3)
+  const { orbit } = S;
+  if (orbit.later && must.has('diffuse') && (must.has('orbitToggle') || !look(S, ladder[ladder.length - 1].img, { orbiting: false, keep: false }))) {
+    const at = ladder.length - 1;
+    if (!stopped) {
+      await sampleOrbit(S, true);
+      ladder[at] = S.cur;
+      facts.viewMoved = true;
+    } else if (orbit.start && orbit.stop && await S.tryClick(orbit.start, 'the orbit control again', { watchMotion: true }) === 'starts') {
+      facts.viewMoved = true;
+      await sampleOrbit(S, true);
+      if (await S.tryClick(orbit.stop, 'the orbit control again', { watchMotion: true }) === 'stops') ladder[at] = S.cur;
+      else facts.orbitKeptMoving = true;
+    }
+  }
+  Object.assign(facts.orbit = {}, { movedAtFirst: orbit.movedAtFirst, toggles: orbit.toggles, start: orbit.start ? orbit.start.index : null, stop: orbit.stop ? orbit.stop.index : null, control: S.R.orbit ? S.R.orbit.index : null });
+  facts.ladder = ladder.map((s, k) => ({ image: S.keep(`level-${k}`, s.img), roundness: s.an.roundness, blank: !!s.an.blank }));
+  // a page that goes blank at a higher level is judged at the last level it drew
+  let j = ladder.length - 1;
+  if (ladder[j].an.blank) {
+    const drawn = ladder.map((s, k) => (s.an.blank ? -1 : k)).filter((k) => k >= 0);
+    if (drawn.length) {
+      j = drawn[drawn.length - 1];
+      facts.blankAtHigherLevel = true;
+    }
+  }
+  facts.judgedLevel = j;
+  facts.judged = facts.ladder[j].image;
+  if (ladder[j].an.blank) return;
+
+  // ---- what the step asks to be tried ----
+  const img = ladder[j].img;
+  const { an } = sphereView(img, T);
+  if (must.has('frontFaces')) await probeFaces(S, controls, { img, an });
+  if (must.has('depthCulling')) await probeDepthCulling(S, controls);
+  const shading = must.has('diffuse') || must.has('highlight') ? shadingOf(img, an, T) : null;
+  let placeLater = false;
+  if (must.has('highlight') && shading.fit) {
+    const views = viewFits(facts.views.map((v) => ({ img: S.images[v.image] })), T);
+    let seen = highlightShown(shading, views, T);
+    if (!seen && !shading.nearModel) {
+      await raiseHighlight(S, controls);
+      seen = raisedSeen(facts.raised, S.images, T);
+    }
+    const place = seen && !shading.nearModel ? placeView(seen, views, T) : null;
+    placeLater = !!place && lightAngle(place.fit) < T.highlightPlaceLightDegrees && !!orbit.start && !!orbit.stop && stopped;
+  }
+  if (must.has('sliders')) await trySliders(S, controls);
+  if (must.has('highlight') && shading.fit && stopped) await leastShininess(S, controls);
+  facts.sources = await page.sources();
+  if (placeLater) await placeFarther(S, controls);
+}
+
+/**
+ * The page interface with each call's milliseconds and count added up in `timing` ({ method: { ms,
+ * calls } }): where a part's time goes, in report.json and on the check page (never read by the gathering).
+ */
+export function timed(page, timing) {
+  const out = {};
+  for (const [k, f] of Object.entries(page)) {
+    out[k] = typeof f !== 'function' || k === 'errors' ? f : async (...args) => {
+      const t0 = Date.now();
+      try { return await f(...args); } finally { addTime(timing, k, Date.now() - t0); }
+    };
+  }
+  return out;
+}
+
+/** Adds `ms` to `timing[what]`. */
+export function addTime(timing, what, ms) {
+  const t = timing[what] || (timing[what] = { ms: 0, calls: 0 });
+  t.ms += ms;
+  t.calls++;
+}

@@ -1,0 +1,138 @@
+// One part's gathering: the page interface, the rubric, and what has been seen so far (the
+// artifact: plain facts and named pictures). Every step of the gatherers goes through here: a
+// frame runs only by `tick` (a count of frames, never a clock's reading), a picture is taken by
+// `shot`, a control is used by `press` and its effect on the picture read by `trial`. The wall
+// clock is an outer bound only: past `deadline` a step throws TooSlow.
+import { analyse, pictureChange } from '../measure.js';
+import { describe, effectOf } from '../controls.js';
+
+/** The wall clock's outer bound ran out while `doing`. */
+export class TooSlow extends Error {
+  constructor(doing) {
+    super(`too slow to judge here, while ${doing}`);
+    this.doing = doing;
+  }
+}
+
+export const effectWords = {
+  finer: 'the silhouette got rounder', coarser: 'the silhouette got coarser', starts: 'the picture started moving', stops: 'the picture stopped moving',
+  shading: 'the shading changed, not the silhouette', blank: 'the picture went blank', none: 'nothing visible changed', unclickable: 'could not be used',
+};
+
+/**
+ * A gathering session over `page` (the page interface) for `part`. `progress(text)` hears each
+ * step; `deadline` (ms since the epoch) is the outer bound.
+ */
+export function session(page, { part, rubric, progress = () => {}, deadline = Infinity }) {
+  const T = rubric.thresholds;
+  const facts = {
+    part, api: null, canvas: null, tooSlow: null,
+    actions: [], roles: {}, controls: [], trials: [], views: [], ladder: [], sliders: [],
+    work: { frames: 0, draws: 0, vertices: 0 },
+  };
+  const S = {
+    page, rubric, T, P: rubric.controls, part, facts,
+    must: new Set((rubric.parts[part] || {}).must || []),
+    images: {}, // name → { width, height, data }
+    cur: null, // the picture as it is now: { img, an }
+    moving: false, // does the picture move by itself now?
+    effects: new Map(), // control index → the effect seen when it was tried
+    taken: new Set(), // controls given a role
+    R: {}, // role → control
+    trialsMade: 0,
+    // what a frame of this page costs, in its own work (vertices, and draw calls at drawCallWork
+    // vertices each), from the last frames run
+    frameWork: 0,
+    doing: 'waiting for the first frame',
+
+    step(what) {
+      S.doing = what;
+      progress(what);
+    },
+    outOfTime() {
+      if (Date.now() > deadline) throw new TooSlow(S.doing);
+    },
+    /** A jump (the frame it fires draws a change made in a handler), then `frames` more at 60 Hz. */
+    async tick(ms, frames = 0) {
+      S.outOfTime();
+      await page.tick(ms, frames);
+      const s = await page.state();
+      const w = facts.work;
+      S.frameWork = ((s.vertices - w.vertices) + T.drawCallWork * (s.draws - w.draws)) / (frames + 1);
+      Object.assign(w, { frames: w.frames + frames + 1, draws: s.draws, vertices: s.vertices });
+    },
+    /** What the page awaits in real time (fetches, WebGPU requests), waited for within firstFrameSeconds; no frame runs meanwhile. */
+    async settle() {
+      const until = Date.now() + rubric.firstFrameSeconds * 1000;
+      for (;;) {
+        const s = await page.state();
+        if (!s.pending || Date.now() > until) return s;
+        await new Promise((resolve) => setTimeout(resolve, 10));
+      }
+    },
+    async shot() {
+      const img = await page.snap();
+      return img && { img, an: analyse(img, T) };
+    },
+    /** Keeps a picture in the artifact under `name`; returns the name. */
+    keep(name, img) {
+      S.images[name] = img;
+      return name;
+    },
+    act(text) {
+      facts.actions.push(text);
+    },
+    /** Gives control `c` the role `role` (the first found keeps it), with how it was found. */
+    assign(role, c, how) {
+      if (S.R[role]) return;
+      S.R[role] = c;
+      S.taken.add(c.index);
+      facts.roles[role] = `${describe(c)}${c.events && c.events.length ? ` (listens: ${c.events.join(', ')})` : ''}: ${how}`;
+    },
+    async press(c, what) {
+      const r = await page.click(c);
+      if (!r.ok) {
+        S.act(`could not click ${what} ${describe(c)}: ${r.why}`);
+        return false;
+      }
+      S.act(`clicked ${what} ${describe(c)}`);
+      await S.tick(100);
+      return true;
+    },
+    /** Tries one action from the state as it is and says what it did to the picture. */
+    async trial(act, { watchMotion = true } = {}) {
+      const before = S.cur;
+      if (!await act()) return 'unclickable';
+      const after = await S.shot();
+      if (!after) return 'none';
+      let later = after;
+      if (watchMotion || S.moving) {
+        await S.tick(400, 2); // three frames: an orbit a small step a frame shows it moved
+        later = await S.shot();
+      }
+      const effect = effectOf({ before, after, later, wasMoving: S.moving }, T);
+      S.cur = later;
+      if (effect === 'starts') S.moving = true;
+      if (effect === 'stops') S.moving = false;
+      return effect;
+    },
+    async tryClick(c, what, opts) {
+      const effect = await S.trial(() => S.press(c, what), opts);
+      if (effect !== 'unclickable') {
+        S.effects.set(c.index, effect);
+        facts.trials.push({ control: c.index, effect });
+        S.act(`  → ${effectWords[effect]}`);
+      }
+      return effect;
+    },
+    /** Does the picture move by itself over three frames? */
+    async watch() {
+      await S.tick(500, 2);
+      const next = await S.shot();
+      S.moving = pictureChange(S.cur.img, next.img) > 0.001;
+      S.cur = next;
+      return S.moving;
+    },
+  };
+  return S;
+}

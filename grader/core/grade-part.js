@@ -1,0 +1,26 @@
+// Gathering and judging one part in a row (Lighthouse's -GA): the artifact gathered from the page
+// (gather/), then audited (audit.js). For the command's Playwright run and for the check page.
+import { gatherPart, addTime, timed } from './gather/index.js';
+import { auditPart } from './audit.js';
+
+export { addTime, timed };
+
+/**
+ * Grades one opened part: { artifact, fail, checks, actions, controls, numbers, images, api, canvas,
+ * timing, busy, tooSlow }. `images` are the pictures a report shows (first, judged, coarse,
+ * highlightPlace, leastS); `artifact` ({ facts, images }) is everything gathered.
+ */
+export async function gradePart(page, { part, rubric, progress, deadline, timing = {} }) {
+  const artifact = await gatherPart(page, { part, rubric, progress, deadline, timing });
+  return { ...judged(artifact, rubric), timing, busy: timing.tick ? timing.tick.ms : 0 };
+}
+
+/** An artifact's audit in the shape a report reads. */
+export function judged(artifact, rubric) {
+  const { facts, images } = artifact;
+  const a = auditPart(artifact, rubric);
+  const shown = {};
+  for (const [k, name] of Object.entries(a.shown)) if (images[name]) shown[k] = images[name];
+  return { artifact, fail: a.fail, checks: a.checks, numbers: a.numbers, tooSlow: a.tooSlow, images: shown,
+    actions: facts.actions, controls: facts.roles, api: facts.api, canvas: facts.canvas };
+}
