@@ -2,7 +2,7 @@
 // names (id, name, label, the words beside it) only order the trials, break ties (which
 // material slider is kd) and name it in the report. Plain data: the trials' pictures are judged
 // by judge.js; driving the page is drive.js's.
-import { silhouetteChange, pictureChange, outlineFlips } from './measure.js';
+import { silhouetteChange, pictureChange, outlineFlips } from './measure/change.js';
 
 const re = (s) => new RegExp(s, 'i');
 /** An id or name read as words too: kdSlider → kd Slider, slider_kd → slider kd. */
