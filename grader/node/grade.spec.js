@@ -48,7 +48,7 @@ for (const item of plan.items) {
     const phase = (what, t0) => addTime(timing, what, Date.now() - t0);
     try {
       const t0 = Date.now();
-      const opened = await openers.student.open({ root: item.root, rel: item.page, loadSeconds: rubric.loadSeconds ?? 20, log: result });
+      const opened = await openers.student.open({ root: item.root, rel: item.page, loadSeconds: rubric.loadSeconds, log: result });
       phase('open', t0);
       if (opened.why) graded.fail = `the page could not be opened: ${opened.why}`;
       else {

@@ -9,8 +9,8 @@ import { samples } from './samples.js';
  * base, undefined: NaN, black on many GPUs). `img` is the judged picture, `after` the same view
  * with s lowered, `fit` img's diffuseFit.
  */
-export function darkSpots(img, an, after, fit, rubric = {}) {
-  const margin = rubric.darkSpotMargin ?? 0.15;
+export function darkSpots(img, an, after, fit, T) {
+  const margin = T.darkSpotMargin;
   const { width: w } = img;
   let dark = 0, n = 0;
   for (const s of samples(img, an)) {

@@ -48,7 +48,7 @@ function fitDirection(F, l, twoSided = false) {
  * out pixels much brighter than the fit (a highlight) on a second pass. Returns the fit's R²
  * (over the pixels fitted), the light direction, and the highlight those bright pixels make.
  */
-export function diffuseFit(pts, rubric = {}) {
+export function diffuseFit(pts, T) {
   if (pts.length < 20) return null;
   for (const s of pts) s.y = luminance(s.c);
   const meanY = pts.reduce((a, s) => a + s.y, 0) / pts.length;
@@ -59,7 +59,7 @@ export function diffuseFit(pts, rubric = {}) {
   let use = unclipped.reduce((a, v) => a + v, 0) >= Math.max(20, 0.3 * pts.length) ? unclipped : new Uint8Array(pts.length).fill(1);
   const use0 = use;
   let best = null, sseAll = null, F = null;
-  const highlightMargin = rubric.highlightMargin ?? 0.12;
+  const highlightMargin = T.highlightMargin;
   for (let pass = 0; pass < 2; pass++) {
     best = null;
     F = flat(pts, use);
@@ -85,7 +85,7 @@ export function diffuseFit(pts, rubric = {}) {
   const sstU = pts.reduce((a, s, i) => a + (use[i] ? (s.y - meanU) ** 2 : 0), 0);
   // the highlight: how far above the diffuse fit a pixel is, as a share of the headroom left to
   // white there (a highlight on a bright diffuse patch saturates at 1 and cannot rise far)
-  const hl = highlightOf(pts, (n) => best.a + best.b * Math.max(0, n[0] * best.l[0] + n[1] * best.l[1] + n[2] * best.l[2]), rubric);
+  const hl = highlightOf(pts, (n) => best.a + best.b * Math.max(0, n[0] * best.l[0] + n[1] * best.l[1] + n[2] * best.l[2]), T);
   // the same pixels under a two-sided model: a page lit on both sides (|n·w_i|) fits it better
   let twoSided = null, twoSidedAll = null;
   const Fall = flat(pts, null); // (F: the second pass's pixels, the highlight left out)

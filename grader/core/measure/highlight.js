@@ -8,8 +8,8 @@ import { luminance } from './samples.js';
  * patch saturates at 1 and cannot rise far), the largest rise itself (`rise`), and how many pixels
  * rise clearly (`bright`).
  */
-export function highlightOf(pts, predict, rubric = {}) {
-  const margin = rubric.highlightMargin ?? 0.12;
+export function highlightOf(pts, predict, T) {
+  const margin = T.highlightMargin;
   let peak = 0, rise = 0, bright = 0;
   const rises = new Float64Array(pts.length);
   for (let i = 0; i < pts.length; i++) {
@@ -17,7 +17,7 @@ export function highlightOf(pts, predict, rubric = {}) {
     const pred = predict(s.n);
     const r = luminance(s.c) - pred;
     rises[i] = r;
-    if (r < (rubric.highlightMinRise ?? 0.06)) continue;
+    if (r < T.highlightMinRise) continue;
     const share = Math.min(1, r / Math.max(0.1, 1 - pred));
     peak = Math.max(peak, share);
     rise = Math.max(rise, r);
@@ -55,7 +55,7 @@ export function highlightOffset(highlightNormal, light, toViewer = 1) {
  * rise of highlightClearRise or more, highlightNoise times the fit's RMS, over a few pixels (a
  * small or tinted highlight on a clean fit; a page with no specular term has neither).
  */
-export function highlightSeen(fit, rubric = {}) {
-  if (fit.highlightPeak >= (rubric.highlightPeak ?? 0.5)) return true;
-  return fit.highlightRise >= (rubric.highlightClearRise ?? 0.1) && fit.highlightRise >= (rubric.highlightNoise ?? 10) * fit.rms && fit.highlightShare > 0;
+export function highlightSeen(fit, T) {
+  if (fit.highlightPeak >= T.highlightPeak) return true;
+  return fit.highlightRise >= T.highlightClearRise && fit.highlightRise >= T.highlightNoise * fit.rms && fit.highlightShare > 0;
 }

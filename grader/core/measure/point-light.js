@@ -10,9 +10,10 @@ import { highlightOf } from './highlight.js';
  * normals of perspectiveSamples), the light at p_ℓ = d·l (d in sphere radii, from the centre), w_i = normalize(p_ℓ − x),
  * with g = 1/‖p_ℓ − x‖² (fall-off) or g = 1 (none). Both models hold a directional light (d → ∞),
  * so a far or directional light fits both alike: only a near light tells them apart. Pixels above
- * both fits (a highlight) and clipped ones are left out. Returns the best of each model.
+ * both fits (a highlight) and clipped ones are left out. Returns the best of each model. `T`: the
+ * rubric's thresholds, with `around` (a direction: only light directions within 60° of it are tried) or none.
  */
-export function pointLightFit(pts, rubric = {}) {
+export function pointLightFit(pts, T) {
   const use0 = pts.map((s) => Math.max(...s.c) < 0.985);
   if (use0.filter(Boolean).length < 50) return null;
   for (const s of pts) s.y = luminance(s.c);
@@ -57,13 +58,13 @@ export function pointLightFit(pts, rubric = {}) {
   };
   let use = use0;
   let none = null, inv = null;
-  const around = rubric.around || null;
+  const around = T.around || null;
   for (let pass = 0; pass < 2; pass++) {
     none = search(use, false, around);
     inv = search(use, true, around);
     if (!none || !inv) return null;
     if (pass === 0) {
-      const margin = (rubric.highlightMargin ?? 0.12) * 0.7;
+      const margin = T.highlightMargin * 0.7;
       use = pts.map((s, i) => use0[i] && Math.min(s.y - none.a - none.b * none.xs[i], s.y - inv.a - inv.b * inv.xs[i]) < margin);
     }
   }
@@ -72,7 +73,7 @@ export function pointLightFit(pts, rubric = {}) {
   const sst = pts.reduce((a, s, i) => a + (use[i] ? (s.y - mean) ** 2 : 0), 0);
   const brief = (f) => {
     const model = { a: f.a, b: f.b, l: f.l, d: f.d, falloff: f.falloff };
-    const hl = highlightOf(pts, (n) => pointLightPredict(n, model), rubric);
+    const hl = highlightOf(pts, (n) => pointLightPredict(n, model), T);
     return { distance: f.d, light: f.l, r2: sst > 1e-12 ? 1 - f.sse / sst : 0, rms: Math.sqrt(f.sse / used), model, highlightPeak: hl.peak, highlightRise: hl.rise,
       highlightShare: hl.bright / pts.length, highlightNormal: hl.normal };
   };
@@ -100,8 +101,8 @@ export function pointLightPredict(n, m) {
  * the largest rise of a pixel over the model, as a share of the headroom to white there. A near
  * light's 1/r² bright spot is part of the model, not a highlight. `pts` are perspectiveSamples.
  */
-export function highlightAbove(pts, model, rubric = {}) {
-  return highlightOf(pts, (n) => pointLightPredict(n, model), rubric).peak;
+export function highlightAbove(pts, model, T) {
+  return highlightOf(pts, (n) => pointLightPredict(n, model), T).peak;
 }
 
 /** 'falloff' or 'none': the model a near point light fits well (R² ≥ diffuseR2, d ≤ pointLightNear), or null. */

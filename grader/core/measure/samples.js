@@ -24,10 +24,10 @@ export function samples(img, an, { maxRho = 0.85, max = 4000 } = {}) {
 
 /**
  * samples() with the normals a perspective camera sees: the eye on the sphere's axis, `fovy`
- * degrees high (the slides' perspective(45, …) unless told), at the distance that makes the
+ * degrees high (the rubric's pointLightFovy: the slides' perspective(45, …)), at the distance that makes the
  * sphere's radius on screen; each pixel's ray meets the unit sphere at x, and n = x.
  */
-export function perspectiveSamples(img, an, fovy = 45, opts = {}) {
+export function perspectiveSamples(img, an, fovy, opts = {}) {
   const t = Math.tan((fovy * Math.PI) / 360) / (img.height / 2);
   const D = 1 / Math.sin(Math.atan(an.radius * t));
   return samples(img, an, opts).map((s) => {

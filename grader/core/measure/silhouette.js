@@ -4,9 +4,9 @@
 import { solve3 } from './linear.js';
 
 /** The background (the commonest border colour), the object's mask and its silhouette. */
-export function analyse(img, rubric = {}) {
+export function analyse(img, T) {
   const { width: w, height: h, data } = img;
-  const tol = rubric.backgroundTolerance ?? 30;
+  const tol = T.backgroundTolerance;
   const counts = new Map();
   const border = [];
   for (let x = 0; x < w; x++) border.push([x, 0], [x, h - 1]);
@@ -28,7 +28,7 @@ export function analyse(img, rubric = {}) {
     if (oneColour && (r << 16 | g << 8 | b) !== first) oneColour = false;
     if (Math.abs(r - b0) + Math.abs(g - b1) + Math.abs(b - b2) > tol) raw[p] = 1;
   }
-  openMask(raw, w, h, rubric.thinLine ?? 2);
+  openMask(raw, w, h, T.thinLine);
   // the largest 4-connected component is the object (text or a second canvas element aside)
   const label = new Int32Array(n);
   let best = 0, bestLabel = 0, next = 0;
@@ -57,7 +57,7 @@ export function analyse(img, rubric = {}) {
   }
   const area = best;
   const result = { width: w, height: h, bg, area, coverage: area / n, oneColour, mask };
-  if (area < Math.max(30, (rubric.minCoverage ?? 0.002) * n)) return { ...result, blank: true };
+  if (area < Math.max(30, T.minCoverage * n)) return { ...result, blank: true };
   const cx = sx / area + 0.5, cy = sy / area + 0.5;
   // radial profile: the farthest object pixel along 72 rays from the centroid
   const rmax = Math.hypot(w, h);
