@@ -7,6 +7,7 @@ import path from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { PARTS, findParts } from './parts.js';
 import { readLabels, agreement, agreementText, agreementHtml } from './labels.js';
+import { mergeRubric } from '../core/rubric.js';
 import { CHROMIUM } from '../../tools/browser.js';
 
 const here = path.dirname(fileURLToPath(import.meta.url));
@@ -77,12 +78,7 @@ function readRubric(file) {
       return fail(`cannot read the rubric ${f}: ${err.message}`, 2);
     }
   };
-  const base = load(DEFAULT_RUBRIC);
-  if (!file) return base;
-  const r = load(file);
-  const parts = { ...base.parts };
-  for (const [k, v] of Object.entries(r.parts || {})) parts[k] = { ...(base.parts[k] || {}), ...v };
-  return { ...base, ...r, thresholds: { ...base.thresholds, ...(r.thresholds || {}) }, controls: { ...base.controls, ...(r.controls || {}) }, parts };
+  return mergeRubric(load(DEFAULT_RUBRIC), file ? load(file) : null);
 }
 
 const VERDICTS = ['pass', 'review', 'fail'];

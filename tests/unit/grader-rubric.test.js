@@ -1,11 +1,12 @@
 // Every threshold lives in the rubric and nowhere else (issue 28): each threshold the grader's
-// source reads is a key of grader/core/rubric.json, and no rubric value has a number written
-// beside it as a fallback.
+// source reads is a key of grader/core/rubric.json, no rubric value has a number written beside
+// it as a fallback, and a teacher's rubric is merged over the default one key by key.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync, readdirSync } from 'node:fs';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
+import { mergeRubric } from '../../grader/core/rubric.js';
 
 const grader = fileURLToPath(new URL('../../grader/', import.meta.url));
 const rubric = JSON.parse(readFileSync(path.join(grader, 'core/rubric.json'), 'utf8'));
@@ -88,4 +89,18 @@ test('no rubric value has a number written beside it as a fallback in grader/', 
   assert.ok(files.some((rel) => rel.startsWith('core/measure/')) && files.includes('node/grade.spec.js'), 'the measurements and the harness are scanned');
   const found = files.flatMap((rel) => numericFallbacks(read(rel)).map((f) => `${rel}: ${f}`));
   assert.deepEqual(found, [], 'numbers that belong in rubric.json');
+});
+
+test('a teacher\'s rubric is merged over the default key by key (mergeRubric)', () => {
+  assert.equal(mergeRubric(rubric, null), rubric);
+  const teacher = { timeoutSeconds: 30, thresholds: { roundness: 0.2 }, controls: { kd: 'diffus' }, parts: { WP04P4: { requiredSliders: ['La'] }, WP04P9: { must: ['sphere'] } } };
+  const r = mergeRubric(rubric, teacher);
+  assert.equal(r.timeoutSeconds, 30);
+  assert.equal(r.loadSeconds, rubric.loadSeconds);
+  assert.deepEqual(r.thresholds, { ...rubric.thresholds, roundness: 0.2 });
+  assert.deepEqual(r.controls, { ...rubric.controls, kd: 'diffus' });
+  assert.deepEqual(r.parts.WP04P4, { ...rubric.parts.WP04P4, requiredSliders: ['La'] });
+  assert.deepEqual(r.parts.WP04P1, rubric.parts.WP04P1);
+  assert.deepEqual(r.parts.WP04P9, { must: ['sphere'] });
+  assert.equal(rubric.thresholds.roundness, 0.09, 'the default is left as it was');
 });
