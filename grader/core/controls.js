@@ -2,7 +2,7 @@
 // names (id, name, label, the words beside it) only order the trials, break ties (which
 // material slider is kd) and name it in the report. Plain data: the trials' pictures are judged
 // by judge.js; driving the page is drive.js's.
-import { silhouetteChange, pictureChange, outlineFlips } from './measure.js';
+import { silhouetteChange, pictureChange, outlineFlips } from './measure/change.js';
 
 const re = (s) => new RegExp(s, 'i');
 /** An id or name read as words too: kdSlider → kd Slider, slider_kd → slider kd. */
@@ -50,7 +50,7 @@ export function nameRole(c, patterns) {
  * 'shading' (the picture changes inside an unchanged silhouette: material, light or the faces
  * drawn), 'blank' (nothing drawn after it), 'none'.
  */
-export function effectOf({ before, after, later, wasMoving }, T = {}) {
+export function effectOf({ before, after, later, wasMoving }, T) {
   const moving = pictureChange(after.img, later.img) > 0.001;
   if (!wasMoving && moving) return 'starts';
   if (wasMoving && !moving) return 'stops';
@@ -58,7 +58,7 @@ export function effectOf({ before, after, later, wasMoving }, T = {}) {
   if (after.an.blank && !before.an.blank) return 'blank';
   if (before.an.blank || after.an.blank) return 'none';
   const sil = silhouetteChange(before.an, after.an);
-  if (sil > (T.silhouetteSettled ?? 0.003)) {
+  if (sil > T.silhouetteSettled) {
     // a finer mesh inscribed in the sphere covers more of its disc, and its outline is rounder
     const rounder = before.an.roundness - after.an.roundness, larger = (after.an.area - before.an.area) / before.an.area;
     if (Math.abs(larger) > 0.002) return larger > 0 ? 'finer' : 'coarser';

@@ -1,7 +1,7 @@
 // Our reference part drawn beside a student's: at the student's canvas size, lit from the light
 // the judge fitted to the student's picture. Plain data: the query for our page and what
 // report.json says of the state it was drawn at.
-import { nearPointLight } from './measure.js';
+import { nearPointLight } from './measure/point-light.js';
 
 const fmt = (x, d) => Number(x).toFixed(d);
 

@@ -6,7 +6,9 @@ import { existsSync, mkdirSync, readFileSync, readdirSync, rmSync, statSync, wri
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { PARTS, findParts } from './parts.js';
-import { readLabels, agreement, agreementText, agreementHtml } from './labels.js';
+import { readLabels, agreementText } from './labels.js';
+import { writeReport, safeName } from './report.js';
+import { mergeRubric } from '../core/rubric.js';
 import { CHROMIUM } from '../../tools/browser.js';
 
 const here = path.dirname(fileURLToPath(import.meta.url));
@@ -63,9 +65,6 @@ function parseArgs(argv) {
   return o;
 }
 
-const esc = (s) => String(s).replace(/[&<>"']/g, (c) => ({ '&': '&amp;', '<': '&lt;', '>': '&gt;', '"': '&quot;', "'": '&#39;' })[c]);
-const safeName = (s) => s.replace(/[^A-Za-z0-9._-]+/g, '_');
-
 const DEFAULT_RUBRIC = path.join(here, '../core/rubric.json');
 
 /** The rubric: grader/core/rubric.json, or the teacher's file in its place (keys it leaves out keep the defaults). */
@@ -77,78 +76,7 @@ function readRubric(file) {
       return fail(`cannot read the rubric ${f}: ${err.message}`, 2);
     }
   };
-  const base = load(DEFAULT_RUBRIC);
-  if (!file) return base;
-  const r = load(file);
-  const parts = { ...base.parts };
-  for (const [k, v] of Object.entries(r.parts || {})) parts[k] = { ...(base.parts[k] || {}), ...v };
-  return { ...base, ...r, thresholds: { ...base.thresholds, ...(r.thresholds || {}) }, controls: { ...base.controls, ...(r.controls || {}) }, parts };
-}
-
-const VERDICTS = ['pass', 'review', 'fail'];
-/** The passes of a submission, then its reviews (a count a reader can read: more is better). */
-function passes(parts) {
-  return parts.filter((p) => p.verdict === 'pass').length;
-}
-const badge = (v) => `<span class="badge ${esc(v || 'fail')}">${esc(v || 'fail')}</span>`;
-
-function writeReport(out, submissions, labels = null) {
-  const rows = submissions.map((s) => ({ ...s, passes: passes(s.parts), reviews: s.parts.filter((p) => p.verdict === 'review').length }))
-    .sort((a, b) => b.passes - a.passes || b.reviews - a.reviews || a.name.localeCompare(b.name));
-  const agreed = labels ? agreement(labels, rows) : null;
-  writeFileSync(path.join(out, 'report.json'), JSON.stringify({ generated: new Date().toISOString(), submissions: rows,
-    ...(agreed ? { labels: { ...agreed, rows: agreed.rows.map(({ reasons, ...r }) => ({ ...r, reasons: reasons.filter((x) => /^(FAIL|REVIEW)/.test(x)) })) } } : {}) }, null, 1));
-  const img = (s, r, k) => (r.images && r.images[k] ? `<img src="${esc(`parts/${safeName(s.name)}/${r.images[k]}`)}" alt="${esc(`${r.part} ${k}`)}" loading="lazy">` : '');
-  const anchor = (s, r) => `${safeName(s.name)}-${r.part}`;
-  const grid = rows.map((s) => `<tr data-name="${esc(s.name)}" data-passes="${s.passes}"><th scope="row"><a href="#${esc(safeName(s.name))}">${esc(s.name)}</a></th><td class="num">${s.passes}</td>` +
-    PARTS.map((p) => {
-      const r = s.parts.find((x) => x.part === p);
-      return `<td class="cell ${esc(r.verdict)}" data-verdict="${VERDICTS.indexOf(r.verdict)}"><a href="#${esc(anchor(s, r))}">${badge(r.verdict)}` +
-        `<span class="api">${esc(r.api || '')}</span><span class="thumbs">${img(s, r, 'first')}${img(s, r, 'judged')}</span></a></td>`;
-    }).join('') + '</tr>').join('\n');
-  const list = (title, items, cls) => (items && items.length ? `<p>${title}</p><ul class="${cls}">${items.map((e) => `<li>${esc(e)}</li>`).join('')}</ul>` : '');
-  const details = rows.map((s) => `<section id="${esc(safeName(s.name))}"><h2>${esc(s.name)} · ${s.passes} of ${PARTS.length} pass</h2>` +
-    s.parts.map((r) => `<div class="part" id="${esc(anchor(s, r))}"><h3>${r.part} ${badge(r.verdict)} <small>${esc(r.api || 'no API')} · ${esc(r.status)}${r.seconds ? ` · ${r.seconds.toFixed(0)} s` : ''}</small></h3>` +
-      `<p class="file">${r.file ? esc(r.file) : 'no file'}</p>` +
-      list('Reasons:', r.reasons, 'reasons') +
-      (r.images ? `<div class="images">${['first', 'coarse', 'highlightPlace', 'judged', 'reference', 'diff'].filter((k) => r.images[k]).map((k) => `<figure>${img(s, r, k)}<figcaption>${{ first: 'first frame', coarse: 'a coarse level', highlightPlace: 'the highlight, the light away from the viewer', judged: 'judged (submission)', reference: 'our reference', diff: 'difference' }[k]}</figcaption></figure>`).join('')}</div>` : '') +
-      (r.numbers && Object.keys(r.numbers).length ? `<details><summary>numbers</summary><pre>${esc(JSON.stringify(r.numbers, (k, v) => (typeof v === 'number' ? Number(v.toFixed(4)) : v), 1))}</pre></details>` : '') +
-      (r.mismatch !== null && r.mismatch !== undefined ? `<p>Against our reference: ${(100 * r.mismatch).toFixed(1)}% of pixels differ (${esc(r.comparison)}), RMSE ${(255 * r.rmse).toFixed(1)}/255 (evidence only).</p>` : '') +
-      (r.referenceState ? `<p>Our reference drawn at level ${esc(String(r.referenceState.level))}${r.referenceState.light ? `, a ${esc(r.referenceState.light.kind)} light at (${esc(r.referenceState.light.xyz.join(', '))}) as fitted to the student's picture` : ''}.</p>` : '') +
-      list('Controls found:', Object.entries(r.controls || {}).map(([k, v]) => `${k}: ${v}`), 'controls') +
-      list('What the grader did:', r.actions, 'actions') +
-      list('Notes:', r.notes, 'notes') +
-      list('Errors the page printed or caused:', r.errors, 'errors') +
-      list('Blocked:', r.blocked, 'blocked') +
-      '</div>').join('\n') + '</section>').join('\n');
-  const sortScript = `<script>
-for (const th of document.querySelectorAll('#grid thead th[data-sort]')) th.addEventListener('click', () => {
-  const k = th.dataset.sort, body = document.querySelector('#grid tbody'), desc = th.dataset.desc = th.dataset.desc === '1' ? '0' : '1';
-  const key = (tr) => k === 'name' ? tr.dataset.name : k === 'passes' ? -Number(tr.dataset.passes) : Number(tr.children[Number(k)].dataset.verdict);
-  [...body.rows].sort((a, b) => { const x = key(a), y = key(b); const c = x < y ? -1 : x > y ? 1 : 0; return desc === '1' ? c : -c; }).forEach((tr) => body.append(tr));
-});
-</script>`;
-  const totals = PARTS.map((p) => VERDICTS.map((v) => rows.filter((s) => s.parts.find((x) => x.part === p).verdict === v).length).join(' / '));
-  writeFileSync(path.join(out, 'report.html'), `<!doctype html><html lang="en"><head><meta charset="utf-8"><title>Grading report</title>
-<style>body{font-family:system-ui,sans-serif;margin:1rem 2rem;color:#1d2330}table{border-collapse:collapse}td,th{border:1px solid #ccd;padding:.2rem .4rem;vertical-align:top}
-th[data-sort]{cursor:pointer;text-decoration:underline dotted}.num{text-align:right}.cell a{color:inherit;text-decoration:none;display:block}
-.cell.pass{background:#e3f6e3}.cell.review{background:#fff4d6}.cell.fail{background:#fde4e4}
-.badge{display:inline-block;padding:0 .4rem;border-radius:.6rem;font-size:.8rem;font-weight:600;color:#fff}.badge.pass{background:#2a7d2a}.badge.review{background:#a66b00}.badge.fail{background:#b3261e}
-.api{color:#556;font-size:.75rem;margin-left:.3rem}.thumbs{display:flex;gap:2px;margin-top:2px}.thumbs img{width:64px;height:64px;object-fit:contain;border:1px solid #ccd;background:#fff}
-.images{display:flex;gap:.8rem;flex-wrap:wrap}figure{margin:0}figure img{max-width:260px;border:1px solid #ccd;image-rendering:pixelated}
-.errors li{color:#a00}.confusion td.agree{background:#e3f6e3;font-weight:600}.file{color:#556;font-family:monospace}.part{border-top:1px solid #dde;padding:.3rem 0}</style></head><body>
-<h1>Grading report</h1><p>Each part was opened in Chromium (WebGL, or WebGPU on SwiftShader with its frames read back), with time
-frozen. The grader found its controls, stopped or sampled the orbit, coarsened and subdivided until the silhouette stopped
-changing, and judged the picture by what the slide's step asks for (a round sphere; normals as colours; diffuse shading for a
-fitted light; a highlight; sliders on the input event; shading per fragment). Verdicts: pass, review (a teacher should look),
-fail. Click a cell for its reasons and pictures; click a column head to sort.</p>
-<table id="grid"><thead><tr><th data-sort="name">submission</th><th data-sort="passes">passes</th>${PARTS.map((p, i) => `<th data-sort="${i + 2}">${p}</th>`).join('')}</tr></thead>
-<tbody>
-${grid}
-</tbody><tfoot><tr><th>pass / review / fail</th><td></td>${totals.map((t) => `<td>${t}</td>`).join('')}</tr></tfoot></table>
-${agreed ? agreementHtml(agreed, (r) => `#${safeName(r.submission)}-${r.part}`) : ''}
-${details}${sortScript}</body></html>`);
-  return { rows, agreed };
+  return mergeRubric(load(DEFAULT_RUBRIC), file ? load(file) : null);
 }
 
 function main() {
@@ -185,7 +113,8 @@ function main() {
       for (const part of PARTS) {
         const cfg = rubric.parts[part] || {};
         const page = parts[part] && existsSync(path.join(s.root, parts[part])) ? parts[part] : null;
-        items.push({ name: s.name, part, root: s.root, page, referenceQuery: cfg.referenceQuery || {}, resultFile: path.join(out, 'parts', safeName(s.name), `${part}.json`) });
+        items.push({ name: s.name, part, root: s.root, page, referenceQuery: cfg.referenceQuery || {}, resultFile: path.join(out, 'parts', safeName(s.name), `${part}.json`),
+          artifactDir: path.join(out, 'artifacts', safeName(s.name), part) });
       }
     }
     // the parts that try the most first (the sliders, then the orbit's), so that the workers end

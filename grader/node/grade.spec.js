@@ -1,25 +1,20 @@
 // The grader's harness: one Playwright test per part of the plan that grader/node/grade.js wrote
 // (GRADE_PLAN). Each opens the part (playwright-page.js: served by serve-submission.js, time
-// frozen, instrumented), lets drive.js bring it to a state and judge it, turns the findings into a
-// verdict with reasons (verdict.js), writes the pictures, and draws our reference beside them.
+// frozen, instrumented), gathers it and audits the artifact (grader/core/grade-part.js), saves the
+// artifact (artifacts.js) and the result (part-result.js), and draws our reference beside it.
 import { test } from '@playwright/test';
 import { readFileSync, writeFileSync, mkdirSync } from 'node:fs';
 import path from 'node:path';
 import { PNG } from 'pngjs';
 import { compareImages } from './compare.js';
 import { partOpener } from './playwright-page.js';
+import { writeArtifact, pngOf } from './artifacts.js';
+import { applyAudit } from './part-result.js';
 import { gradePart, addTime } from '../core/grade-part.js';
-import { verdictOf, reasonsOf } from '../core/verdict.js';
 import { referenceQuery, referenceStateOf } from '../core/reference-state.js';
 
 const plan = JSON.parse(readFileSync(process.env.GRADE_PLAN, 'utf8'));
 const rubric = plan.rubric;
-
-function png(img) {
-  const p = new PNG({ width: img.width, height: img.height });
-  p.data.set(img.data);
-  return PNG.sync.write(p);
-}
 
 function save(item, result) {
   mkdirSync(path.dirname(item.resultFile), { recursive: true });
@@ -41,14 +36,15 @@ for (const item of plan.items) {
       return save(item, result);
     }
     const started = Date.now();
-    let graded = { fail: null, checks: [], actions: [], images: {}, busy: 0 };
+    let graded = { fail: null, checks: [], actions: [], images: {}, shown: {}, busy: 0 };
+    let files = {};
     let clean = false;
     // where the part's time goes: opening it, each page-interface call, closing it, writing the pictures
     const timing = result.timing = {};
     const phase = (what, t0) => addTime(timing, what, Date.now() - t0);
     try {
       const t0 = Date.now();
-      const opened = await openers.student.open({ root: item.root, rel: item.page, loadSeconds: rubric.loadSeconds ?? 20, log: result });
+      const opened = await openers.student.open({ root: item.root, rel: item.page, loadSeconds: rubric.loadSeconds, log: result });
       phase('open', t0);
       if (opened.why) graded.fail = `the page could not be opened: ${opened.why}`;
       else {
@@ -59,6 +55,12 @@ for (const item of plan.items) {
           result.reasons = [`the page did not finish within the rubric's bound of ${rubric.timeoutSeconds} s: stopped while ${what} (a click or frame that never returns?)`];
           save(item, result);
         } });
+        const t0 = Date.now();
+        const { facts, images } = graded.artifact;
+        const saved = writeArtifact(item.artifactDir, { facts: { ...facts, blocked: result.blocked, notes: result.notes }, images });
+        const rel = path.relative(plan.out, item.artifactDir).split(path.sep).join('/');
+        for (const [name, file] of Object.entries(saved)) files[name] = `${rel}/${file}`;
+        phase('write', t0);
       }
       clean = true;
     } catch (err) {
@@ -70,24 +72,11 @@ for (const item of plan.items) {
       await openers.student.done(clean);
       phase('close', t0);
     }
-    const seconds = (Date.now() - started) / 1000;
-    Object.assign(result, { api: graded.api ?? null, canvas: graded.canvas, controls: graded.controls || {}, numbers: graded.numbers || {} });
-    result.actions.push(...graded.actions);
-    result.verdict = verdictOf(graded.checks, graded.fail);
-    result.reasons = reasonsOf({ fail: graded.fail, checks: graded.checks, seconds, busySeconds: graded.busy / 1000, slowSeconds: rubric.slowSeconds,
-      pageErrors: result.errors.filter((e) => /page error/.test(e)) });
-    result.status = graded.fail ? 'failed' : 'ok';
-    result.pass = result.verdict === 'pass';
-    result.seconds = seconds;
+    applyAudit(result, graded, files);
+    result.seconds = (Date.now() - started) / 1000;
     const dir = path.dirname(item.resultFile);
     const stem = path.basename(item.resultFile, '.json');
-    result.images = {};
-    const t0 = Date.now();
-    for (const [k, im] of Object.entries(graded.images)) {
-      writeFileSync(path.join(dir, `${stem}-${k}.png`), png(im));
-      result.images[k] = `${stem}-${k}.png`;
-    }
-    phase('write', t0);
+    const relDir = path.relative(plan.out, dir).split(path.sep).join('/');
     save(item, result);
 
     // our reference at the student's size, beside theirs: evidence, not the verdict
@@ -111,12 +100,12 @@ for (const item of plan.items) {
       }
       const { width, height } = graded.images.judged;
       if (ref && ref.width === width && ref.height === height) {
-        const cmp = compareImages(PNG.sync.read(png(ref)), PNG.sync.read(png(graded.images.judged)));
+        const cmp = compareImages(PNG.sync.read(pngOf(ref)), PNG.sync.read(pngOf(graded.images.judged)));
         Object.assign(result, { mismatch: cmp.mismatch, rmse: cmp.rmse, comparison: cmp.comparison, mismatchFull: cmp.mismatchFull, mismatchObject: cmp.mismatchObject });
         result.notes.push(...cmp.notes, `the reference is our page at the same canvas size${result.referenceState && result.referenceState.light ? ', lit from the fitted light' : ''}; the difference is evidence, the verdict comes from the checks`);
         writeFileSync(path.join(dir, `${stem}-reference.png`), PNG.sync.write(cmp.reference));
         writeFileSync(path.join(dir, `${stem}-diff.png`), PNG.sync.write(cmp.diff));
-        Object.assign(result.images, { reference: `${stem}-reference.png`, diff: `${stem}-diff.png` });
+        Object.assign(result.images, { reference: `${relDir}/${stem}-reference.png`, diff: `${relDir}/${stem}-diff.png` });
       } else if (ref) result.notes.push(`our reference drew ${ref.width}×${ref.height}, not ${width}×${height}: not compared`);
       save(item, result);
     }

@@ -1,0 +1,55 @@
+// What changed between two pictures: the silhouette (a level), the outline's pixels (a level at
+// a fine mesh), the shading inside (a material or light), or anything (the orbit).
+
+/**
+ * How much the silhouette changed between two pictures: the relative change of its area, or of
+ * its roundness, whichever is more (pixel flips along the edge alone do not count).
+ */
+export function silhouetteChange(a, b) {
+  if (!a || !b || a.width !== b.width || a.height !== b.height || a.blank || b.blank) return a && b && a.blank && b.blank ? 0 : 1;
+  return Math.max(Math.abs(a.area - b.area) / Math.max(a.area, b.area), Math.abs(a.roundness - b.roundness) / 3);
+}
+
+/**
+ * The pixels where two pictures' objects differ (one mask has it, the other not), and how many of
+ * them lie at the outline (farther than 0.9 of the radius from the centre): a finer or coarser
+ * mesh at a high level moves only a few outline pixels, too few to change the area or roundness.
+ */
+export function outlineFlips(a, b) {
+  if (!a || !b || a.blank || b.blank || a.width !== b.width || a.height !== b.height) return null;
+  let flips = 0, atOutline = 0;
+  const w = a.width, r = 0.9 * Math.min(a.radius, b.radius);
+  for (let p = 0; p < a.mask.length; p++) {
+    if (a.mask[p] === b.mask[p]) continue;
+    flips++;
+    const x = p % w, y = (p - x) / w;
+    if (Math.hypot(x + 0.5 - a.cx, y + 0.5 - a.cy) >= r) atOutline++;
+  }
+  return { flips, atOutline, area: b.area - a.area };
+}
+
+/** RMS difference of brightness between two pictures over the pixels inside both objects. */
+export function shadingChange(imgA, anA, imgB, anB, maxRho = 0.8) {
+  let sum = 0, n = 0;
+  const w = imgA.width;
+  for (let p = 0; p < anA.mask.length; p++) {
+    if (!anA.mask[p] || !anB.mask[p]) continue;
+    const x = p % w, y = (p - x) / w;
+    if (Math.hypot(x + 0.5 - anB.cx, y + 0.5 - anB.cy) > maxRho * anB.radius) continue;
+    const o = 4 * p;
+    const ya = (imgA.data[o] + imgA.data[o + 1] + imgA.data[o + 2]) / 765, yb = (imgB.data[o] + imgB.data[o + 1] + imgB.data[o + 2]) / 765;
+    sum += (ya - yb) ** 2;
+    n++;
+  }
+  return n ? Math.sqrt(sum / n) : null;
+}
+
+/** Whether two pictures differ anywhere (more than rounding). */
+export function pictureChange(a, b) {
+  if (!a || !b || a.width !== b.width || a.height !== b.height) return 1;
+  let diff = 0;
+  for (let o = 0; o < a.data.length; o += 4) {
+    if (Math.abs(a.data[o] - b.data[o]) + Math.abs(a.data[o + 1] - b.data[o + 1]) + Math.abs(a.data[o + 2] - b.data[o + 2]) > 6) diff++;
+  }
+  return diff / (a.width * a.height);
+}

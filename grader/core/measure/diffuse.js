@@ -1,0 +1,103 @@
+// P3–P5: brightness fitted by a + b·max(n·w_i, 0) for a fitted light direction w_i (and, to tell
+// them apart, by the two-sided a + b·|n·w_i|), the highlight above the fit measured on the way.
+import { DIRS } from './directions.js';
+import { luminance } from './samples.js';
+import { highlightOf } from './highlight.js';
+
+/** The samples where `use` is set, as flat arrays (normals, brightness), which every fit below reads. */
+function flat(pts, use) {
+  let m = 0;
+  for (let i = 0; i < pts.length; i++) if (!use || use[i]) m++;
+  const nx = new Float64Array(m), ny = new Float64Array(m), nz = new Float64Array(m), y = new Float64Array(m);
+  for (let i = 0, j = 0; i < pts.length; i++) {
+    if (use && !use[i]) continue;
+    const s = pts[i];
+    nx[j] = s.n[0]; ny[j] = s.n[1]; nz[j] = s.n[2]; y[j] = s.y;
+    j++;
+  }
+  let sy = 0, syy = 0;
+  for (let j = 0; j < m; j++) { sy += y[j]; syy += y[j] * y[j]; }
+  return { m, nx, ny, nz, y, sy, syy };
+}
+
+function fitDirection(F, l, twoSided = false) {
+  // brightness ≈ a + b max(n·l, 0) (or a + b |n·l|, lit on both sides): linear in (a, b) for a given l;
+  // one pass: at the least-squares (a, b) the residual is Σy² − a Σy − b Σxy
+  const { m, nx, ny, nz, y, sy, syy } = F;
+  const l0 = l[0], l1 = l[1], l2 = l[2];
+  let sx = 0, sxx = 0, sxy = 0;
+  if (twoSided) {
+    for (let i = 0; i < m; i++) {
+      const x = Math.abs(nx[i] * l0 + ny[i] * l1 + nz[i] * l2);
+      sx += x; sxx += x * x; sxy += x * y[i];
+    }
+  } else {
+    for (let i = 0; i < m; i++) {
+      const x = nx[i] * l0 + ny[i] * l1 + nz[i] * l2;
+      if (x > 0) { sx += x; sxx += x * x; sxy += x * y[i]; }
+    }
+  }
+  const den = m * sxx - sx * sx;
+  const b = den > 1e-9 ? (m * sxy - sx * sy) / den : 0;
+  const a = (sy - b * sx) / m;
+  return { a, b, sse: Math.max(0, syy - a * sy - b * sxy), l };
+}
+
+/**
+ * P3–P5: fit brightness = ambient + diffuse·max(n·w_i, 0) for some light direction w_i, leaving
+ * out pixels much brighter than the fit (a highlight) on a second pass. Returns the fit's R²
+ * (over the pixels fitted), the light direction, and the highlight those bright pixels make.
+ */
+export function diffuseFit(pts, T) {
+  if (pts.length < 20) return null;
+  for (const s of pts) s.y = luminance(s.c);
+  const meanY = pts.reduce((a, s) => a + s.y, 0) / pts.length;
+  const sst = pts.reduce((a, s) => a + (s.y - meanY) ** 2, 0);
+  // a pixel clipped at white (a channel at 1) says only "at least this bright": left out of the fit
+  // while enough are left (a washed-out material), kept for the highlight above it
+  const unclipped = Uint8Array.from(pts, (s) => Math.max(...s.c) < 0.99);
+  let use = unclipped.reduce((a, v) => a + v, 0) >= Math.max(20, 0.3 * pts.length) ? unclipped : new Uint8Array(pts.length).fill(1);
+  const use0 = use;
+  let best = null, sseAll = null, F = null;
+  const highlightMargin = T.highlightMargin;
+  for (let pass = 0; pass < 2; pass++) {
+    best = null;
+    F = flat(pts, use);
+    for (const l of DIRS) {
+      const f = fitDirection(F, l);
+      if (f.b >= 0 && (!best || f.sse < best.sse)) best = f;
+    }
+    // refine around the best direction
+    for (let step = 0.1; step > 0.005; step /= 2) {
+      for (const d of [[1, 0, 0], [-1, 0, 0], [0, 1, 0], [0, -1, 0], [0, 0, 1], [0, 0, -1]]) {
+        const l = best.l.map((v, k) => v + step * d[k]), len = Math.hypot(...l);
+        const f = fitDirection(F, l.map((v) => v / len));
+        if (f.b >= 0 && f.sse < best.sse) best = f;
+      }
+    }
+    if (pass === 0) {
+      sseAll = best.sse;
+      use = Uint8Array.from(pts, (s, i) => use0[i] && s.y - (best.a + best.b * Math.max(0, s.n[0] * best.l[0] + s.n[1] * best.l[1] + s.n[2] * best.l[2])) < highlightMargin * 0.7);
+    }
+  }
+  const used = use.reduce((a, v) => a + v, 0);
+  const meanU = pts.reduce((a, s, i) => a + (use[i] ? s.y : 0), 0) / Math.max(1, used);
+  const sstU = pts.reduce((a, s, i) => a + (use[i] ? (s.y - meanU) ** 2 : 0), 0);
+  // the highlight: how far above the diffuse fit a pixel is, as a share of the headroom left to
+  // white there (a highlight on a bright diffuse patch saturates at 1 and cannot rise far)
+  const hl = highlightOf(pts, (n) => best.a + best.b * Math.max(0, n[0] * best.l[0] + n[1] * best.l[1] + n[2] * best.l[2]), T);
+  // the same pixels under a two-sided model: a page lit on both sides (|n·w_i|) fits it better
+  let twoSided = null, twoSidedAll = null;
+  const Fall = flat(pts, null); // (F: the second pass's pixels, the highlight left out)
+  for (const l of DIRS) {
+    const f = fitDirection(F, l, true);
+    if (f.b >= 0 && (!twoSided || f.sse < twoSided.sse)) twoSided = f;
+    const g = fitDirection(Fall, l, true);
+    if (g.b >= 0 && (!twoSidedAll || g.sse < twoSidedAll.sse)) twoSidedAll = g;
+  }
+  // ... and both models over all pixels, none left out as a highlight
+  const r2All = sst > 1e-9 ? 1 - sseAll / sst : 0, r2TwoSidedAll = sst > 1e-9 ? 1 - twoSidedAll.sse / sst : 0;
+  return { r2: sstU > 1e-9 ? 1 - best.sse / sstU : 0, r2TwoSided: sstU > 1e-9 ? 1 - twoSided.sse / sstU : 0, r2All, r2TwoSidedAll, rms: Math.sqrt(best.sse / Math.max(1, used)), ambient: best.a, diffuse: best.b,
+    light: best.l, spread: Math.sqrt(sst / pts.length), highlightPeak: hl.peak, highlightRise: hl.rise, highlightShare: hl.bright / pts.length, highlightNormal: hl.normal,
+    fitted: used / pts.length };
+}

@@ -1,0 +1,121 @@
+// P3–P5: a point light at a fitted distance, with and without the 1/r² fall-off, and which of the
+// two models a picture clearly shows.
+import { DIRS } from './directions.js';
+import { luminance } from './samples.js';
+import { highlightOf } from './highlight.js';
+
+/**
+ * P3–P5: is the light a point light, and does it fall off as 1/r² (the slides: L_i = I/‖p_ℓ − x‖²)?
+ * Brightness is fitted by a + b·max(n·w_i, 0)·g over the sphere seen as a unit sphere (x = n, the
+ * normals of perspectiveSamples), the light at p_ℓ = d·l (d in sphere radii, from the centre), w_i = normalize(p_ℓ − x),
+ * with g = 1/‖p_ℓ − x‖² (fall-off) or g = 1 (none). Both models hold a directional light (d → ∞),
+ * so a far or directional light fits both alike: only a near light tells them apart. Pixels above
+ * both fits (a highlight) and clipped ones are left out. Returns the best of each model. `T`: the
+ * rubric's thresholds, with `around` (a direction: only light directions within 60° of it are tried) or none.
+ */
+export function pointLightFit(pts, T) {
+  const use0 = pts.map((s) => Math.max(...s.c) < 0.985);
+  if (use0.filter(Boolean).length < 50) return null;
+  for (const s of pts) s.y = luminance(s.c);
+  const DIST = [1.25, 1.5, 1.75, 2, 2.5, 3, 4, 5, 7, 10, 20, 1e4];
+  const fit = (use, l, d, falloff) => {
+    let n = 0, sx = 0, sy = 0, sxx = 0, sxy = 0, syy = 0;
+    const xs = new Float64Array(pts.length);
+    for (let i = 0; i < pts.length; i++) {
+      if (!use[i]) continue;
+      const s = pts[i];
+      const x = pointLightTerm(s.n, l, d, falloff);
+      xs[i] = x;
+      n++; sx += x; sy += s.y; sxx += x * x; sxy += x * s.y; syy += s.y * s.y;
+    }
+    const den = n * sxx - sx * sx;
+    const b = den > 1e-9 ? (n * sxy - sx * sy) / den : 0;
+    const a = (sy - b * sx) / n;
+    return { a, b, l, d, falloff, sse: Math.max(0, syy - a * sy - b * sxy), xs };
+  };
+  const search = (use, falloff, around) => {
+    let best = null;
+    const dirs = DIRS.filter((l) => !around || l[0] * around[0] + l[1] * around[1] + l[2] * around[2] > 0.5);
+    for (const d of DIST) {
+      for (const l of dirs) {
+        const f = fit(use, l, d, falloff);
+        if (f.b > 0 && (!best || f.sse < best.sse)) best = f;
+      }
+    }
+    if (!best) return null;
+    for (let step = 0.1; step > 0.005; step /= 2) { // refine the direction, then the distance
+      for (const dd of [[1, 0, 0], [-1, 0, 0], [0, 1, 0], [0, -1, 0], [0, 0, 1], [0, 0, -1]]) {
+        const l = best.l.map((v, k) => v + step * dd[k]), len = Math.hypot(...l);
+        const f = fit(use, l.map((v) => v / len), best.d, falloff);
+        if (f.b > 0 && f.sse < best.sse) best = f;
+      }
+      for (const d of [Math.max(1.05, best.d * (1 - 2 * step)), Math.min(1e4, best.d * (1 + 2 * step))]) {
+        const f = fit(use, best.l, d, falloff);
+        if (f.b > 0 && f.sse < best.sse) best = f;
+      }
+    }
+    return best;
+  };
+  let use = use0;
+  let none = null, inv = null;
+  const around = T.around || null;
+  for (let pass = 0; pass < 2; pass++) {
+    none = search(use, false, around);
+    inv = search(use, true, around);
+    if (!none || !inv) return null;
+    if (pass === 0) {
+      const margin = T.highlightMargin * 0.7;
+      use = pts.map((s, i) => use0[i] && Math.min(s.y - none.a - none.b * none.xs[i], s.y - inv.a - inv.b * inv.xs[i]) < margin);
+    }
+  }
+  const used = use.reduce((a, v) => a + v, 0);
+  const mean = pts.reduce((a, s, i) => a + (use[i] ? s.y : 0), 0) / used;
+  const sst = pts.reduce((a, s, i) => a + (use[i] ? (s.y - mean) ** 2 : 0), 0);
+  const brief = (f) => {
+    const model = { a: f.a, b: f.b, l: f.l, d: f.d, falloff: f.falloff };
+    const hl = highlightOf(pts, (n) => pointLightPredict(n, model), T);
+    return { distance: f.d, light: f.l, r2: sst > 1e-12 ? 1 - f.sse / sst : 0, rms: Math.sqrt(f.sse / used), model, highlightPeak: hl.peak, highlightRise: hl.rise,
+      highlightShare: hl.bright / pts.length, highlightNormal: hl.normal };
+  };
+  return { falloff: brief(inv), none: brief(none), fitted: used / pts.length };
+}
+
+/**
+ * max(n·w_i, 0) at the unit sphere's point x = n for a point light at p_ℓ = d·l, w_i =
+ * normalize(p_ℓ − x); with `falloff`, times 1/‖p_ℓ − x‖² scaled to 1 at the point nearest the light.
+ */
+function pointLightTerm(n, l, d, falloff) {
+  const wx = d * l[0] - n[0], wy = d * l[1] - n[1], wz = d * l[2] - n[2];
+  const r2 = wx * wx + wy * wy + wz * wz;
+  const cos = Math.max(0, (n[0] * wx + n[1] * wy + n[2] * wz) / Math.sqrt(r2));
+  return falloff ? cos * ((d - 1) * (d - 1)) / r2 : cos;
+}
+
+/** The brightness a fitted point-light model (pointLightFit's `model`) gives at a sample's normal. */
+export function pointLightPredict(n, m) {
+  return m.a + m.b * pointLightTerm(n, m.l, m.d, m.falloff);
+}
+
+/**
+ * The highlight above a point-light model, as diffuseFit measures it above its directional fit:
+ * the largest rise of a pixel over the model, as a share of the headroom to white there. A near
+ * light's 1/r² bright spot is part of the model, not a highlight. `pts` are perspectiveSamples.
+ */
+export function highlightAbove(pts, model, T) {
+  return highlightOf(pts, (n) => pointLightPredict(n, model), T).peak;
+}
+
+/** 'falloff' or 'none': the model a near point light fits well (R² ≥ diffuseR2, d ≤ pointLightNear), or null. */
+export function nearPointLight(pl, T) {
+  if (!pl) return null;
+  const good = ['falloff', 'none'].filter((k) => pl[k].r2 >= T.diffuseR2 && pl[k].distance <= T.pointLightNear);
+  return good.sort((a, b) => pl[b].r2 - pl[a].r2)[0] || null;
+}
+/** Model `a` ('falloff' or 'none') clearly beats model `b`: a near light, R² higher by pointLightGain, RMS lower by pointLightRmsRatio. */
+export function clearlyBetter(pl, a, b, T) {
+  return pl[a].r2 - pl[b].r2 >= T.pointLightGain && pl[a].distance <= T.pointLightNear && pl[b].rms >= T.pointLightRmsRatio * pl[a].rms;
+}
+/** A light clearly near and falling off as 1/r²: it fits, and better than without the fall-off. */
+export function clearlyNearFalloff(pl, T) {
+  return !!pl && clearlyBetter(pl, 'falloff', 'none', T) && pl.falloff.r2 >= T.diffuseR2;
+}
