@@ -153,7 +153,7 @@ function ownKeys(s) {
  * `progress(done, total)` is called as pairs are compared.
  */
 export async function compareClass(submissions, findParts, options = {}, progress = () => {}) {
-  const o = { ...DEFAULTS, ...options };
+  const o = { ...DEFAULTS, ...Object.fromEntries(Object.entries(options).filter(([, v]) => v !== undefined)) };
   const subs = submissions.map((s) => readSubmission(s, findParts));
   const given = markGiven(subs, { k: o.minTokens, share: o.share });
   for (const s of subs) for (const st of s.streams) st.own = ownTokens(st, st.id);

@@ -8,6 +8,7 @@ import { fileURLToPath } from 'node:url';
 import { PARTS, findParts } from './parts.js';
 import { readLabels, agreement, agreementText, agreementHtml } from './labels.js';
 import { CHROMIUM } from '../browser.js';
+import { runSimilarity, writeSimilarityReport, similarityJson, similarityBadges, similarityHtml, SIMILARITY_CSS, SIMILARITY_HELP, parseBound } from '../../grader/similarity/run.js';
 
 const here = path.dirname(fileURLToPath(import.meta.url));
 const repo = path.resolve(here, '../..');
@@ -32,6 +33,7 @@ fail) with reasons, from what the slide's step asks for. Our reference part is d
                     the report and stdout add the agreement per part, a label × verdict table and
                     every disagreement with both sides' reasons (correct → pass, partial → review,
                     broken → fail)
+${SIMILARITY_HELP}
 exit codes: 0 it ran (whatever the verdicts), 1 it could not run, 2 bad usage`;
 
 function fail(message, code = 1) {
@@ -52,6 +54,8 @@ function parseArgs(argv) {
     else if (a === '--workers') o.workers = next();
     else if (a === '--labels') o.labels = next();
     else if (a === '--report-only') o.reportOnly = true;
+    else if (a === '--similarity-only') o.similarityOnly = true;
+    else if (a === '--similarity-bound') o.similarityBound = parseBound(next()) ?? fail(`--similarity-bound takes a number in (0, 1]\n\n${HELP}`, 2);
     else if (a === '--part') {
       const m = /^(WP04P[1-5])=(.+)$/i.exec(next());
       if (!m) fail(`--part takes WP04Pn=<path>\n\n${HELP}`, 2);
@@ -59,6 +63,7 @@ function parseArgs(argv) {
     } else if (a.startsWith('--')) fail(`unknown option ${a}\n\n${HELP}`, 2);
     else o.positional.push(a);
   }
+  if (o.similarityOnly && !o.batch) fail(`--similarity-only compares a class: give --batch <folder>\n\n${HELP}`, 2);
   if (!o.batch && o.positional.length !== 1 && !o.reportOnly) fail(`give one submission folder or --batch <folder>\n\n${HELP}`, 2);
   return o;
 }
@@ -92,15 +97,16 @@ function passes(parts) {
 }
 const badge = (v) => `<span class="badge ${esc(v || 'fail')}">${esc(v || 'fail')}</span>`;
 
-function writeReport(out, submissions, labels = null) {
+function writeReport(out, submissions, labels = null, similar = null) {
   const rows = submissions.map((s) => ({ ...s, passes: passes(s.parts), reviews: s.parts.filter((p) => p.verdict === 'review').length }))
     .sort((a, b) => b.passes - a.passes || b.reviews - a.reviews || a.name.localeCompare(b.name));
   const agreed = labels ? agreement(labels, rows) : null;
   writeFileSync(path.join(out, 'report.json'), JSON.stringify({ generated: new Date().toISOString(), submissions: rows,
+    ...(similar ? { similarity: similarityJson(similar) } : {}),
     ...(agreed ? { labels: { ...agreed, rows: agreed.rows.map(({ reasons, ...r }) => ({ ...r, reasons: reasons.filter((x) => /^(FAIL|REVIEW)/.test(x)) })) } } : {}) }, null, 1));
   const img = (s, r, k) => (r.images && r.images[k] ? `<img src="${esc(`parts/${safeName(s.name)}/${r.images[k]}`)}" alt="${esc(`${r.part} ${k}`)}" loading="lazy">` : '');
   const anchor = (s, r) => `${safeName(s.name)}-${r.part}`;
-  const grid = rows.map((s) => `<tr data-name="${esc(s.name)}" data-passes="${s.passes}"><th scope="row"><a href="#${esc(safeName(s.name))}">${esc(s.name)}</a></th><td class="num">${s.passes}</td>` +
+  const grid = rows.map((s) => `<tr data-name="${esc(s.name)}" data-passes="${s.passes}"><th scope="row"><a href="#${esc(safeName(s.name))}">${esc(s.name)}</a>${similar ? similarityBadges(similar, s.name) : ''}</th><td class="num">${s.passes}</td>` +
     PARTS.map((p) => {
       const r = s.parts.find((x) => x.part === p);
       return `<td class="cell ${esc(r.verdict)}" data-verdict="${VERDICTS.indexOf(r.verdict)}"><a href="#${esc(anchor(s, r))}">${badge(r.verdict)}` +
@@ -136,7 +142,7 @@ th[data-sort]{cursor:pointer;text-decoration:underline dotted}.num{text-align:ri
 .badge{display:inline-block;padding:0 .4rem;border-radius:.6rem;font-size:.8rem;font-weight:600;color:#fff}.badge.pass{background:#2a7d2a}.badge.review{background:#a66b00}.badge.fail{background:#b3261e}
 .api{color:#556;font-size:.75rem;margin-left:.3rem}.thumbs{display:flex;gap:2px;margin-top:2px}.thumbs img{width:64px;height:64px;object-fit:contain;border:1px solid #ccd;background:#fff}
 .images{display:flex;gap:.8rem;flex-wrap:wrap}figure{margin:0}figure img{max-width:260px;border:1px solid #ccd;image-rendering:pixelated}
-.errors li{color:#a00}.confusion td.agree{background:#e3f6e3;font-weight:600}.file{color:#556;font-family:monospace}.part{border-top:1px solid #dde;padding:.3rem 0}</style></head><body>
+.errors li{color:#a00}.confusion td.agree{background:#e3f6e3;font-weight:600}.file{color:#556;font-family:monospace}.part{border-top:1px solid #dde;padding:.3rem 0}${SIMILARITY_CSS}</style></head><body>
 <h1>Grading report</h1><p>Each part was opened in Chromium (WebGL, or WebGPU on SwiftShader with its frames read back), with time
 frozen. The grader found its controls, stopped or sampled the orbit, coarsened and subdivided until the silhouette stopped
 changing, and judged the picture by what the slide's step asks for (a round sphere; normals as colours; diffuse shading for a
@@ -147,11 +153,12 @@ fail. Click a cell for its reasons and pictures; click a column head to sort.</p
 ${grid}
 </tbody><tfoot><tr><th>pass / review / fail</th><td></td>${totals.map((t) => `<td>${t}</td>`).join('')}</tr></tfoot></table>
 ${agreed ? agreementHtml(agreed, (r) => `#${safeName(r.submission)}-${r.part}`) : ''}
+${similar ? similarityHtml(similar, (n) => `<a href="#${esc(safeName(n))}">${esc(n)}</a>`) : ''}
 ${details}${sortScript}</body></html>`);
   return { rows, agreed };
 }
 
-function main() {
+async function main() {
   const o = parseArgs(process.argv.slice(2));
   const rubric = readRubric(o.rubric);
   let labels = null;
@@ -177,7 +184,7 @@ function main() {
   const out = path.resolve(o.out || path.join(repo, 'out/grade', o.batch ? path.basename(path.resolve(o.batch)) : path.basename(path.resolve(o.positional[0] || 'report'))));
   mkdirSync(out, { recursive: true });
 
-  if (!o.reportOnly) {
+  if (!o.reportOnly && !o.similarityOnly) {
     if (!existsSync(CHROMIUM)) fail(`Chromium is missing at ${CHROMIUM}: run "sudo apt-get update && sudo apt-get install -y chromium"`);
     const items = [];
     for (const s of submissions) {
@@ -206,6 +213,12 @@ function main() {
 
   // gather every part graded in this out folder (all shards, once they are copied together)
   const partsDir = path.join(out, 'parts');
+  const similar = o.batch ? await runSimilarity(submissions, out, { bound: o.similarityBound ?? undefined }) : null;
+  if (o.similarityOnly && !existsSync(partsDir)) {
+    writeSimilarityReport(out, similar, submissions.map((s) => s.name));
+    console.log(`grade: similarity report at ${path.join(out, 'report.html')}`);
+    return;
+  }
   if (!existsSync(partsDir)) fail(`nothing graded in ${out} yet`);
   const byName = new Map();
   for (const dir of readdirSync(partsDir).sort()) {
@@ -223,7 +236,7 @@ function main() {
     }
     s.parts.sort((a, b) => a.part.localeCompare(b.part));
   }
-  const { rows, agreed } = writeReport(out, [...byName.values()], labels);
+  const { rows, agreed } = writeReport(out, [...byName.values()], labels, similar);
   if (o.batch) {
     const csv = ['name,passes,' + PARTS.join(',') + ',' + PARTS.map((p) => `${p}_reasons`).join(',')]
       .concat(rows.map((s) => [JSON.stringify(s.name), s.passes, ...PARTS.map((p) => s.parts.find((x) => x.part === p).verdict),
@@ -237,4 +250,4 @@ function main() {
   console.log(`grade: report at ${path.join(out, 'report.html')}`);
 }
 
-main();
+main().catch((err) => fail(err.message));
