@@ -10,6 +10,7 @@ import { readLabels, agreementText } from './labels.js';
 import { writeReport, safeName } from './report.js';
 import { mergeRubric } from '../core/rubric.js';
 import { CHROMIUM } from '../../tools/browser.js';
+import { runSimilarity, writeSimilarityReport, SIMILARITY_HELP, parseBound } from '../similarity/run.js';
 
 const here = path.dirname(fileURLToPath(import.meta.url));
 const repo = path.resolve(here, '../..');
@@ -34,6 +35,7 @@ fail) with reasons, from what the slide's step asks for. Our reference part is d
                     the report and stdout add the agreement per part, a label × verdict table and
                     every disagreement with both sides' reasons (correct → pass, partial → review,
                     broken → fail)
+${SIMILARITY_HELP}
 exit codes: 0 it ran (whatever the verdicts), 1 it could not run, 2 bad usage`;
 
 function fail(message, code = 1) {
@@ -54,6 +56,8 @@ function parseArgs(argv) {
     else if (a === '--workers') o.workers = next();
     else if (a === '--labels') o.labels = next();
     else if (a === '--report-only') o.reportOnly = true;
+    else if (a === '--similarity-only') o.similarityOnly = true;
+    else if (a === '--similarity-bound') o.similarityBound = parseBound(next()) ?? fail(`--similarity-bound takes a number in (0, 1]\n\n${HELP}`, 2);
     else if (a === '--part') {
       const m = /^(WP04P[1-5])=(.+)$/i.exec(next());
       if (!m) fail(`--part takes WP04Pn=<path>\n\n${HELP}`, 2);
@@ -61,6 +65,7 @@ function parseArgs(argv) {
     } else if (a.startsWith('--')) fail(`unknown option ${a}\n\n${HELP}`, 2);
     else o.positional.push(a);
   }
+  if (o.similarityOnly && !o.batch) fail(`--similarity-only compares a class: give --batch <folder>\n\n${HELP}`, 2);
   if (!o.batch && o.positional.length !== 1 && !o.reportOnly) fail(`give one submission folder or --batch <folder>\n\n${HELP}`, 2);
   return o;
 }
@@ -79,7 +84,7 @@ function readRubric(file) {
   return mergeRubric(load(DEFAULT_RUBRIC), file ? load(file) : null);
 }
 
-function main() {
+async function main() {
   const o = parseArgs(process.argv.slice(2));
   const rubric = readRubric(o.rubric);
   let labels = null;
@@ -105,7 +110,7 @@ function main() {
   const out = path.resolve(o.out || path.join(repo, 'out/grade', o.batch ? path.basename(path.resolve(o.batch)) : path.basename(path.resolve(o.positional[0] || 'report'))));
   mkdirSync(out, { recursive: true });
 
-  if (!o.reportOnly) {
+  if (!o.reportOnly && !o.similarityOnly) {
     if (!existsSync(CHROMIUM)) fail(`Chromium is missing at ${CHROMIUM}: run "sudo apt-get update && sudo apt-get install -y chromium"`);
     const items = [];
     for (const s of submissions) {
@@ -135,6 +140,12 @@ function main() {
 
   // gather every part graded in this out folder (all shards, once they are copied together)
   const partsDir = path.join(out, 'parts');
+  const similar = o.batch ? await runSimilarity(submissions, out, { bound: o.similarityBound ?? undefined }) : null;
+  if (o.similarityOnly && !existsSync(partsDir)) {
+    writeSimilarityReport(out, similar, submissions.map((s) => s.name));
+    console.log(`grade: similarity report at ${path.join(out, 'report.html')}`);
+    return;
+  }
   if (!existsSync(partsDir)) fail(`nothing graded in ${out} yet`);
   const byName = new Map();
   for (const dir of readdirSync(partsDir).sort()) {
@@ -152,7 +163,7 @@ function main() {
     }
     s.parts.sort((a, b) => a.part.localeCompare(b.part));
   }
-  const { rows, agreed } = writeReport(out, [...byName.values()], labels);
+  const { rows, agreed } = writeReport(out, [...byName.values()], labels, similar);
   if (o.batch) {
     const csv = ['name,passes,' + PARTS.join(',') + ',' + PARTS.map((p) => `${p}_reasons`).join(',')]
       .concat(rows.map((s) => [JSON.stringify(s.name), s.passes, ...PARTS.map((p) => s.parts.find((x) => x.part === p).verdict),
@@ -166,4 +177,4 @@ function main() {
   console.log(`grade: report at ${path.join(out, 'report.html')}`);
 }
 
-main();
+main().catch((err) => fail(err.message));

@@ -5,6 +5,7 @@ import { writeFileSync } from 'node:fs';
 import path from 'node:path';
 import { PARTS } from './parts.js';
 import { agreement, agreementHtml } from './labels.js';
+import { similarityJson, similarityBadges, similarityHtml, SIMILARITY_CSS } from '../similarity/run.js';
 
 const esc = (s) => String(s).replace(/[&<>"']/g, (c) => ({ '&': '&amp;', '<': '&lt;', '>': '&gt;', '"': '&quot;', "'": '&#39;' })[c]);
 /** A submission's name as a file or folder name (its parts' pictures are in parts/<safeName>/). */
@@ -22,16 +23,17 @@ const badge = (v) => `<span class="badge ${esc(v || 'fail')}">${esc(v || 'fail')
  * with the agreement with `labels` (readLabels) where given; returns the submissions sorted as the
  * grid shows them (with their passes and reviews) and the agreement.
  */
-export function writeReport(out, submissions, labels = null) {
+export function writeReport(out, submissions, labels = null, similar = null) {
   const rows = submissions.map((s) => ({ ...s, passes: passes(s.parts), reviews: s.parts.filter((p) => p.verdict === 'review').length }))
     .sort((a, b) => b.passes - a.passes || b.reviews - a.reviews || a.name.localeCompare(b.name));
   const agreed = labels ? agreement(labels, rows) : null;
   writeFileSync(path.join(out, 'report.json'), JSON.stringify({ generated: new Date().toISOString(), submissions: rows,
+    ...(similar ? { similarity: similarityJson(similar) } : {}),
     ...(agreed ? { labels: { ...agreed, rows: agreed.rows.map(({ reasons, ...r }) => ({ ...r, reasons: reasons.filter((x) => /^(FAIL|REVIEW)/.test(x)) })) } } : {}) }, null, 1));
   // (a picture's path is relative to the report: the artifact's files, our reference in parts/)
   const img = (s, r, k) => (r.images && r.images[k] ? `<img src="${esc(r.images[k])}" alt="${esc(`${r.part} ${k}`)}" loading="lazy">` : '');
   const anchor = (s, r) => `${safeName(s.name)}-${r.part}`;
-  const grid = rows.map((s) => `<tr data-name="${esc(s.name)}" data-passes="${s.passes}"><th scope="row"><a href="#${esc(safeName(s.name))}">${esc(s.name)}</a></th><td class="num">${s.passes}</td>` +
+  const grid = rows.map((s) => `<tr data-name="${esc(s.name)}" data-passes="${s.passes}"><th scope="row"><a href="#${esc(safeName(s.name))}">${esc(s.name)}</a>${similar ? similarityBadges(similar, s.name) : ''}</th><td class="num">${s.passes}</td>` +
     PARTS.map((p) => {
       const r = s.parts.find((x) => x.part === p);
       return `<td class="cell ${esc(r.verdict)}" data-verdict="${VERDICTS.indexOf(r.verdict)}"><a href="#${esc(anchor(s, r))}">${badge(r.verdict)}` +
@@ -67,7 +69,7 @@ th[data-sort]{cursor:pointer;text-decoration:underline dotted}.num{text-align:ri
 .badge{display:inline-block;padding:0 .4rem;border-radius:.6rem;font-size:.8rem;font-weight:600;color:#fff}.badge.pass{background:#2a7d2a}.badge.review{background:#a66b00}.badge.fail{background:#b3261e}
 .api{color:#556;font-size:.75rem;margin-left:.3rem}.thumbs{display:flex;gap:2px;margin-top:2px}.thumbs img{width:64px;height:64px;object-fit:contain;border:1px solid #ccd;background:#fff}
 .images{display:flex;gap:.8rem;flex-wrap:wrap}figure{margin:0}figure img{max-width:260px;border:1px solid #ccd;image-rendering:pixelated}
-.errors li{color:#a00}.confusion td.agree{background:#e3f6e3;font-weight:600}.file{color:#556;font-family:monospace}.part{border-top:1px solid #dde;padding:.3rem 0}</style></head><body>
+.errors li{color:#a00}.confusion td.agree{background:#e3f6e3;font-weight:600}.file{color:#556;font-family:monospace}.part{border-top:1px solid #dde;padding:.3rem 0}${SIMILARITY_CSS}</style></head><body>
 <h1>Grading report</h1><p>Each part was opened in Chromium (WebGL, or WebGPU on SwiftShader with its frames read back), with time
 frozen. The grader found its controls, stopped or sampled the orbit, coarsened and subdivided until the silhouette stopped
 changing, and judged the picture by what the slide's step asks for (a round sphere; normals as colours; diffuse shading for a
@@ -78,6 +80,7 @@ fail. Click a cell for its reasons and pictures; click a column head to sort.</p
 ${grid}
 </tbody><tfoot><tr><th>pass / review / fail</th><td></td>${totals.map((t) => `<td>${t}</td>`).join('')}</tr></tfoot></table>
 ${agreed ? agreementHtml(agreed, (r) => `#${safeName(r.submission)}-${r.part}`) : ''}
+${similar ? similarityHtml(similar, (n) => `<a href="#${esc(safeName(n))}">${esc(n)}</a>`) : ''}
 ${details}${sortScript}</body></html>`);
   return { rows, agreed };
 }
