@@ -6,7 +6,7 @@
 // never returns is stopped and said so. Our own part can be drawn beside it (drawReference).
 import { framePage } from './frame-page.js';
 import { frameWatchScript } from './frame-watch.js';
-import { frameClockScript } from './frame-clock.js';
+import { frameClockScript } from '../grader/browser/clock.js';
 import { instrumentScript } from '../grader/browser/instrument.js';
 import { webgpuCaptureScript } from '../tools/webgpu-capture.js';
 import { gradePart } from '../grader/core/grade-part.js';

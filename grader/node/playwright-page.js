@@ -5,6 +5,7 @@
 import { PNG } from 'pngjs';
 import { webgpuCaptureScript, readWebGPUFrame } from '../../tools/webgpu-capture.js';
 import { instrumentScript } from '../browser/instrument.js';
+import { frameClockScript } from '../browser/clock.js';
 import { serveSubmission } from './serve-submission.js';
 
 // the time the page sees: frozen, moving only when the grader lets frames run
@@ -31,6 +32,7 @@ export function partOpener(browser, host) {
     await serveSubmission(context, site);
     await context.addInitScript(webgpuCaptureScript);
     await context.addInitScript(instrumentScript);
+    await context.addInitScript(frameClockScript, FROZEN.getTime());
     const page = await context.newPage();
     page.on('popup', (popup) => {
       site.log.blocked.push(`popup: ${popup.url()}`);
@@ -68,8 +70,6 @@ export function partOpener(browser, host) {
       kept ??= await keep();
       const { page, site } = kept;
       serve(site, root, log);
-      await page.clock.install({ time: FROZEN });
-      await page.clock.pauseAt(new Date(FROZEN.getTime() + 2000)); // from here time moves only when we say so
       const url = `${site.origin}/${rel.split(/[\\/]/).map(encodeURIComponent).join('/')}${query ? `?${query}` : ''}`;
       let response;
       try {
@@ -109,10 +109,12 @@ export function playwrightDriver(page, log) {
     setValue: (c, value, events) => page.evaluate(([i, v, ev]) => window.__grade.setValue(i, v, ev), [c.index, value, events]),
     /** A key pressed and released, sent where the page listens (the focused element, else the body). */
     press: (key) => page.keyboard.press(key),
-    /** Lets `ms` of frozen time pass: a jump (due timers and one animation frame fire once), then `frames` frames at 60 Hz. */
+    /** Lets `ms` of frozen time pass (grader/browser/clock.js): a jump (due timers and one animation frame fire once), then `frames` frames at 60 Hz. */
     async tick(ms, frames = 2) {
-      if (ms > 16 * frames + 8) await page.clock.fastForward(ms - 16 * frames);
-      await page.clock.runFor(Math.min(ms, 16 * frames));
+      await page.evaluate(async ([jump, run]) => {
+        if (jump > 0) await window.__checkClock.fastForward(jump);
+        await window.__checkClock.runFor(run);
+      }, [ms > 16 * frames + 8 ? ms - 16 * frames : 0, Math.min(ms, 16 * frames)]);
       await readWebGPUFrame(page);
     },
     /** The grader's experiment: WebGL draws with back-face culling off (true) or as the page set it (false). */

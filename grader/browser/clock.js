@@ -1,13 +1,16 @@
-// Frozen time in a part's frame, as the grader's Playwright clock freezes it (page.clock.install,
-// then pauseAt): an init script (a function, put at the top of the part's HTML as source text)
-// that stands in for Date, performance.now, setTimeout/setInterval, requestAnimationFrame and
-// requestIdleCallback. Nothing fires until the check page says so:
+// Frozen time in a graded page, the same in the grader's Playwright page and in the check page's
+// frame: an init script that stands in for Date, performance.now, setTimeout/setInterval,
+// requestAnimationFrame and requestIdleCallback. Nothing fires until the runner says so:
 //   __checkClock.runFor(ms)      every timer and animation frame due in the next ms, in order;
 //   __checkClock.fastForward(ms) jumps ms ahead: each timer due by then fires once.
 // Between two callbacks a real task passes (a MessageChannel message), so the promises a page's
-// frame starts (a WebGPU readback, a fetch) settle as they do under Playwright's clock, whose
-// rules these are: timers ordered by due time, then creation; an animation frame is due at the
-// next multiple of 16 ms; a timer made while one fires is due at least 1 ms later.
+// frame starts (a WebGPU readback, a fetch) settle; timers are ordered by due time, then creation;
+// an animation frame is due at the next multiple of 16 ms; a timer made while one fires is due at
+// least 1 ms later (the rules of Playwright's clock). Unlike Playwright's clock, whose
+// performance.now() starts at the real milliseconds between its install and its pause, and which
+// replays every step of every earlier document of the context, the page's time here depends only
+// on what the runner asked for: a page that turns its camera by a frame's timestamp starts at the
+// same angle on every run.
 
 /** The init script. `start` is the frozen wall time (ms since 1970) at performance.now() = 0; the page
  * loads 2 s later (as the grader's clock: installed at `start`, paused at `start` + 2 s). */
