@@ -49,7 +49,7 @@ export function auditPart({ facts, images }, rubric) {
   if (raw.blank) return result('the picture went blank after the controls were used');
   const { an, circleArc } = sphereView(img, T);
   const judged = { img, an, raw, circleArc };
-  auditSphere(C, judged, facts.ladder.map((l) => analyse(images[l.image], T).roundness), analyse(images.first, T).roundness);
+  auditSphere(C, judged, facts.ladder.map((l) => l.roundness), analyse(images.first, T).roundness);
   auditNormals(C, judged);
   auditDepthCulling(C);
   const shaded = must.has('diffuse') || must.has('highlight');

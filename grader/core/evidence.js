@@ -38,7 +38,7 @@ export function shadingOf(img, an, T) {
 
 /** The kept views' full fits (the lit views along the orbit), in the order kept. */
 export function viewFits(views, T) {
-  return views.map((v) => ({ ...v, fit: fullFit(v.img, analyse(v.img, T), T) }));
+  return views.map((v) => ({ ...v, fit: fullFit(v.img, T) }));
 }
 
 /**
@@ -78,6 +78,6 @@ export function raisedSeen(raised, images, T) {
   const x = raised[k];
   const img = images[x.image];
   const set = raised.slice(0, k + 1).map((r) => r.role);
-  return { fit: fullFit(img, analyse(img, T), T), broad: x.broad,
+  return { fit: fullFit(img, T), broad: x.broad,
     where: `the judged view with ${set.join(' and ')} set by the page's own slider${set.length > 1 ? 's' : ''}` };
 }

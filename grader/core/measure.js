@@ -2,7 +2,12 @@
 // students pick their own camera, canvas, background, light and material. An image is
 // { width, height, data } (RGBA bytes). Everything here is plain arithmetic, no browser.
 // The measurements live in measure/, one concern a module; this file gathers them for importers.
-export { analyse, openMask, fitCircle } from './measure/silhouette.js';
+import { analyse as analyseOnce } from './measure/silhouette.js';
+import { memo } from './memo.js';
+
+/** A picture's silhouette (measure/silhouette.js), read once a picture and rubric. */
+export const analyse = memo(analyseOnce);
+export { openMask, fitCircle } from './measure/silhouette.js';
 export { samples, perspectiveSamples } from './measure/samples.js';
 export { normalColours } from './measure/normals.js';
 export { diffuseFit } from './measure/diffuse.js';

@@ -2,25 +2,27 @@
 // diffuse fit with a clear diffuse term), and its diffuse fit. Pure: the gatherers use it to decide
 // how long to sample the orbit, the audits to judge the views kept.
 import { analyse, samples, diffuseFit } from './measure.js';
+import { memo } from './memo.js';
 
 /**
  * { an, fit, lit } for a picture: `fit` over a sparse 1500 samples. A light from the eye's side
  * spreads brightness little over the disc (n·w_i from 0.5 to 1 in the samples): a clean fit with
  * a clear diffuse term is lit too. A silhouette too coarse to read shading from is never lit.
  */
-export function litView(img, T) {
+export const litView = memo((img, T) => {
   const an = analyse(img, T);
   if (an.blank) return { an, fit: null, lit: false };
   const fit = diffuseFit(samples(img, an, { max: 1500 }), T);
   const lit = !!fit && an.roundness < T.orbitCoarseRoundness && (fit.spread >= T.litSpread * 1.5 ||
     (fit.spread >= T.litSpread / 2 && fit.r2 >= T.diffuseR2 && fit.diffuse >= T.diffuseMin));
   return { an, fit, lit };
-}
+});
 
 /** A picture's diffuse fit over all its samples. */
-export function fullFit(img, an, T) {
+export const fullFit = memo((img, T) => {
+  const an = analyse(img, T);
   return an.blank ? null : diffuseFit(samples(img, an), T);
-}
+});
 
 /** The light's angle from the viewer (+z), in degrees. */
 export const lightAngle = (f) => (180 / Math.PI) * Math.acos(Math.max(-1, Math.min(1, f.light[2])));

@@ -7,11 +7,13 @@ import { existsSync, mkdirSync, readFileSync, readdirSync, rmSync, writeFileSync
 import path from 'node:path';
 import { PNG } from 'pngjs';
 
-/** A picture ({ width, height, data }) as PNG bytes. */
+/** A picture ({ width, height, data }) as PNG bytes: RGB where every pixel is opaque (the same pixels read back), else RGBA. */
 export function pngOf(img) {
   const p = new PNG({ width: img.width, height: img.height });
   p.data.set(img.data);
-  return PNG.sync.write(p, { colorType: 6 });
+  let opaque = true;
+  for (let k = 3; k < img.data.length && opaque; k += 4) opaque = img.data[k] === 255;
+  return PNG.sync.write(p, opaque ? { colorType: 2, inputHasAlpha: true } : { colorType: 6 });
 }
 
 /** Writes `artifact` ({ facts, images }) into `dir` (emptied first); returns the files by picture name. */

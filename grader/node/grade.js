@@ -10,6 +10,7 @@ import { readLabels, agreementText } from './labels.js';
 import { writeReport, safeName } from './report.js';
 import { mergeRubric } from '../core/rubric.js';
 import { CHROMIUM } from '../../tools/browser.js';
+import { auditAgain } from './audit-only.js';
 import { runSimilarity, writeSimilarityReport, SIMILARITY_HELP, parseBound } from '../similarity/run.js';
 
 const here = path.dirname(fileURLToPath(import.meta.url));
@@ -30,6 +31,9 @@ fail) with reasons, from what the slide's step asks for. Our reference part is d
   --shard I/N       grade only the I-th of N shares of the parts (Playwright's sharding), to split a
                     class across machines; gather the out folders and run --report-only on them
   --report-only     rebuild the report from the parts already graded in --out
+  --audit-only OUT  judge the parts graded in OUT again from their saved artifacts (OUT/artifacts/), with
+                    the rubric given (--rubric) and no browser, in seconds; rewrites OUT's results and
+                    report (with --labels, the agreement too)
   --workers N       parts graded at once (default 2)
   --labels FILE     your own labels (TSV: submission, part, label = correct | partial | broken, reasons):
                     the report and stdout add the agreement per part, a label × verdict table and
@@ -56,6 +60,7 @@ function parseArgs(argv) {
     else if (a === '--workers') o.workers = next();
     else if (a === '--labels') o.labels = next();
     else if (a === '--report-only') o.reportOnly = true;
+    else if (a === '--audit-only') o.auditOnly = next();
     else if (a === '--similarity-only') o.similarityOnly = true;
     else if (a === '--similarity-bound') o.similarityBound = parseBound(next()) ?? fail(`--similarity-bound takes a number in (0, 1]\n\n${HELP}`, 2);
     else if (a === '--part') {
@@ -66,7 +71,7 @@ function parseArgs(argv) {
     else o.positional.push(a);
   }
   if (o.similarityOnly && !o.batch) fail(`--similarity-only compares a class: give --batch <folder>\n\n${HELP}`, 2);
-  if (!o.batch && o.positional.length !== 1 && !o.reportOnly) fail(`give one submission folder or --batch <folder>\n\n${HELP}`, 2);
+  if (!o.batch && o.positional.length !== 1 && !o.reportOnly && !o.auditOnly) fail(`give one submission folder or --batch <folder>\n\n${HELP}`, 2);
   return o;
 }
 
@@ -102,15 +107,20 @@ async function main() {
     submissions = readdirSync(root).filter((n) => !n.startsWith('.') && statSync(path.join(root, n)).isDirectory()).sort()
       .map((n) => ({ name: n, root: path.join(root, n) }));
     if (!submissions.length) fail(`${o.batch} has no submission folders`);
-  } else if (!o.reportOnly) {
+  } else if (!o.reportOnly && !o.auditOnly) {
     const root = path.resolve(o.positional[0]);
     if (!existsSync(root) || !statSync(root).isDirectory()) fail(`no such folder: ${o.positional[0]}`);
     submissions = [{ name: path.basename(root), root }];
   }
-  const out = path.resolve(o.out || path.join(repo, 'out/grade', o.batch ? path.basename(path.resolve(o.batch)) : path.basename(path.resolve(o.positional[0] || 'report'))));
+  const out = o.auditOnly ? path.resolve(o.auditOnly) : path.resolve(o.out || path.join(repo, 'out/grade', o.batch ? path.basename(path.resolve(o.batch)) : path.basename(path.resolve(o.positional[0] || 'report'))));
   mkdirSync(out, { recursive: true });
 
-  if (!o.reportOnly && !o.similarityOnly) {
+  if (o.auditOnly) {
+    if (!existsSync(path.join(out, 'parts'))) fail(`nothing graded in ${out}: --audit-only judges a class graded before (its artifacts/ and parts/)`);
+    const t0 = Date.now();
+    const { audited, without } = auditAgain(out, rubric, (k, n) => process.stdout.write(`\rgrade: auditing ${k + 1} of ${n} parts`));
+    console.log(`\rgrade: audited ${audited} parts from their artifacts in ${((Date.now() - t0) / 1000).toFixed(1)} s${without.length ? `; ${without.length} without an artifact kept their verdict (${without.join(', ')})` : ''}`);
+  } else if (!o.reportOnly && !o.similarityOnly) {
     if (!existsSync(CHROMIUM)) fail(`Chromium is missing at ${CHROMIUM}: run "sudo apt-get update && sudo apt-get install -y chromium"`);
     const items = [];
     for (const s of submissions) {

@@ -1,7 +1,7 @@
 // WP04P4/P5: the specular term: a highlight shows (in the judged view, a lit view along the orbit,
 // or with the page's own ks and s sliders raised), and it sits at w_h, halfway between the light
 // and the viewer (the slides' w_r · w_o peaks there too), not at the light.
-import { analyse, highlightOffset } from '../measure.js';
+import { highlightOffset } from '../measure.js';
 import { highlightShown, placeView, raisedSeen } from '../evidence.js';
 import { fullFit, lightAngle } from '../views.js';
 
@@ -36,7 +36,7 @@ export function auditPlaceFarther(C, near) {
   if (!name) return judgePlace(C, near);
   const img = C.images[name];
   C.imagesShown.highlightPlace = name;
-  judgePlace(C, { fit: fullFit(img, analyse(img, C.T), C.T), where: 'a view along the orbit' });
+  judgePlace(C, { fit: fullFit(img, C.T), where: 'a view along the orbit' });
 }
 
 /** Says whether the highlight sits at w_h in `place` ({ fit, where }). */

@@ -35,7 +35,7 @@ export function fragmentPow(sources) {
 export function auditPerFragment({ facts, images, T, must, say, numbers, imagesShown }, judged, shading) {
   if (!must.has('perFragment') || !shading || !shading.fit) return;
   const j = facts.judgedLevel;
-  const coarseAt = facts.stopped && !facts.viewMoved ? facts.ladder.findIndex((s, k) => k !== j && !s.blank && analyse(images[s.image], T).roundness < T.coarseRoundness) : -1;
+  const coarseAt = facts.stopped && !facts.viewMoved ? facts.ladder.findIndex((s, k) => k !== j && !s.blank && s.roundness < T.coarseRoundness && s.image) : -1;
   const coarse = coarseAt >= 0 ? images[facts.ladder[coarseAt].image] : null;
   if (coarse && coarse.width === judged.img.width) {
     const change = shadingChange(coarse, analyse(coarse, T), judged.img, judged.raw);

@@ -77,7 +77,6 @@ async function gather(S) {
     }
   }
   Object.assign(facts.orbit = {}, { movedAtFirst: orbit.movedAtFirst, toggles: orbit.toggles, start: orbit.start ? orbit.start.index : null, stop: orbit.stop ? orbit.stop.index : null, control: S.R.orbit ? S.R.orbit.index : null });
-  facts.ladder = ladder.map((s, k) => ({ image: S.keep(`level-${k}`, s.img), roundness: s.an.roundness, blank: !!s.an.blank }));
   // a page that goes blank at a higher level is judged at the last level it drew
   let j = ladder.length - 1;
   if (ladder[j].an.blank) {
@@ -87,6 +86,10 @@ async function gather(S) {
       facts.blankAtHigherLevel = true;
     }
   }
+  // each level's outline as measured on the way up; its picture where an audit reads it (the judged
+  // level; every level where a coarse one is compared with it, P5)
+  facts.ladder = ladder.map((s, k) => ({ roundness: s.an.roundness, blank: !!s.an.blank,
+    ...(k === j || must.has('perFragment') ? { image: S.keep(`level-${k}`, s.img) } : {}) }));
   facts.judgedLevel = j;
   facts.judged = facts.ladder[j].image;
   if (ladder[j].an.blank) return;
