@@ -67,6 +67,7 @@ for (const item of plan.items) {
       if (/Test ended|Target page, context or browser has been closed/.test(err.message)) throw err; // the time bound: stays 'timeout'
       // the grader's own trouble with this page: never a pass on it, a teacher looks
       graded.checks = [{ level: 'review', reason: `the grader could not finish on this page: ${err.message.split('\n')[0]}` }];
+      if (process.env.GRADE_DEBUG) console.error(err);
     } finally {
       const t0 = Date.now();
       await openers.student.done(clean);

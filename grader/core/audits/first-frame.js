@@ -1,14 +1,15 @@
 // The first frame: the page got a context, its shaders compile, it drew something visible. A
 // part that drew nothing cannot be judged further: `fail` says why, with the first error seen.
+import { analyse } from '../measure.js';
 
 /** Says the shader and adapter failures; returns the reason the part cannot be judged, or null. */
-export function auditFirstFrame({ facts, images, say }) {
+export function auditFirstFrame({ facts, images, T, say }) {
   const g = facts.first;
   if (!g) return 'the page never finished its first frame';
   if (!images.first) return 'no canvas on the page';
   for (const e of g.shaderErrors) say('fail', e);
   if (g.api === 'webgpu' && g.adapter === null) say('fail', 'no WebGPU adapter: the page could not start WebGPU');
-  if (facts.controls) return null; // gathering went on: the first frame drew
+  if (!analyse(images.first, T).blank) return null;
   const why = g.shaderErrors[0] || g.gpuErrors[0] || facts.errors.find((e) => /page error|dialog/.test(e));
   if (!g.api) return `drew nothing: the page never got a WebGL or WebGPU context${why ? ` (${why})` : ''}`;
   if (!g.draws) return `drew nothing: the canvas is one colour, no draw call${why ? ` (${why})` : ''}`;
