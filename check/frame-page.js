@@ -81,5 +81,9 @@ export function framePage(frame, log) {
     hung() {
       return watch().hung;
     },
+    /** What the self-check's own instrumentation broke in the frame (check/frame-watch.js). */
+    broken() {
+      return [...(watch().broken || [])];
+    },
   };
 }
