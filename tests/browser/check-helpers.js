@@ -77,8 +77,7 @@ const FIXTURES = path.resolve('tests/fixtures');
 export function earlyHandIn(dir) {
   const out = path.join(dir, 'early');
   cpSync(path.join(FIXTURES, 'check/early'), out, { recursive: true });
-  mkdirSync(path.join(out, 'common'), { recursive: true });
-  cpSync(path.join(FIXTURES, 'handins/anna/Worksheet4/common/mymv.js'), path.join(out, 'common/mymv.js'));
+  cpSync(path.join(FIXTURES, 'handins/finn/common.js'), path.join(out, 'common.js'));
   mkdirSync(path.join(out, 'Part3'), { recursive: true });
   cpSync(path.join(FIXTURES, 'handins/kaja/week4/part3.html'), path.join(out, 'Part3/index.html'));
   return out;
