@@ -9,6 +9,7 @@ import { openSession, startHost, unsupported } from './host.js';
 import { checkPart, drawReference, frameScript } from './runner.js';
 import { handInSource, siteSource } from './serve.js';
 import { missedSlides, stepLink } from './slides.js';
+import { NOT_CHECKED, NO_WEBGPU_HERE } from './not-checked.js';
 import { PARTS } from '../grader/core/part-names.js';
 
 const $ = (id) => document.getElementById(id);
@@ -44,13 +45,16 @@ function pictureURL(img) {
 
 const CAPTIONS = { first: 'first frame', coarse: 'a coarse level', judged: 'judged', leastS: 's at its least', reference: 'our step, same size and light' };
 
+const BADGES = { [NOT_CHECKED]: 'not checked here' };
+
 function card(r, index, total, file) {
-  const slides = r.verdict === 'pass' ? [] : missedSlides(r.reasons || []);
+  const slides = r.verdict === 'pass' || r.verdict === NOT_CHECKED ? [] : missedSlides(r.reasons || []);
   const list = (title, items) => (items && items.length ? el('details', {}, el('summary', { textContent: `${title} (${items.length})` }),
     el('ul', {}, ...items.map((t) => el('li', { textContent: t })))) : null);
   const images = Object.entries(r.images || {}).filter(([k, im]) => CAPTIONS[k] && im && im.data);
-  return el('article', { className: `card ${r.verdict}`, id: `card-${r.part}` },
-    el('h2', {}, el('span', { textContent: r.part }), el('span', { className: `badge ${r.verdict}`, textContent: r.verdict }),
+  const kind = r.verdict === NOT_CHECKED ? 'unchecked' : r.verdict;
+  return el('article', { className: `card ${kind}`, id: `card-${r.part}` },
+    el('h2', {}, el('span', { textContent: r.part }), el('span', { className: `badge ${kind}`, textContent: BADGES[r.verdict] || r.verdict }),
       el('small', { textContent: `${file || 'not found'}${r.api ? ` · ${r.api}` : ''}${r.seconds ? ` · ${r.seconds.toFixed(0)} s` : ''} · part ${index + 1} of ${total}` })),
     el('ul', { className: 'reasons' }, ...(r.reasons || []).map((t) => el('li', { textContent: t }))),
     ...slides.map((s) => el('p', { className: 'slide' }, el('b', { textContent: 'The slide asks: ' }), `${s.slide} `,
@@ -77,7 +81,7 @@ async function run(gather) {
     $('progress').textContent = 'reading your files…';
     const files = handInFrom(await gather());
     const { parts } = partsOfHandIn(files);
-    if (!(await hasWebGPU())) say('This browser has no WebGPU adapter: parts written for WebGPU fail here (the grader has one). The WebGL parts are checked as usual.', 'notice');
+    const webgpuHere = await hasWebGPU();
     await startHost().catch((err) => {
       throw new CheckInputError(`This browser would not start the service worker the self-check needs to show your pages to the grader (${err.message}). ` +
         'Service workers may be off in a private window or by a setting: try a normal window of a current Chrome, Edge or Firefox.');
@@ -91,24 +95,27 @@ async function run(gather) {
         const file = parts[part];
         const where = `part ${k + 1} of ${PARTS.length}: ${part}${file ? ` (${file})` : ''}`;
         $('progress').textContent = where;
-        const r = file ? await checkPart({ part, page: file, session, rubric, stage: $('stage'), progress: (what) => { $('progress').textContent = `${where}: ${what}`; } })
+        const r = file ? await checkPart({ part, page: file, session, rubric, stage: $('stage'), webgpuHere, progress: (what) => { $('progress').textContent = `${where}: ${what}`; } })
           : { part, verdict: 'fail', reasons: [`no page for ${part} was found in the submission`], api: null };
-        if (file && REFERENCE) {
+        // said once, at the top: the browser, not the student's work
+        if (r.notChecked === 'webgpu' && !results.some((x) => x.notChecked === 'webgpu')) say(NO_WEBGPU_HERE, 'notice');
+        if (file && REFERENCE && r.verdict !== NOT_CHECKED) {
           $('progress').textContent = `${where}: drawing our ${part} beside it`;
           const reference = await drawReference({ result: r, rubric, session: ours, stage: $('stage') }).catch(() => null);
           if (reference) r.images.reference = reference;
         }
         results.push(r);
         $('results').append(card(r, k, PARTS.length, file));
-        session.log.errors.length = session.log.blocked.length = session.log.notes.length = 0;
+        session.clearLog();
       }
     } finally {
       session.close();
       ours.close();
       $('stage').replaceChildren();
     }
-    const passes = results.filter((r) => r.verdict === 'pass').length;
-    $('progress').textContent = `done in ${((performance.now() - started) / 1000).toFixed(0)} s: ${passes} of ${PARTS.length} parts pass`;
+    const passes = results.filter((r) => r.verdict === 'pass').length, unchecked = results.filter((r) => r.verdict === NOT_CHECKED).length;
+    $('progress').textContent = `done in ${((performance.now() - started) / 1000).toFixed(0)} s: ${passes} of ${PARTS.length} parts pass` +
+      `${unchecked ? `, ${unchecked} not checked here` : ''}`;
     window.check = { done: true, parts: results.map(({ part, verdict, reasons, api }) => ({ part, verdict, reasons, api })) };
   } catch (err) {
     $('progress').textContent = '';

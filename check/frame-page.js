@@ -1,8 +1,8 @@
-// The grader's page interface (what tools/grade/drive.js drives) on a same-origin iframe of the
-// check page, as tools/grade/playwright-page.js is on a Playwright page: state, snap, controls,
+// The grader's page interface (what grader/core/gather/ drives) on a same-origin iframe of the
+// check page, as grader/node/playwright-page.js is on a Playwright page: state, snap, controls,
 // click, setValue, press, tick, setNoCull, sources, errors. The frame's scripts were put in place by
-// check/serve.js: window.__grade (tools/grade/instrument.js), window.__webgpuCapture
-// (tools/webgpu-capture.js), window.__checkClock (check/frame-clock.js), window.__checkWatch
+// check/serve.js: window.__grade (grader/browser/instrument.js), window.__webgpuCapture
+// (tools/webgpu-capture.js), window.__checkClock (grader/browser/clock.js), window.__checkWatch
 // (check/frame-watch.js).
 
 /**
@@ -80,6 +80,10 @@ export function framePage(frame, log) {
     /** The frame ran a loop that never returned (check/frame-watch.js stopped it): why, or null. */
     hung() {
       return watch().hung;
+    },
+    /** What the self-check's own instrumentation broke in the frame (check/frame-watch.js). */
+    broken() {
+      return [...(watch().broken || [])];
     },
   };
 }

@@ -9,15 +9,27 @@
 // or the check page started a task there: newTask) throws, the frame is marked hung, and every
 // later loop throws at once.
 
+//
+// What the self-check itself broke is kept apart (watch.broken), for the check page gives no
+// verdict on such a page: a script of the page ran before this one (check/guard.js's stand-in
+// guard was there first), or an error names one of the frame script's globals.
+
 /** The init script. options: { loopSeconds }. Publishes window.__checkWatch. */
 export function frameWatchScript(options) {
   if (window.__checkWatch) return;
-  const watch = { errors: [], blocked: [], hung: null };
+  const watch = { errors: [], blocked: [], hung: null, broken: [] };
   Object.defineProperty(window, '__checkWatch', { value: watch, enumerable: false });
   const text = (x) => (x instanceof Error ? x.message : typeof x === 'string' ? x : (() => { try { return JSON.stringify(x); } catch { return String(x); } })());
+  if (typeof window.__checkLoop === 'function') watch.broken.push('a script of the page ran before the self-check\'s own script');
+  // the frame script's globals (here, grader/browser/clock.js, grader/browser/instrument.js, tools/webgpu-capture.js)
+  const OURS = /\b__(check\w*|grade\w*|webgpuCapture)\b/;
+  const pageError = (message) => {
+    watch.errors.push(`page error: ${message}`);
+    if (OURS.test(message)) watch.broken.push(message);
+  };
 
-  window.addEventListener('error', (e) => { if (e.error !== undefined || e.message) watch.errors.push(`page error: ${e.error ? text(e.error) : e.message}`); });
-  window.addEventListener('unhandledrejection', (e) => watch.errors.push(`page error: ${text(e.reason)}`));
+  window.addEventListener('error', (e) => { if (e.error !== undefined || e.message) pageError(e.error ? text(e.error) : e.message); });
+  window.addEventListener('unhandledrejection', (e) => pageError(text(e.reason)));
   const consoleError = console.error.bind(console);
   console.error = (...args) => {
     watch.errors.push(`console: ${args.map(text).join(' ')}`);
@@ -34,7 +46,7 @@ export function frameWatchScript(options) {
   // ... and no scrollbars (headless Chromium hides them): a canvas sized from clientWidth is as wide
   document.documentElement.style.scrollbarWidth = 'none';
 
-  // the loop guard: a beat on the real clock (taken before check/frame-clock.js stands in for it)
+  // the loop guard: a beat on the real clock (taken before grader/browser/clock.js stands in for it)
   const realSetTimeout = setTimeout.bind(window), realNow = performance.now.bind(performance);
   let beat = 0, seen = -1, taskStart = 0, calls = 0;
   const tick = () => { beat++; realSetTimeout(tick, 100); };

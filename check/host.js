@@ -49,8 +49,9 @@ async function onMessage(e) {
   try {
     const rel = askedPath(e.data.path, session);
     if (rel === null) return port.postMessage({ status: 400, type: 'text/plain', body: 'bad path' });
-    const a = await answer(s.source, rel, s);
+    const a = await answer(s.source, rel, { ...s, module: !!e.data.module });
     if (a.note) s.log.notes.push(a.note);
+    if (a.webgpu) s.log.webgpu = true;
     if (a.missing) s.log.errors.push(`missing file: ${a.missing}`);
     port.postMessage({ status: a.status, type: a.type, body: a.body });
   } catch (err) {
@@ -63,11 +64,12 @@ async function onMessage(e) {
 
 /**
  * A session serving `source` (serve.js: handInSource, siteSource) to frames under BASE + id + '/'.
- * @returns {{ id: string, url: (path: string) => string, log: { errors: string[], blocked: string[], notes: string[] }, idle: (ms: number, max: number) => Promise<void>, close: () => void }}
+ * `log.webgpu`: a page or script served since the last clearLog() calls WebGPU.
+ * @returns {{ id: string, url: (path: string) => string, log: { errors: string[], blocked: string[], notes: string[], webgpu: boolean }, clearLog: () => void, idle: (ms: number, max: number) => Promise<void>, close: () => void }}
  */
 export function openSession(source, frameScript) {
   const id = Array.from(crypto.getRandomValues(new Uint8Array(8)), (b) => b.toString(16).padStart(2, '0')).join('');
-  const s = { source, frameScript, session: id, log: { errors: [], blocked: [], notes: [] }, pending: 0, lastRequest: performance.now() };
+  const s = { source, frameScript, session: id, log: { errors: [], blocked: [], notes: [], webgpu: false }, pending: 0, lastRequest: performance.now() };
   sessions.set(id, s);
   return {
     id,
@@ -77,6 +79,11 @@ export function openSession(source, frameScript) {
     idle: async (quiet = 500, max = 5000) => {
       const until = performance.now() + max;
       while (performance.now() < until && (s.pending || performance.now() - s.lastRequest < quiet)) await new Promise((r) => setTimeout(r, 50));
+    },
+    /** Forgets what the last part's frames did (before the next part). */
+    clearLog: () => {
+      s.log.errors.length = s.log.blocked.length = s.log.notes.length = 0;
+      s.log.webgpu = false;
     },
     close: () => sessions.delete(id),
   };

@@ -3,7 +3,9 @@
 // loaded within the rubric's loadSeconds, then driven and judged by the grader's own modules
 // (gradePart, grader/core/grade-part.js; verdictOf and reasonsOf, grader/core/verdict.js) through the
 // frame's page interface (check/frame-page.js), within the rubric's timeoutSeconds. A part that
-// never returns is stopped and said so. Our own part can be drawn beside it (drawReference).
+// never returns is stopped and said so. A part this browser cannot run (WebGPU here without it), or
+// whose page the self-check's own instrumentation broke, gets no verdict: "not checked here"
+// (check/not-checked.js). Our own part can be drawn beside it (drawReference).
 import { framePage } from './frame-page.js';
 import { frameWatchScript } from './frame-watch.js';
 import { frameClockScript } from '../grader/browser/clock.js';
@@ -12,8 +14,9 @@ import { webgpuCaptureScript } from '../tools/webgpu-capture.js';
 import { gradePart } from '../grader/core/grade-part.js';
 import { verdictOf, reasonsOf } from '../grader/core/verdict.js';
 import { referenceQuery } from '../grader/core/reference-state.js';
+import { NOT_CHECKED, notCheckedHere } from './not-checked.js';
 
-/** The grader's frozen clock: the same wall time as tools/grade (2026-01-05 09:00 UTC). */
+/** The grader's frozen clock: the same wall time as the grader's (2026-01-05 09:00 UTC). */
 export const FROZEN = Date.UTC(2026, 0, 5, 9, 0, 0);
 export const VIEWPORT = 1000;
 
@@ -56,17 +59,22 @@ const timedOut = (rubric, why) => `the page did not finish within the rubric's b
  * Checks one part. Returns what report.json says of it ({ part, verdict, reasons, api, actions,
  * controls, numbers, errors, blocked, notes, seconds }) and its pictures (images: { first, judged,
  * ... } as { width, height, data }).
- * @param {object} o { part, page (path in the hand-in), session (host.js), rubric, stage (element), progress (text) }
+ * A part not checked here has verdict NOT_CHECKED, its reason first, and notChecked: 'webgpu' | 'instrumentation'.
+ * @param {object} o { part, page (path in the hand-in), session (host.js), rubric, stage (element), progress (text),
+ *   webgpuHere (this browser has WebGPU and an adapter) }
  */
-export async function checkPart({ part, page, session, rubric, stage, progress = () => {} }) {
+export async function checkPart({ part, page, session, rubric, stage, progress = () => {}, webgpuHere = true }) {
   const started = performance.now();
   const loadSeconds = rubric.loadSeconds ?? 20;
   let graded = { fail: null, checks: [], actions: [], images: {}, busy: 0 };
   progress(`opening ${page}`);
   const { frame, how } = await load(stage, session.url(page), loadSeconds);
   const fp = framePage(frame, session.log);
+  const broken = [];
   try {
-    if (how !== 'load' || fp.hung()) {
+    if (how === 'load' && !fp.hung() && !frame.contentWindow.__checkWatch) {
+      broken.push('the self-check\'s own script did not run in the page');
+    } else if (how !== 'load' || fp.hung()) {
       const notLoaded = `the page could not be opened: it did not finish loading in ${loadSeconds} s (a script that never returns?)`;
       graded.fail = fp.hung() ? `${notLoaded}: ${fp.hung()}` : notLoaded;
     } else {
@@ -74,33 +82,40 @@ export async function checkPart({ part, page, session, rubric, stage, progress =
       frame.contentWindow.__checkWatch.setLoopSeconds(rubric.timeoutSeconds ?? 90);
       let timer;
       const bound = new Promise((resolve) => { timer = setTimeout(() => resolve('timeout'), (rubric.timeoutSeconds ?? 90) * 1000); });
-      // the grader's outer bound (as grade.spec.js's): past it the part is too slow to judge here
+      // a loop stopped after loading (in a promise, a frame, a handler) is a page that never returns, as
+      // under the grader, whatever was judged meanwhile; the grader's outer bound (as grade.spec.js's):
+      // past it the part is too slow to judge here
       const deadline = Date.now() + 0.85 * rubric.timeoutSeconds * 1000;
-      const grading = gradePart(fp, { part, rubric, progress, deadline });
+      const grading = fp.hung() ? Promise.reject(new Error('hung')) : gradePart(fp, { part, rubric, progress, deadline });
       grading.catch(() => {}); // after the time bound the frame is gone, and so is the grading
       try {
         const r = await Promise.race([grading, bound]);
         if (r === 'timeout') graded.fail = timedOut(rubric);
         else graded = r;
       } catch (err) {
-        if (fp.hung()) graded.fail = timedOut(rubric, fp.hung());
         // the grader's own trouble with this page: never a pass on it, a teacher looks (as grade.spec.js)
-        else graded.checks = [{ level: 'review', reason: `the grader could not finish on this page: ${err.message.split('\n')[0]}` }];
+        if (!fp.hung()) graded.checks = [{ level: 'review', reason: `the grader could not finish on this page: ${err.message.split('\n')[0]}` }];
       } finally {
         clearTimeout(timer);
       }
+      if (fp.hung()) graded.fail = timedOut(rubric, fp.hung());
     }
   } finally {
     frame.remove();
   }
   const seconds = (performance.now() - started) / 1000;
   const errors = fp.errors();
-  return {
+  const result = {
     part, file: page, api: graded.api ?? null, canvas: graded.canvas, controls: graded.controls || {}, numbers: graded.numbers || {},
     verdict: verdictOf(graded.checks, graded.fail),
     reasons: reasonsOf({ fail: graded.fail, checks: graded.checks, pageErrors: errors.filter((e) => /page error/.test(e)) }),
     actions: graded.actions || [], images: graded.images || {}, errors, blocked: fp.blocked(), notes: [...session.log.notes], seconds,
   };
+  // what the grader would have said stays below, for the student to read, but is no verdict
+  const usedWebGPU = session.log.webgpu || graded.api === 'webgpu' || errors.some((e) => /requestAdapter|navigator\.gpu|\bgpu is (undefined|null)/.test(e));
+  const not = notCheckedHere({ webgpuHere, usedWebGPU, api: graded.api, broken: [...broken, ...fp.broken()] });
+  if (not) Object.assign(result, { verdict: NOT_CHECKED, notChecked: not.why, reasons: [not.reason, ...result.reasons.map((r) => `(the check saw: ${r})`)] });
+  return result;
 }
 
 /**

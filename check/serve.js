@@ -2,9 +2,11 @@
 // requests): a path asked for, answered from the dropped files as the grader's server answers it.
 // A folder gives its index.html; a file not where the page asked (other letter case, a folder too
 // far up) is found by findStandIn and said in the notes; HTML gets the frame's instrumentation as
-// its first script; JavaScript gets the loop guard. Nothing else is ever read.
+// its first script; JavaScript gets the loop guard (inline scripts, classic scripts, modules and
+// what they import alike). Nothing else is ever read.
 import { findStandIn, typeOf } from '../grader/core/standin.js';
 import { guardInlineScripts, guardLoops } from './guard.js';
+import { usesWebGPU } from './not-checked.js';
 
 /** The URL path under which the frames live: BASE + session + '/' + the hand-in's own path. */
 export const BASE = '/check/run/';
@@ -31,12 +33,20 @@ export function askedPath(urlPath, session) {
   return segments.slice(k).join('/') + (rel.endsWith('/') && segments.length > k ? '/' : '');
 }
 
-/** Puts `<script src=FRAME_SCRIPT>` first in an HTML page: after <head>, else <html>, else the doctype. */
+/**
+ * Puts `<script src=FRAME_SCRIPT>` before every script of an HTML page: after <head>, else <html>,
+ * else the doctype, else at the very start; a tag that comes after the page's first script (a
+ * page that begins with its scripts and opens <head> below them), or that stands in a comment,
+ * is passed over.
+ */
 export function injectFrameScript(html, src) {
   const tag = `<script src="${src}"></script>`;
+  const plain = html.replace(/<!--[\s\S]*?(?:-->|$)/g, (c) => ' '.repeat(c.length)); // comments blanked, positions kept
+  const firstScript = plain.search(/<script\b/i);
   for (const re of [/<head\b[^>]*>/i, /<html\b[^>]*>/i, /<!doctype[^>]*>/i]) {
-    const m = re.exec(html);
-    if (m) return html.slice(0, m.index + m[0].length) + tag + html.slice(m.index + m[0].length);
+    const m = re.exec(plain);
+    const at = m ? m.index + m[0].length : -1;
+    if (m && (firstScript < 0 || at <= firstScript)) return html.slice(0, at) + tag + html.slice(at);
   }
   return tag + html;
 }
@@ -59,13 +69,15 @@ export function siteSource(root) {
 }
 
 /**
- * The answer to a frame's request for `rel` (a path inside the source).
+ * The answer to a frame's request for `rel` (a path inside the source). `module`: the frame asked
+ * for a module script (check/sw.js: a script fetched in cors mode, as a module's imports are).
+ * `webgpu`: the page or script served calls WebGPU.
  * @param {{ paths: string[], read: (path: string) => Promise<Blob|null> }} source
  * @param {string} rel
- * @param {{ frameScript: string, session: string }} how
- * @returns {Promise<{ status: number, type: string, body: string|Blob, note?: string, missing?: string }>}
+ * @param {{ frameScript: string, session: string, module?: boolean }} how
+ * @returns {Promise<{ status: number, type: string, body: string|Blob, note?: string, missing?: string, webgpu?: boolean }>}
  */
-export async function answer(source, rel, { frameScript, session }) {
+export async function answer(source, rel, { frameScript, session, module = false }) {
   if (rel === FRAME_SCRIPT) return { status: 200, type: 'text/javascript', body: frameScript };
   let file = rel.replace(/\/+$/, '');
   const isFolder = (f) => !source.paths.includes(f) && source.paths.some((k) => k.startsWith(`${f}/`));
@@ -82,8 +94,11 @@ export async function answer(source, rel, { frameScript, session }) {
   const type = typeOf(file);
   if (type === 'text/html') {
     const html = await blob.text();
-    return { status: 200, type: 'text/html', note, body: injectFrameScript(guardInlineScripts(html), `${BASE}${session}/${FRAME_SCRIPT}`) };
+    return { status: 200, type: 'text/html', note, webgpu: usesWebGPU(html), body: injectFrameScript(guardInlineScripts(html), `${BASE}${session}/${FRAME_SCRIPT}`) };
   }
-  if (type === 'text/javascript') return { status: 200, type, note, body: guardLoops(await blob.text(), { module: /\.mjs$/i.test(file) }) };
+  if (type === 'text/javascript') {
+    const js = await blob.text();
+    return { status: 200, type, note, webgpu: usesWebGPU(js), body: guardLoops(js, { module: module || /\.mjs$/i.test(file) }) };
+  }
   return { status: 200, type, note, body: blob };
 }

@@ -49,7 +49,9 @@ async function respond(event) {
     if (!/^(data|blob):/.test(url.protocol)) ask(session, { type: 'check-blocked', url: url.href, navigation: event.request.mode === 'navigate' }, 2000);
     return Response.error();
   }
-  const a = await ask(session, { type: 'check-file', path: url.pathname });
+  // a module script (and what a module imports) is fetched in cors mode, a classic script in no-cors
+  const module = event.request.destination === 'script' && event.request.mode === 'cors';
+  const a = await ask(session, { type: 'check-file', path: url.pathname, module });
   if (!a) return new Response('the check page that opened this part is gone', { status: 503, headers: { 'Content-Type': 'text/plain' } });
   return new Response(a.body, { status: a.status, headers: { 'Content-Type': a.type, 'Cache-Control': 'no-store' } });
 }

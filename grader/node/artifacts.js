@@ -56,9 +56,9 @@ export function readArtifact(dir) {
 export function listArtifacts(root) {
   if (!existsSync(root)) return [];
   const out = [];
-  for (const s of readdirSync(root).sort()) {
+  for (const s of readdirSync(root, { withFileTypes: true }).filter((e) => e.isDirectory()).map((e) => e.name).sort()) {
     const sd = path.join(root, s);
-    for (const p of existsSync(sd) ? readdirSync(sd).sort() : []) {
+    for (const p of readdirSync(sd).sort()) {
       if (existsSync(path.join(sd, p, 'facts.json'))) out.push({ submission: s, part: p, dir: path.join(sd, p) });
     }
   }

@@ -9,7 +9,6 @@
 //   hand-ins and ../shared/handins/ when it is there, against `npm run grade` on the same folders.
 // Also: the front page's step pictures are the steps' renders; bad input gets a clear message and
 // leaves the page usable; axe finds no serious or critical violation.
-import { spawnSync } from 'node:child_process';
 import { cpSync, existsSync, mkdirSync, mkdtempSync, readFileSync, readdirSync, statSync, writeFileSync } from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
@@ -23,20 +22,12 @@ import { CHROMIUM, CHROMIUM_ARGS } from '../../tools/browser.js';
 import { WEBGPU_ARGS } from '../../tools/webgpu-capture.js';
 import { STEPS, maxDifference, renderThumbnails, thumbnailPath } from '../../tools/thumbnails.js';
 import { readPNG } from '../../tools/reference/png.js';
+import { checkFolder, gradeVerdicts } from './check-helpers.js';
 
 const ALL = !!process.env.CHECK_ALL;
 const SHARED = path.resolve('../shared/handins');
 // eslint-disable-next-line no-empty-pattern -- Playwright wants the fixtures argument destructured
 test.beforeEach(({}, testInfo) => test.skip(testInfo.project.name !== 'webgl2', 'its own Chromium with WebGPU; once is enough'));
-
-/** Picks `dir` on the check page and waits for window.check.done; returns window.check and the seconds it took. */
-async function checkFolder(page, dir, { timeout = 300_000, query = '' } = {}) {
-  await page.goto(`/check/${query}`);
-  const started = Date.now();
-  await page.locator('#folder').setInputFiles(dir);
-  await page.waitForFunction(() => window.check && window.check.done, null, { timeout, polling: 500 });
-  return { check: await page.evaluate(() => window.check), seconds: (Date.now() - started) / 1000 };
-}
 
 /** No serious or critical violation axe finds on the page as it is now. */
 async function expectAccessible(page, what) {
@@ -77,7 +68,6 @@ test('bad input gets a clear message and the page stays usable; a zip is unpacke
   const message = () => page.locator('#messages').innerText();
 
   await page.goto('/check/');
-  // the test browser here has no WebGPU adapter: said, not hidden
   await page.locator('#folder').setInputFiles(path.join(dir, 'notes'));
   await page.waitForFunction(() => window.check.done);
   expect(await message()).toMatch(/No HTML page in what you dropped \(1 files\)/);
@@ -97,7 +87,8 @@ test('bad input gets a clear message and the page stays usable; a zip is unpacke
   expect(check.parts[1].reasons[0]).toBe('no page for WP04P2 was found in the submission');
   await expect(page.locator('#card-WP04P1 .slide')).toContainText('Draw a solid sphere');
   await expect(page.locator('#card-WP04P1').getByRole('link', { name: /Our WP04P1/ })).toHaveAttribute('href', '../WP04P1/');
-  await expect(page.locator('#messages')).toContainText('no WebGPU');
+  // no WebGPU adapter in this Chromium, and none asked for: nothing said of it (check-guard.spec.js: a WebGPU part here)
+  await expect(page.locator('#messages')).toBeEmpty();
   await expect(page.locator('#card-WP04P1')).toContainText('request: https://cdn.example.com/lib.js');
   await expect(page.locator('#card-WP04P1')).toContainText('missing file: /grader/core/rubric.json');
 
@@ -123,19 +114,6 @@ function theClass() {
   }
   const names = readdirSync(path.join(dir, 'class')).filter((n) => statSync(path.join(dir, 'class', n)).isDirectory()).sort();
   return { dir, labels, names };
-}
-
-/** `npm run grade -- --batch` on `names` of the class: { name: { part: { verdict, reasons } } }. */
-function gradeVerdicts(dir, names) {
-  const batch = path.join(dir, 'batch');
-  for (const n of names) cpSync(path.join(dir, 'class', n), path.join(batch, n), { recursive: true });
-  const rubric = path.join(dir, 'rubric.json');
-  writeFileSync(rubric, JSON.stringify({ reference: false }));
-  const run = spawnSync(process.execPath, ['grader/node/grade.js', '--batch', batch, '--rubric', rubric, '--out', path.join(dir, 'report')],
-    { encoding: 'utf8', timeout: 3_000_000 });
-  expect(run.status, run.stderr + run.stdout.slice(-2000)).toBe(0);
-  const report = JSON.parse(readFileSync(path.join(dir, 'report', 'report.json'), 'utf8'));
-  return Object.fromEntries(report.submissions.map((s) => [s.name, Object.fromEntries(s.parts.map((p) => [p.part, p]))]));
 }
 
 test('the check page gives the grader\'s verdicts: our own site passes in WebGL and WebGPU, mistakes get their reviews', async () => {

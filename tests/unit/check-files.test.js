@@ -4,7 +4,7 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { CheckInputError, MAX_BYTES, handInFrom, partsOfHandIn } from '../../check/files.js';
 import { askedPath, injectFrameScript } from '../../check/serve.js';
-import { guardLoops, guardInlineScripts } from '../../check/guard.js';
+import { STAND_IN, guardLoops, guardInlineScripts } from '../../check/guard.js';
 
 const blob = (size = 10) => ({ size });
 const entries = (paths, size) => paths.map((p) => ({ path: p, blob: blob(size) }));
@@ -42,11 +42,12 @@ test('a frame\'s paths: its session\'s folder, and root-absolute or one folder t
 test('the frame script goes first; every loop gets the guard, shaders and other scripts stay', () => {
   assert.equal(injectFrameScript('<!doctype html><html><head><title>t</title>', '/f.js'), '<!doctype html><html><head><script src="/f.js"></script><title>t</title>');
   assert.equal(injectFrameScript('<p>bare', '/f.js'), '<script src="/f.js"></script><p>bare');
-  assert.equal(guardLoops('while (true) x++;'), 'while (true) {__checkLoop();x++;}');
-  assert.equal(guardLoops('for (;;) { f(); }'), 'for (;;) {__checkLoop(); f(); }');
+  assert.equal(guardLoops('while (true) x++;'), `${STAND_IN}while (true) {__checkLoop();x++;}`);
+  assert.equal(guardLoops('for (;;) { f(); }'), `${STAND_IN}for (;;) {__checkLoop(); f(); }`);
   assert.equal(guardLoops('let a = 1; a +'), 'let a = 1; a +'); // does not parse: as it is
+  assert.equal(guardLoops('let a = 1;'), 'let a = 1;'); // no loop: as it is
   const html = '<script type="x-shader/x-vertex">for (int i = 0; i < 3; i++) {}</script><script>do { i++ } while (i < 3)</script>';
-  assert.equal(guardInlineScripts(html), '<script type="x-shader/x-vertex">for (int i = 0; i < 3; i++) {}</script><script>do {__checkLoop(); i++ } while (i < 3)</script>');
+  assert.equal(guardInlineScripts(html), `<script type="x-shader/x-vertex">for (int i = 0; i < 3; i++) {}</script><script>${STAND_IN}do {__checkLoop(); i++ } while (i < 3)</script>`);
 });
 
 test('a review or a fail names the slide sentence it misses', async () => {

@@ -18,14 +18,15 @@ export function pointLightFit(pts, T) {
   if (use0.filter(Boolean).length < 50) return null;
   for (const s of pts) s.y = luminance(s.c);
   const DIST = [1.25, 1.5, 1.75, 2, 2.5, 3, 4, 5, 7, 10, 20, 1e4];
-  const fit = (use, l, d, falloff) => {
+  // (`keep`: the model's term at each sample, kept for the best fit only)
+  const fit = (use, l, d, falloff, keep = false) => {
     let n = 0, sx = 0, sy = 0, sxx = 0, sxy = 0, syy = 0;
-    const xs = new Float64Array(pts.length);
+    const xs = keep ? new Float64Array(pts.length) : null;
     for (let i = 0; i < pts.length; i++) {
       if (!use[i]) continue;
       const s = pts[i];
       const x = pointLightTerm(s.n, l, d, falloff);
-      xs[i] = x;
+      if (keep) xs[i] = x;
       n++; sx += x; sy += s.y; sxx += x * x; sxy += x * s.y; syy += s.y * s.y;
     }
     const den = n * sxx - sx * sx;
@@ -54,7 +55,7 @@ export function pointLightFit(pts, T) {
         if (f.b > 0 && f.sse < best.sse) best = f;
       }
     }
-    return best;
+    return fit(use, best.l, best.d, falloff, true);
   };
   let use = use0;
   let none = null, inv = null;
