@@ -7,8 +7,7 @@ import assert from 'node:assert/strict';
 import { existsSync, readFileSync } from 'node:fs';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
-import { readArtifact } from '../../grader/node/artifacts.js';
-import { judged } from '../../grader/core/grade-part.js';
+import { auditDirs } from '../../grader/node/audit-pool.js';
 import { verdictOf, reasonsOf } from '../../grader/core/verdict.js';
 import { mergeRubric } from '../../grader/core/rubric.js';
 
@@ -20,28 +19,36 @@ const rubric = mergeRubric(shipped, read(path.join(here, '../fixtures/test-rubri
 const labels = read(path.join(RECORDED, 'labels.json'));
 const results = read(path.join(RECORDED, 'results.json'));
 
+const labelled = Object.entries(labels).flatMap(([name, parts]) => Object.entries(parts).map(([part, label]) => ({ name, part, label })));
+const dirOf = (name, part) => path.join(RECORDED, name, part);
+const recorded = labelled.map(({ name, part }) => dirOf(name, part)).filter((d) => existsSync(path.join(d, 'facts.json')));
+// the class judged once under the test rubric (on worker threads), and again under others where a test asks
+const audits = new Map();
+async function auditAll(r = rubric, dirs = recorded) {
+  if (!audits.has(r)) audits.set(r, await auditDirs(dirs, r));
+  return audits.get(r);
+}
+
 /** A recorded part judged under `r`: { verdict, reasons, api }, as report.json gives them. */
-function grade(name, part, r = rubric) {
-  const dir = path.join(RECORDED, name, part);
+async function grade(name, part, r = rubric) {
+  const dir = dirOf(name, part);
   if (!existsSync(path.join(dir, 'facts.json'))) return results[name] && results[name][part];
-  const artifact = readArtifact(dir);
-  const j = judged(artifact, r);
-  const pageErrors = (artifact.facts.errors || []).filter((e) => /page error/.test(e));
+  const j = (await auditAll(r, r === rubric ? recorded : [dir])).get(dir) || (await auditDirs([dir], r)).get(dir);
+  const pageErrors = j.errors.filter((e) => /page error/.test(e));
   return { verdict: verdictOf(j.checks, j.fail), reasons: reasonsOf({ fail: j.fail, checks: j.checks, pageErrors }), api: j.api };
 }
 
-const labelled = Object.entries(labels).flatMap(([name, parts]) => Object.entries(parts).map(([part, label]) => ({ name, part, label })));
-
-test('the recorded class is whole: every labelled part has an artifact or a result', () => {
+test('the recorded class is whole: every labelled part has an artifact or a result', async () => {
   assert.ok(labelled.length >= 100, `${labelled.length} labelled parts`);
-  const lost = labelled.filter(({ name, part }) => !grade(name, part)).map(({ name, part }) => `${name} ${part}`);
+  const lost = [];
+  for (const { name, part } of labelled) if (!await grade(name, part)) lost.push(`${name} ${part}`);
   assert.deepEqual(lost, []);
 });
 
-test('every labelled part of the fixture class gets the verdict a teacher gives, with the reason, and says its API', () => {
+test('every labelled part of the fixture class gets the verdict a teacher gives, with the reason, and says its API', async () => {
   const disagree = [];
   for (const { name, part, label } of labelled) {
-    const got = grade(name, part);
+    const got = await grade(name, part);
     if (!got) continue;
     const reasonOk = !label.reason || got.reasons.some((r) => new RegExp(label.reason).test(r));
     if (got.verdict !== label.verdict || !reasonOk || got.api !== label.api) {
@@ -52,20 +59,22 @@ test('every labelled part of the fixture class gets the verdict a teacher gives,
   assert.deepEqual(disagree, []);
 });
 
-test('a rubric with mistakeVerdict "fail" fails the parts that draw but miss a point; broken parts fail either way', () => {
+test('a rubric with mistakeVerdict "fail" fails the parts that draw but miss a point; broken parts fail either way', async () => {
   // cy: one mistake a part (P1 colour = p, P2 no depth test, P3 no orbit button, P4 no highlight, P5 Gouraud)
   const strict = mergeRubric(rubric, { mistakeVerdict: 'fail' });
   const parts = ['WP04P1', 'WP04P2', 'WP04P3', 'WP04P4', 'WP04P5'];
-  assert.deepEqual(parts.map((p) => grade('cy', p, strict).verdict), ['fail', 'fail', 'review', 'fail', 'fail']);
-  assert.deepEqual(parts.map((p) => grade('cy', p).verdict), ['review', 'review', 'review', 'review', 'review']);
-  assert.deepEqual(['WP04P1', 'WP04P2', 'WP04P5'].map((p) => grade('eve', p).verdict), ['fail', 'fail', 'fail']);
+  const verdicts = async (name, ps, r) => Promise.all(ps.map(async (p) => (await grade(name, p, r)).verdict));
+  await auditAll(strict, parts.map((p) => dirOf('cy', p)));
+  assert.deepEqual(await verdicts('cy', parts, strict), ['fail', 'fail', 'review', 'fail', 'fail']);
+  assert.deepEqual(await verdicts('cy', parts), ['review', 'review', 'review', 'review', 'review']);
+  assert.deepEqual(await verdicts('eve', ['WP04P1', 'WP04P2', 'WP04P5']), ['fail', 'fail', 'fail']);
 });
 
-test('a threshold changed in the rubric changes the verdicts it should, and only by judging again', () => {
+test('a threshold changed in the rubric changes the verdicts it should, and only by judging again', async () => {
   // the sphere's roundness bound made impossibly strict: every part that drew a sphere is no longer round
   const strict = mergeRubric(rubric, { thresholds: { roundness: 0.0001 } });
-  const ada = grade('ada', 'WP04P1', strict);
+  const ada = await grade('ada', 'WP04P1', strict);
   assert.equal(ada.verdict, 'review');
   assert.ok(ada.reasons.some((r) => /not a round closed sphere/.test(r)), ada.reasons.join(' | '));
-  assert.equal(grade('ada', 'WP04P1').verdict, 'pass');
+  assert.equal((await grade('ada', 'WP04P1')).verdict, 'pass');
 });
