@@ -20,6 +20,11 @@ export default [
     files: ['grader/node/**'],
     languageOptions: { globals: { ...globals.node, ...globals.browser } },
   },
+  // the check page is a site page: it takes the grader from grader/, never from the command-line tools
+  {
+    files: ['check/**'],
+    rules: { 'no-restricted-imports': ['error', { patterns: [{ regex: '(^|/)tools/', message: 'the check page imports the grader from grader/, never from tools/' }] }] },
+  },
   // the grader's core runs in Node (npm run grade) and in the browser (the check page) alike: no
   // Node module, no DOM; only the language and the timers both have
   {

@@ -5,7 +5,7 @@
 // launches Firefox itself (puppeteer-core over WebDriver BiDi: tests/browser/firefox-fixtures.js).
 import { defineConfig } from '@playwright/test';
 import { CHROMIUM, CHROMIUM_ARGS } from './tools/browser.js';
-import { WEBGPU_ARGS } from './tools/webgpu-capture.js';
+import { WEBGPU_ARGS } from './grader/browser/webgpu-capture.js';
 
 const PORT = Number(process.env.TEST_PORT || 4173);
 

@@ -2,7 +2,7 @@
 // check page, as grader/node/playwright-page.js is on a Playwright page: state, snap, controls,
 // click, setValue, press, tick, setNoCull, sources, errors. The frame's scripts were put in place by
 // check/serve.js: window.__grade (grader/browser/instrument.js), window.__webgpuCapture
-// (tools/webgpu-capture.js), window.__checkClock (grader/browser/clock.js), window.__checkWatch
+// (grader/browser/webgpu-capture.js), window.__checkClock (grader/browser/clock.js), window.__checkWatch
 // (check/frame-watch.js).
 
 /**
@@ -17,7 +17,7 @@ export function framePage(frame, log) {
   let record = null;
   const watch = () => (record ??= (frame.contentWindow && frame.contentWindow.__checkWatch) || null) || { errors: [], blocked: [], hung: null };
   const plain = (x) => JSON.parse(JSON.stringify(x)); // out of the frame's realm
-  /** Waits for the last WebGPU frame's copy to the canvas (tools/webgpu-capture.js). */
+  /** Waits for the last WebGPU frame's copy to the canvas (grader/browser/webgpu-capture.js). */
   const settle = async () => {
     const s = win().__webgpuCapture;
     for (let k = 0; s && k < 100 && s.pending; k++) await s.pending;

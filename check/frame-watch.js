@@ -21,7 +21,7 @@ export function frameWatchScript(options) {
   Object.defineProperty(window, '__checkWatch', { value: watch, enumerable: false });
   const text = (x) => (x instanceof Error ? x.message : typeof x === 'string' ? x : (() => { try { return JSON.stringify(x); } catch { return String(x); } })());
   if (typeof window.__checkLoop === 'function') watch.broken.push('a script of the page ran before the self-check\'s own script');
-  // the frame script's globals (here, grader/browser/clock.js, grader/browser/instrument.js, tools/webgpu-capture.js)
+  // the frame script's globals (here, grader/browser/clock.js, grader/browser/instrument.js, grader/browser/webgpu-capture.js)
   const OURS = /\b__(check\w*|grade\w*|webgpuCapture)\b/;
   const pageError = (message) => {
     watch.errors.push(`page error: ${message}`);

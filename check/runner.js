@@ -10,7 +10,7 @@ import { framePage } from './frame-page.js';
 import { frameWatchScript } from './frame-watch.js';
 import { frameClockScript } from '../grader/browser/clock.js';
 import { instrumentScript } from '../grader/browser/instrument.js';
-import { webgpuCaptureScript } from '../tools/webgpu-capture.js';
+import { webgpuCaptureScript } from '../grader/browser/webgpu-capture.js';
 import { gradePart } from '../grader/core/grade-part.js';
 import { verdictOf, reasonsOf } from '../grader/core/verdict.js';
 import { referenceQuery } from '../grader/core/reference-state.js';

@@ -22,7 +22,7 @@ import { compareToReference, shadingError, silhouetteErrorPx } from './reference
 import { toRGBA8 } from './reference/png.js';
 import { PNG } from 'pngjs';
 import { CHROMIUM_ARGS, canvasScreenshot, launchChromium, startServer } from './browser.js';
-import { WEBGPU_ARGS } from './webgpu-capture.js';
+import { WEBGPU_ARGS } from '../grader/browser/webgpu-capture.js';
 import { parseOptions, progressLine, runCommand } from './cli.js';
 import { chooseLevel } from '../common/sphere.js';
 import { EDGE_CASES, STEP } from './edge-cases.js';

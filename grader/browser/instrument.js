@@ -2,7 +2,7 @@
 // scripts, changes none of its files): which API the page asked for, shader and adapter
 // failures, which events each control listens to, and a read-back of the canvas in either API
 // (WebGL contexts get preserveDrawingBuffer so the last frame can be read at any time; WebGPU
-// frames come from tools/webgpu-capture.js, which must be added first).
+// frames come from grader/browser/webgpu-capture.js, which must be added first).
 export function instrumentScript() {
   const g = { api: null, apis: [], draws: 0, vertices: 0, pending: 0, shaderErrors: [], gpuErrors: [], adapter: undefined, wgsl: [], glsl: [], faces: { depthTest: false, culling: false, cullMode: null }, noCull: false, cullOn: false };
   Object.defineProperty(window, '__grade', { value: g, enumerable: false });

@@ -3,7 +3,7 @@
 // frames run, capture. The check page has its own implementation of the same interface for a
 // part in an iframe; drive.js knows neither.
 import { PNG } from 'pngjs';
-import { webgpuCaptureScript, readWebGPUFrame } from '../../tools/webgpu-capture.js';
+import { webgpuCaptureScript, readWebGPUFrame } from '../browser/webgpu-capture.js';
 import { instrumentScript } from '../browser/instrument.js';
 import { frameClockScript } from '../browser/clock.js';
 import { serveSubmission } from './serve-submission.js';

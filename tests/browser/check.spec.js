@@ -19,7 +19,7 @@ import { PNG } from 'pngjs';
 import { buildClass } from '../fixtures/build.js';
 import { copyHandins } from '../fixtures/handins.js';
 import { CHROMIUM, CHROMIUM_ARGS } from '../../tools/browser.js';
-import { WEBGPU_ARGS } from '../../tools/webgpu-capture.js';
+import { WEBGPU_ARGS } from '../../grader/browser/webgpu-capture.js';
 import { STEPS, maxDifference, renderThumbnails, thumbnailPath } from '../../tools/thumbnails.js';
 import { readPNG } from '../../tools/reference/png.js';
 import { checkFolder, gradeVerdicts } from './check-helpers.js';

@@ -3,7 +3,7 @@
 // - counts WebGL calls (createBuffer, bufferData, createProgram, ...) through wrappers installed
 //   on the context prototypes before any page script runs; under WebGPU the same names count the
 //   calls that do the same job (a vertex buffer made or written, a render pipeline, a WGSL module);
-// - under WebGPU sees the canvas through tools/webgpu-capture.js (headless Chromium cannot present
+// - under WebGPU sees the canvas through grader/browser/webgpu-capture.js (headless Chromium cannot present
 //   a WebGPU canvas: the capture stands in for its context and copies each frame to a 2D canvas);
 // - fails on any page error, console error or gl.getError() other than NO_ERROR, unless the test
 //   says which errors it expects (page.expectProblems(/regex/)).
@@ -12,7 +12,7 @@ import { PNG } from 'pngjs';
 import { PIN_CANVAS_PATH, canvasScreenshot } from '../../tools/browser.js';
 import { renderReference } from '../../tools/reference/render.js';
 import { compareToReference } from '../../tools/reference/measure.js';
-import { readWebGPUFrame, webgpuCaptureScript } from '../../tools/webgpu-capture.js';
+import { readWebGPUFrame, webgpuCaptureScript } from '../../grader/browser/webgpu-capture.js';
 
 /** The init script that counts WebGL (WebGPU) calls and keeps the contexts: window.__gl. */
 export function instrument() {

@@ -12,7 +12,7 @@ import { readArtifact } from '../../grader/node/artifacts.js';
 import { findParts, partNumber } from '../../grader/node/parts.js';
 import { partOpener } from '../../grader/node/playwright-page.js';
 import { CHROMIUM, CHROMIUM_ARGS } from '../../tools/browser.js';
-import { WEBGPU_ARGS, webgpuCaptureScript, readWebGPUFrame } from '../../tools/webgpu-capture.js';
+import { WEBGPU_ARGS, webgpuCaptureScript, readWebGPUFrame } from '../../grader/browser/webgpu-capture.js';
 
 const RECORDED = path.resolve(import.meta.dirname, '../fixtures/artifacts');
 

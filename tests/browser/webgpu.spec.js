@@ -2,7 +2,7 @@
 // step draws the same pixels as its WebGL 2 twin at several orbit angles and levels; the toggles of
 // WP04P2 are pipelines made once; multisampling is a parameter.
 import { test, expect, open, scene, canvasPixels, andDraw, anotherPage } from './fixtures.js';
-import { readWebGPUFrame } from '../../tools/webgpu-capture.js';
+import { readWebGPUFrame } from '../../grader/browser/webgpu-capture.js';
 
 test.beforeEach(({ api }) => {
   test.skip(api !== 'webgpu', 'WebGPU only');
