@@ -10,7 +10,8 @@ import { parseOptions, UsageError } from './cli.js';
 
 const HELP = `usage: node tools/compare-gradings.js --a OUT1 --b OUT2
 Compares two grading out folders part by part: verdicts and reasons (parts/), facts and pictures
-(artifacts/). Prints each difference and a summary.
+(artifacts/; a folder of artifacts alone, such as tests/fixtures/artifacts, compares its artifacts).
+Prints each difference and a summary.
 exit codes: 0 the same, 1 they differ, 2 bad usage`;
 
 function results(out) {
@@ -48,10 +49,12 @@ function main() {
     if (JSON.stringify(a.reasons) !== JSON.stringify(b.reasons)) diffs.push(`${k}: reasons differ:\n    ${a.reasons.join(' | ')}\n    ${b.reasons.join(' | ')}`);
   }
   let parts = 0, pictures = 0;
-  const arts = listArtifacts(path.join(o.a, 'artifacts'));
+  // (a folder of artifacts, such as tests/fixtures/artifacts, compares as it is)
+  const artifactsOf = (out) => (existsSync(path.join(out, 'artifacts')) ? path.join(out, 'artifacts') : out);
+  const arts = listArtifacts(artifactsOf(o.a));
   for (const [k, { submission, part, dir }] of arts.entries()) {
     process.stderr.write(`\rcompare-gradings: artifact ${k + 1} of ${arts.length}`);
-    const a = readArtifact(dir), b = readArtifact(path.join(o.b, 'artifacts', submission, part));
+    const a = readArtifact(dir), b = readArtifact(path.join(artifactsOf(o.b), submission, part));
     if (!b) { diffs.push(`${submission} ${part}: no artifact in ${o.b}`); continue; }
     parts++;
     if (JSON.stringify(a.facts) !== JSON.stringify(b.facts)) diffs.push(`${submission} ${part}: facts differ`);

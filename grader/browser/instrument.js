@@ -112,6 +112,11 @@ export function instrumentScript() {
   if (window.fetch) {
     const realFetch = window.fetch;
     window.fetch = function (...a) { return awaited(realFetch.apply(this, a)); };
+    // (a response's body is read in real time too)
+    for (const k of ['text', 'json', 'arrayBuffer', 'blob']) {
+      const read = Response.prototype[k];
+      if (read) Response.prototype[k] = function (...a) { return awaited(read.apply(this, a)); };
+    }
   }
   if (window.XMLHttpRequest) {
     const send = XMLHttpRequest.prototype.send;
@@ -150,6 +155,10 @@ export function instrumentScript() {
     };
     const createRenderPipeline = GPUDevice.prototype.createRenderPipeline, createRenderPipelineAsync = GPUDevice.prototype.createRenderPipelineAsync;
     const mapAsync = GPUBuffer.prototype.mapAsync, onSubmittedWorkDone = GPUQueue.prototype.onSubmittedWorkDone;
+    // a shader's compilation messages and an error scope are answered in real time
+    const getCompilationInfo = GPUShaderModule.prototype.getCompilationInfo, popErrorScope = GPUDevice.prototype.popErrorScope;
+    GPUShaderModule.prototype.getCompilationInfo = function (...a) { return awaited(getCompilationInfo.apply(this, a)); };
+    GPUDevice.prototype.popErrorScope = function (...a) { return awaited(popErrorScope.apply(this, a)); };
     GPUBuffer.prototype.mapAsync = function (...a) { return awaited(mapAsync.apply(this, a)); };
     GPUQueue.prototype.onSubmittedWorkDone = function (...a) { return awaited(onSubmittedWorkDone.apply(this, a)); };
     const seePipeline = (desc) => {
