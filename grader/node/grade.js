@@ -118,7 +118,7 @@ async function main() {
   if (o.auditOnly) {
     if (!existsSync(path.join(out, 'parts'))) fail(`nothing graded in ${out}: --audit-only judges a class graded before (its artifacts/ and parts/)`);
     const t0 = Date.now();
-    const { audited, without } = await auditAgain(out, rubric, (k, n) => process.stdout.write(`\rgrade: audited ${k} of ${n} parts`));
+    const { audited, without } = await auditAgain(out, rubric, (k, n) => { if (process.stdout.isTTY) process.stdout.write(`\rgrade: audited ${k} of ${n} parts`); });
     console.log(`\rgrade: audited ${audited} parts from their artifacts in ${((Date.now() - t0) / 1000).toFixed(1)} s${without.length ? `; ${without.length} without an artifact kept their verdict (${without.join(', ')})` : ''}`);
   } else if (!o.reportOnly && !o.similarityOnly) {
     if (!existsSync(CHROMIUM)) fail(`Chromium is missing at ${CHROMIUM}: run "sudo apt-get update && sudo apt-get install -y chromium"`);
