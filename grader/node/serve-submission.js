@@ -43,7 +43,8 @@ export function submissionAnswers(site) {
     if (url.origin !== origin) {
       if (site.former && site.former.has(url.origin)) return { abort: true }; // a part graded before, left behind
       const kind = navigation ? 'navigation or popup' : 'request';
-      if (!url.protocol.startsWith('data') && !url.protocol.startsWith('blob')) log.blocked.push(`${kind}: ${url.href}`);
+      const entry = `${kind}: ${url.href}`;
+      if (!url.protocol.startsWith('data') && !url.protocol.startsWith('blob') && !log.blocked.includes(entry)) log.blocked.push(entry); // (once: Firefox asks again)
       return { abort: true };
     }
     let rel;
