@@ -4,7 +4,7 @@
 // (WebGL contexts get preserveDrawingBuffer so the last frame can be read at any time; WebGPU
 // frames come from grader/browser/webgpu-capture.js, which must be added first).
 export function instrumentScript() {
-  const g = { api: null, apis: [], draws: 0, vertices: 0, pending: 0, shaderErrors: [], gpuErrors: [], adapter: undefined, wgsl: [], glsl: [], faces: { depthTest: false, culling: false, cullMode: null }, noCull: false, cullOn: false };
+  const g = { api: null, apis: [], draws: 0, vertices: 0, pending: 0, shaderErrors: [], gpuErrors: [], adapter: undefined, webgpuMissing: false, wgsl: [], glsl: [], faces: { depthTest: false, culling: false, cullMode: null }, noCull: false, cullOn: false };
   Object.defineProperty(window, '__grade', { value: g, enumerable: false });
   const add = EventTarget.prototype.addEventListener;
   const apiOf = { webgl: 'webgl', 'experimental-webgl': 'webgl', webgl2: 'webgl2', webgpu: 'webgpu' };
@@ -44,6 +44,7 @@ export function instrumentScript() {
     const clearsOnPresent = api && api !== 'webgpu' && !(attrs && attrs.preserveDrawingBuffer);
     if (api && api !== 'webgpu') attrs = { ...(attrs || {}), preserveDrawingBuffer: true };
     const ctx = realGetContext.call(this, type, attrs, ...rest);
+    if (api === 'webgpu' && !ctx) g.webgpuMissing = true; // a browser without WebGPU (Firefox ESR)
     if (ctx && clearsOnPresent && !('__gradeClearsOnPresent' in ctx)) Object.defineProperty(ctx, '__gradeClearsOnPresent', { value: true });
     if (api && ctx) {
       g.api = api;
@@ -174,6 +175,11 @@ export function instrumentScript() {
     GPURenderPassEncoder.prototype.drawIndexed = function (...a) { g.draws++; g.vertices += count(a[0], a[1]); return drawIndexed.apply(this, a); };
   } else {
     g.adapter = null;
+    // a browser without WebGPU (Firefox ESR): a page that asks for navigator.gpu gets undefined, as
+    // it would, and the grader knows it asked (a WebGPU part is then not graded here, never failed)
+    if (!('gpu' in navigator)) {
+      Object.defineProperty(Navigator.prototype, 'gpu', { configurable: true, enumerable: false, get() { g.webgpuMissing = true; return undefined; } });
+    }
   }
   // which events each control listens to (addEventListener, or on<event> properties/attributes)
   EventTarget.prototype.addEventListener = function (type, ...rest) {
@@ -186,7 +192,7 @@ export function instrumentScript() {
 
   /** What the page interface's state() gives the grading core (playwright-page.js and the check page's
    * frame driver both read it here, so they cannot drift apart). */
-  g.state = () => ({ api: g.api, frames: window.__webgpuCapture ? window.__webgpuCapture.frames : 0, adapter: g.adapter, draws: g.draws,
+  g.state = () => ({ api: g.api, frames: window.__webgpuCapture ? window.__webgpuCapture.frames : 0, adapter: g.adapter, webgpuMissing: g.webgpuMissing, draws: g.draws,
     vertices: g.vertices, pending: g.pending,
     shaderErrors: [...g.shaderErrors], gpuErrors: [...g.gpuErrors], faces: { ...g.faces } });
 

@@ -7,7 +7,7 @@ import { analyse } from './measure.js';
 import { checkList } from './verdict.js';
 import { litView } from './views.js';
 import { sphereView, shadingOf, viewFits } from './evidence.js';
-import { auditFirstFrame } from './audits/first-frame.js';
+import { auditFirstFrame, notGradedHere } from './audits/first-frame.js';
 import { auditLevelControls, auditHeavyLevel, auditSphere } from './audits/sphere.js';
 import { auditNormals, auditDepthCulling } from './audits/normals.js';
 import { auditDiffuse, auditPointLight } from './audits/diffuse.js';
@@ -17,9 +17,11 @@ import { auditSliders } from './audits/sliders.js';
 import { auditLeastShininess, auditPerFragment } from './audits/shading.js';
 
 /**
- * { fail, checks, numbers, shown } for one part's artifact: `fail` (a reason) when the part could
- * not be judged at all, `checks` the findings, `shown` the artifact's picture names a report shows
- * (first, judged, coarse, highlightPlace, leastS).
+ * { fail, checks, numbers, shown, notGraded } for one part's artifact: `fail` (a reason) when the
+ * part could not be judged at all, `checks` the findings, `shown` the artifact's picture names a
+ * report shows (first, judged, coarse, highlightPlace, leastS); `notGraded` (a reason) when the
+ * browser it was gathered in could not run it (WebGPU in Firefox ESR): then no verdict stands,
+ * whatever the findings (part-result.js).
  */
 export function auditPart({ facts, images }, rubric) {
   const { checks, say } = checkList(rubric);
@@ -30,7 +32,8 @@ export function auditPart({ facts, images }, rubric) {
   const shown = {};
   if (images.first) shown.first = 'first';
   const C = { facts, images, T, rubric, part, must, say, numbers, imagesShown: shown };
-  const result = (fail) => ({ fail, checks, numbers, shown, tooSlow: facts.tooSlow || null });
+  const notGraded = notGradedHere(C);
+  const result = (fail) => ({ fail, checks, numbers, shown, tooSlow: facts.tooSlow || null, ...(notGraded ? { notGraded } : {}) });
   if (facts.tooSlow) {
     // nothing judged: where the bound ran out depends on the machine, the verdict must not
     say(rubric.tooSlowVerdict, `too slow to judge here: the rubric's bound of ${rubric.timeoutSeconds} s ran out while ${facts.tooSlow}; nothing was judged (what was done is listed under what the grader did)`);

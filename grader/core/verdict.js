@@ -1,6 +1,9 @@
 // Verdicts and reasons: the checks a part's judging said (each { level, reason }) become one
 // verdict (pass, review, fail) and the reasons a teacher reads, worst first. Plain data.
 
+/** The verdict of a part the browser it was graded in could not run (WebGPU in Firefox ESR): neither pass, review nor fail. */
+export const NOT_GRADED = 'not graded here';
+
 /**
  * A list of checks with the rubric's cost of a mistake: say('pass' | 'review' | 'fail' |
  * 'mistake', reason). A 'mistake' (the page draws but misses a point of the slide's step) costs

@@ -10,6 +10,8 @@ import { readLabels, agreementText } from './labels.js';
 import { writeReport, safeName } from './report.js';
 import { mergeRubric } from '../core/rubric.js';
 import { CHROMIUM } from '../../tools/browser.js';
+import { FIREFOX } from '../../tools/firefox.js';
+import { gradeInFirefox } from './grade-firefox.js';
 import { auditAgain } from './audit-only.js';
 import { runSimilarity, writeSimilarityReport, SIMILARITY_HELP, parseBound } from '../similarity/run.js';
 
@@ -23,6 +25,8 @@ Opens each part (WP04P1 ... WP04P5, found by folder or file name: WP04P1, Part1,
 week04p01, ...) in Chromium (WebGL or WebGPU) with time frozen, finds its controls, stops the
 orbit, subdivides until the silhouette settles, and gives each part a verdict (pass, review,
 fail) with reasons, from what the slide's step asks for. Our reference part is drawn beside it.
+  --browser B       chromium (the default: WebGL and WebGPU) or firefox (Debian's Firefox ESR,
+                    ${FIREFOX}: WebGL only; a WebGPU part is "not graded here", never failed)
   --part P=FILE     use FILE (relative to the submission) for part P
   --rubric FILE     a rubric in place of grader/core/rubric.json (copy that file and edit it: time bounds,
                     thresholds, control patterns, what each part must show)
@@ -59,6 +63,10 @@ function parseArgs(argv) {
     else if (a === '--shard') o.shard = next();
     else if (a === '--workers') o.workers = next();
     else if (a === '--labels') o.labels = next();
+    else if (a === '--browser') {
+      o.browser = next().toLowerCase();
+      if (!BROWSERS.includes(o.browser)) fail(`--browser takes ${BROWSERS.join(' or ')}, not "${o.browser}"\n\n${HELP}`, 2);
+    }
     else if (a === '--report-only') o.reportOnly = true;
     else if (a === '--audit-only') o.auditOnly = next();
     else if (a === '--similarity-only') o.similarityOnly = true;
@@ -75,6 +83,7 @@ function parseArgs(argv) {
   return o;
 }
 
+const BROWSERS = ['chromium', 'firefox'];
 const DEFAULT_RUBRIC = path.join(here, '../core/rubric.json');
 
 /** The rubric: grader/core/rubric.json, or the teacher's file in its place (keys it leaves out keep the defaults). */
@@ -121,7 +130,9 @@ async function main() {
     const { audited, without } = await auditAgain(out, rubric, (k, n) => { if (process.stdout.isTTY) process.stdout.write(`\rgrade: audited ${k} of ${n} parts`); });
     console.log(`\rgrade: audited ${audited} parts from their artifacts in ${((Date.now() - t0) / 1000).toFixed(1)} s${without.length ? `; ${without.length} without an artifact kept their verdict (${without.join(', ')})` : ''}`);
   } else if (!o.reportOnly && !o.similarityOnly) {
-    if (!existsSync(CHROMIUM)) fail(`Chromium is missing at ${CHROMIUM}: run "sudo apt-get update && sudo apt-get install -y chromium"`);
+    const browser = o.browser || 'chromium';
+    if (browser === 'firefox' && !existsSync(FIREFOX)) fail(`Firefox ESR is missing at ${FIREFOX}: run "sudo apt-get install -y firefox-esr" (or set FIREFOX_PATH), or grade in Chromium without --browser firefox`);
+    if (browser === 'chromium' && !existsSync(CHROMIUM)) fail(`Chromium is missing at ${CHROMIUM}: run "sudo apt-get update && sudo apt-get install -y chromium"`);
     const items = [];
     for (const s of submissions) {
       const parts = findParts(s.root, o.batch ? {} : o.parts);
@@ -137,15 +148,27 @@ async function main() {
     const FIRST = ['WP04P4', 'WP04P3', 'WP04P5', 'WP04P2', 'WP04P1'];
     items.sort((a, b) => FIRST.indexOf(a.part) - FIRST.indexOf(b.part));
     const planFile = path.join(out, 'plan.json');
-    writeFileSync(planFile, JSON.stringify({ repo, out, rubric, timeoutSeconds: rubric.timeoutSeconds, referenceSeconds: REFERENCE_SECONDS, items }, null, 1));
-    console.log(`grade: ${submissions.length} submission(s), ${items.length} parts; ${o.workers || 2} at a time, at most ${rubric.timeoutSeconds} s for each student page, and ${REFERENCE_SECONDS} s more for our reference`);
-    const args = ['test', '-c', path.join(here, 'playwright.config.js')];
-    if (o.shard) args.push('--shard', o.shard);
-    rmSync(path.join(out, 'blob-report'), { recursive: true, force: true });
-    const run = spawnSync(process.execPath, [path.join(repo, 'node_modules/@playwright/test/cli.js'), ...args], {
-      cwd: here, stdio: 'inherit', env: { ...process.env, GRADE_PLAN: planFile, GRADE_WORKERS: o.workers || '2' },
-    });
-    if (run.error) fail(`could not start Playwright: ${run.error.message}`);
+    const plan = { repo, out, browser, rubric, timeoutSeconds: rubric.timeoutSeconds, referenceSeconds: REFERENCE_SECONDS, items };
+    writeFileSync(planFile, JSON.stringify(plan, null, 1));
+    console.log(`grade: ${submissions.length} submission(s), ${items.length} parts in ${browser === 'firefox' ? 'Firefox ESR' : 'Chromium'}; ${o.workers || 2} at a time, at most ${rubric.timeoutSeconds} s for each student page, and ${REFERENCE_SECONDS} s more for our reference`);
+    if (browser === 'firefox') {
+      // (--shard I/N: every N-th part from the I-th, as a class is split over machines)
+      const [i, n] = (o.shard || '1/1').split('/').map(Number);
+      if (!(n >= 1 && i >= 1 && i <= n)) fail(`--shard takes I/N with 1 ≤ I ≤ N\n\n${HELP}`, 2);
+      try {
+        await gradeInFirefox({ ...plan, items: items.filter((_, k) => k % n === i - 1) }, { workers: Number(o.workers || 2) });
+      } catch (err) {
+        fail(`could not grade in Firefox: ${err.message.split('\n')[0]}`);
+      }
+    } else {
+      const args = ['test', '-c', path.join(here, 'playwright.config.js')];
+      if (o.shard) args.push('--shard', o.shard);
+      rmSync(path.join(out, 'blob-report'), { recursive: true, force: true });
+      const run = spawnSync(process.execPath, [path.join(repo, 'node_modules/@playwright/test/cli.js'), ...args], {
+        cwd: here, stdio: 'inherit', env: { ...process.env, GRADE_PLAN: planFile, GRADE_WORKERS: o.workers || '2' },
+      });
+      if (run.error) fail(`could not start Playwright: ${run.error.message}`);
+    }
   }
 
   // gather every part graded in this out folder (all shards, once they are copied together)

@@ -4,6 +4,7 @@
 // ../shared/handins/labels.tsv; a label is correct, partial or broken (or the verdict itself:
 // pass, review, fail). Plain data in, plain data out: no browser, no files but the one read.
 import { readFileSync } from 'node:fs';
+import { NOT_GRADED } from '../core/verdict.js';
 
 /** The verdict a label asks for: correct → pass, partial → review, broken → fail. */
 export const VERDICT_OF_LABEL = { correct: 'pass', partial: 'review', broken: 'fail', pass: 'pass', review: 'review', fail: 'fail' };
@@ -41,18 +42,26 @@ export function readLabels(file) {
 /**
  * The grader against the labels. `submissions` as in report.json ([{ name, parts: [{ part,
  * verdict, reasons }] }]). Returns { rows, confusion, agree, total, correctPassed, correct,
- * partialPassed, partial, brokenPassed, broken, missing }; each row { submission, part, label,
- * want, verdict, agree, labelReasons, reasons, unsure }.
+ * partialPassed, partial, brokenPassed, broken, missing, notGraded }; each row { submission, part,
+ * label, want, verdict, agree, labelReasons, reasons, unsure }. A part "not graded here" (WebGPU in
+ * a browser without it) is neither an agreement nor a disagreement: it is counted under "not
+ * graded", listed in `notGraded`, and left out of the totals.
  */
 export function agreement(labels, submissions) {
   const confusion = Object.fromEntries(LABELS.map((l) => [l, Object.fromEntries([...VERDICTS, 'not graded'].map((v) => [v, 0]))]));
   const rows = [];
   const missing = [];
+  const notGraded = [];
   for (const l of labels) {
     const s = submissions.find((x) => x.name === l.submission);
     const got = s && s.parts.find((p) => p.part === l.part);
     if (!got) {
       missing.push(`${l.submission} ${l.part}`);
+      confusion[l.label]['not graded']++;
+      continue;
+    }
+    if (got.verdict === NOT_GRADED) {
+      notGraded.push(`${l.submission} ${l.part}`);
       confusion[l.label]['not graded']++;
       continue;
     }
@@ -62,10 +71,11 @@ export function agreement(labels, submissions) {
       labelReasons: l.reasons, reasons: got.reasons || [], unsure: l.unsure });
   }
   const count = (f) => rows.filter(f).length;
-  const labelled = (l) => labels.filter((x) => x.label === l).length;
+  const here = labels.filter((x) => !notGraded.includes(`${x.submission} ${x.part}`));
+  const labelled = (l) => here.filter((x) => x.label === l).length;
   return {
-    rows, confusion, missing,
-    agree: count((r) => r.agree), total: labels.length,
+    rows, confusion, missing, notGraded,
+    agree: count((r) => r.agree), total: here.length,
     correct: labelled('correct'), correctPassed: count((r) => r.label === 'correct' && r.verdict === 'pass'),
     partial: labelled('partial'), partialPassed: count((r) => r.label === 'partial' && r.verdict === 'pass'),
     broken: labelled('broken'), brokenPassed: count((r) => r.label === 'broken' && r.verdict === 'pass'),
@@ -88,6 +98,7 @@ export function agreementText(a) {
     out.push(`labels: ${r.submission} ${r.part}: labelled ${r.label}${r.unsure ? ' (unsure)' : ''}, graded ${r.verdict}: ${r.reasons.filter((x) => /^(FAIL|REVIEW)/.test(x)).join(' | ') || r.reasons[0] || ''}`);
   }
   for (const m of a.missing) out.push(`labels: ${m}: labelled, but no such part was graded`);
+  if (a.notGraded && a.notGraded.length) out.push(`labels: not graded here (WebGPU, which this browser does not have), left out of the counts: ${a.notGraded.join(', ')}`);
   return out;
 }
 
@@ -100,7 +111,8 @@ export function agreementHtml(a, anchor = (r) => `#${r.submission}-${r.part}`) {
   const rows = a.rows.filter((r) => !r.agree).map((r) => `<tr><td><a href="${esc(anchor(r))}">${esc(r.submission)} ${r.part}</a></td><td>${esc(r.label)}${r.unsure ? ' (unsure)' : ''}: ${esc(r.labelReasons)}</td>` +
     `<td>${esc(r.verdict)}: ${esc(r.reasons.filter((x) => /^(FAIL|REVIEW)/.test(x)).join(' | ') || r.reasons[0] || '')}</td></tr>`).join('');
   return `<section id="labels"><h2>Against the teacher's labels</h2><p>${a.agree} of ${a.total} labelled parts get their label's verdict (${pct(a.agree, a.total)}): ` +
-    `correct → pass ${a.correctPassed} of ${a.correct}, partial → review (passed: ${a.partialPassed} of ${a.partial}), broken → fail (passed: ${a.brokenPassed} of ${a.broken}).</p>` +
+    `correct → pass ${a.correctPassed} of ${a.correct}, partial → review (passed: ${a.partialPassed} of ${a.partial}), broken → fail (passed: ${a.brokenPassed} of ${a.broken}).` +
+    `${a.notGraded && a.notGraded.length ? ` Not graded here (WebGPU, which this browser does not have), left out of these counts: ${esc(a.notGraded.join(', '))}.` : ''}</p>` +
     `<table class="confusion"><thead><tr>${head}</tr></thead><tbody>${body}</tbody></table>` +
     (rows ? `<h3>Where the grader and the labels differ</h3><table class="disagree"><thead><tr><th>part</th><th>the label says</th><th>the grader says</th></tr></thead><tbody>${rows}</tbody></table>` : '<p>No disagreements.</p>') +
     '</section>';

@@ -1,8 +1,9 @@
 // A part's result (what report.json says of it) from its audit: the verdict, the reasons in the
 // order a teacher reads them, the numbers, the pictures shown (files of its artifact). The same
 // for a part just gathered (grade.spec.js) and for a part re-judged from its saved artifact
-// (--audit-only), so the two cannot drift apart.
-import { verdictOf, reasonsOf } from '../core/verdict.js';
+// (--audit-only), so the two cannot drift apart. A part the browser could not run (WebGPU in
+// Firefox ESR) gets the verdict "not graded here", never a fail.
+import { verdictOf, reasonsOf, NOT_GRADED } from '../core/verdict.js';
 
 /**
  * Sets `result`'s judging from `judged` (grade-part.js's judged(): fail, checks, numbers, images
@@ -14,6 +15,11 @@ export function applyAudit(result, judged, files = {}) {
   result.verdict = verdictOf(judged.checks, judged.fail);
   result.reasons = reasonsOf({ fail: judged.fail, checks: judged.checks, pageErrors: (result.errors || []).filter((e) => /page error/.test(e)) });
   result.status = judged.fail ? 'failed' : judged.tooSlow ? 'too slow' : 'ok';
+  if (judged.notGraded) {
+    // the browser could not run it (WebGPU in Firefox ESR): no verdict; what was seen stays below
+    result.verdict = result.status = NOT_GRADED;
+    result.reasons = [judged.notGraded, ...result.reasons.map((r) => `(seen here: ${r})`)];
+  }
   result.pass = result.verdict === 'pass';
   const kept = result.images || {};
   result.images = {};

@@ -1,7 +1,8 @@
-// The page interface the grading core drives (drive.js), on a Playwright page: open a part with
-// time frozen and the grader's instrumentation in, then click, step a slider, press a key, let
-// frames run, capture. The check page has its own implementation of the same interface for a
-// part in an iframe; drive.js knows neither.
+// The page interface the grading core drives (grader/core/gather/), on a Playwright page: open a
+// part with time frozen and the grader's instrumentation in, then click, step a slider, press a
+// key, let frames run, capture. The driver (pageDriver) works on puppeteer's page too, which
+// firefox-page.js opens in Firefox ESR. The check page has its own implementation of the same
+// interface for a part in an iframe; the core knows none of them.
 import { PNG } from 'pngjs';
 import { webgpuCaptureScript, readWebGPUFrame } from '../browser/webgpu-capture.js';
 import { instrumentScript } from '../browser/instrument.js';
@@ -9,7 +10,7 @@ import { frameClockScript } from '../browser/clock.js';
 import { serveSubmission } from './serve-submission.js';
 
 // the time the page sees: frozen, moving only when the grader lets frames run
-const FROZEN = new Date('2026-01-05T09:00:00Z');
+export const FROZEN = new Date('2026-01-05T09:00:00Z');
 
 /**
  * Opens the parts a worker grades, one after another, in one browser context and page: each part
@@ -82,7 +83,7 @@ export function partOpener(browser, host) {
       if (!response || !response.ok()) return { page, why: `the page answered ${response ? response.status() : 'nothing'}` };
       // (no wait for the network to go quiet: drive.js waits for the first draw call, which comes after
       // any shaders or models a page fetches)
-      return { page, driver: playwrightDriver(page, log) };
+      return { page, driver: pageDriver(page, log) };
     },
     async done(clean) {
       if (!clean) await drop();
@@ -90,8 +91,12 @@ export function partOpener(browser, host) {
   };
 }
 
-/** The page interface over a Playwright page whose instrumentation (instrument.js) is in. */
-export function playwrightDriver(page, log) {
+/**
+ * The page interface over a page whose instrumentation (instrument.js) is in: a Playwright page,
+ * or a puppeteer page (Firefox: firefox-page.js), which share what is used here (evaluate(fn, arg)
+ * and keyboard.press(key)).
+ */
+export function pageDriver(page, log) {
   const driver = {
     /** What the instrumentation saw: the API, WebGPU frames, the adapter, draw calls, shader and GPU errors. */
     state: () => page.evaluate(() => window.__grade.state()),

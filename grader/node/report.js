@@ -5,6 +5,7 @@ import { writeFileSync } from 'node:fs';
 import path from 'node:path';
 import { PARTS } from './parts.js';
 import { agreement, agreementHtml } from './labels.js';
+import { NOT_GRADED } from '../core/verdict.js';
 import { similarityJson, similarityBadges, similarityHtml, SIMILARITY_CSS } from '../similarity/run.js';
 
 const esc = (s) => String(s).replace(/[&<>"']/g, (c) => ({ '&': '&amp;', '<': '&lt;', '>': '&gt;', '"': '&quot;', "'": '&#39;' })[c]);
@@ -16,7 +17,9 @@ const VERDICTS = ['pass', 'review', 'fail'];
 function passes(parts) {
   return parts.filter((p) => p.verdict === 'pass').length;
 }
-const badge = (v) => `<span class="badge ${esc(v || 'fail')}">${esc(v || 'fail')}</span>`;
+/** A verdict's class name ("not graded here": not-graded). */
+const cls = (v) => (v === NOT_GRADED ? 'not-graded' : v || 'fail');
+const badge = (v) => `<span class="badge ${esc(cls(v))}">${esc(v || 'fail')}</span>`;
 
 /**
  * Writes report.json and report.html into `out` for the graded `submissions` ({ name, parts }),
@@ -36,12 +39,12 @@ export function writeReport(out, submissions, labels = null, similar = null) {
   const grid = rows.map((s) => `<tr data-name="${esc(s.name)}" data-passes="${s.passes}"><th scope="row"><a href="#${esc(safeName(s.name))}">${esc(s.name)}</a>${similar ? similarityBadges(similar, s.name) : ''}</th><td class="num">${s.passes}</td>` +
     PARTS.map((p) => {
       const r = s.parts.find((x) => x.part === p);
-      return `<td class="cell ${esc(r.verdict)}" data-verdict="${VERDICTS.indexOf(r.verdict)}"><a href="#${esc(anchor(s, r))}">${badge(r.verdict)}` +
+      return `<td class="cell ${esc(cls(r.verdict))}" data-verdict="${r.verdict === NOT_GRADED ? VERDICTS.length : VERDICTS.indexOf(r.verdict)}"><a href="#${esc(anchor(s, r))}">${badge(r.verdict)}` +
         `<span class="api">${esc(r.api || '')}</span><span class="thumbs">${img(s, r, 'first')}${img(s, r, 'judged')}</span></a></td>`;
     }).join('') + '</tr>').join('\n');
   const list = (title, items, cls) => (items && items.length ? `<p>${title}</p><ul class="${cls}">${items.map((e) => `<li>${esc(e)}</li>`).join('')}</ul>` : '');
   const details = rows.map((s) => `<section id="${esc(safeName(s.name))}"><h2>${esc(s.name)} · ${s.passes} of ${PARTS.length} pass</h2>` +
-    s.parts.map((r) => `<div class="part" id="${esc(anchor(s, r))}"><h3>${r.part} ${badge(r.verdict)} <small>${esc(r.api || 'no API')} · ${esc(r.status)}${r.seconds ? ` · ${r.seconds.toFixed(0)} s` : ''}</small></h3>` +
+    s.parts.map((r) => `<div class="part" id="${esc(anchor(s, r))}"><h3>${r.part} ${badge(r.verdict)} <small>${esc(r.api || 'no API')}${r.browser ? ` in ${esc(r.browser)}` : ''} · ${esc(r.status)}${r.seconds ? ` · ${r.seconds.toFixed(0)} s` : ''}</small></h3>` +
       `<p class="file">${r.file ? esc(r.file) : 'no file'}</p>` +
       list('Reasons:', r.reasons, 'reasons') +
       (r.images ? `<div class="images">${['first', 'coarse', 'highlightPlace', 'leastS', 'judged', 'reference', 'diff'].filter((k) => r.images[k]).map((k) => `<figure>${img(s, r, k)}<figcaption>${{ first: 'first frame', coarse: 'a coarse level', highlightPlace: 'the highlight, the light away from the viewer', leastS: 's at its least', judged: 'judged (submission)', reference: 'our reference', diff: 'difference' }[k]}</figcaption></figure>`).join('')}</div>` : '') +
@@ -61,17 +64,18 @@ for (const th of document.querySelectorAll('#grid thead th[data-sort]')) th.addE
   [...body.rows].sort((a, b) => { const x = key(a), y = key(b); const c = x < y ? -1 : x > y ? 1 : 0; return desc === '1' ? c : -c; }).forEach((tr) => body.append(tr));
 });
 </script>`;
-  const totals = PARTS.map((p) => VERDICTS.map((v) => rows.filter((s) => s.parts.find((x) => x.part === p).verdict === v).length).join(' / '));
+  const count = (p, v) => rows.filter((s) => s.parts.find((x) => x.part === p).verdict === v).length;
+  const totals = PARTS.map((p) => VERDICTS.map((v) => count(p, v)).join(' / ') + (count(p, NOT_GRADED) ? ` (${count(p, NOT_GRADED)} not graded here)` : ''));
   writeFileSync(path.join(out, 'report.html'), `<!doctype html><html lang="en"><head><meta charset="utf-8"><title>Grading report</title>
 <style>body{font-family:system-ui,sans-serif;margin:1rem 2rem;color:#1d2330}table{border-collapse:collapse}td,th{border:1px solid #ccd;padding:.2rem .4rem;vertical-align:top}
 th[data-sort]{cursor:pointer;text-decoration:underline dotted}.num{text-align:right}.cell a{color:inherit;text-decoration:none;display:block}
 .cell.pass{background:#e3f6e3}.cell.review{background:#fff4d6}.cell.fail{background:#fde4e4}
-.badge{display:inline-block;padding:0 .4rem;border-radius:.6rem;font-size:.8rem;font-weight:600;color:#fff}.badge.pass{background:#2a7d2a}.badge.review{background:#a66b00}.badge.fail{background:#b3261e}
+.badge{display:inline-block;padding:0 .4rem;border-radius:.6rem;font-size:.8rem;font-weight:600;color:#fff}.badge.pass{background:#2a7d2a}.badge.review{background:#a66b00}.badge.fail{background:#b3261e}.badge.not-graded{background:#667}
 .api{color:#556;font-size:.75rem;margin-left:.3rem}.thumbs{display:flex;gap:2px;margin-top:2px}.thumbs img{width:64px;height:64px;object-fit:contain;border:1px solid #ccd;background:#fff}
 .images{display:flex;gap:.8rem;flex-wrap:wrap}figure{margin:0}figure img{max-width:260px;border:1px solid #ccd;image-rendering:pixelated}
 .errors li{color:#a00}.confusion td.agree{background:#e3f6e3;font-weight:600}.file{color:#556;font-family:monospace}.part{border-top:1px solid #dde;padding:.3rem 0}${SIMILARITY_CSS}</style></head><body>
-<h1>Grading report</h1><p>Each part was opened in Chromium (WebGL, or WebGPU on SwiftShader with its frames read back), with time
-frozen. The grader found its controls, stopped or sampled the orbit, coarsened and subdivided until the silhouette stopped
+<h1>Grading report</h1><p>Each part was opened in Chromium (WebGL, or WebGPU on SwiftShader with its frames read back), or with
+--browser firefox in Firefox ESR (WebGL; a WebGPU part is not graded there), with time frozen. The grader found its controls, stopped or sampled the orbit, coarsened and subdivided until the silhouette stopped
 changing, and judged the picture by what the slide's step asks for (a round sphere; normals as colours; diffuse shading for a
 fitted light; a highlight; sliders on the input event; shading per fragment). Verdicts: pass, review (a teacher should look),
 fail. Click a cell for its reasons and pictures; click a column head to sort.</p>

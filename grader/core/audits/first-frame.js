@@ -1,6 +1,8 @@
 // The first frame: the page got a context, its shaders compile, it drew something visible. A
 // part that drew nothing cannot be judged further: `fail` says why, with the first error seen.
+// A part that asked for WebGPU in a browser without it (Firefox ESR) is not graded here at all.
 import { analyse } from '../measure.js';
+import { NOT_GRADED } from '../verdict.js';
 
 /** Says the shader and adapter failures; returns the reason the part cannot be judged, or null. */
 export function auditFirstFrame({ facts, images, T, say }) {
@@ -14,4 +16,16 @@ export function auditFirstFrame({ facts, images, T, say }) {
   if (!g.api) return `drew nothing: the page never got a WebGL or WebGPU context${why ? ` (${why})` : ''}`;
   if (!g.draws) return `drew nothing: the canvas is one colour, no draw call${why ? ` (${why})` : ''}`;
   return `drew nothing visible: the canvas is one colour${why ? ` (${why})` : ''}`;
+}
+
+/**
+ * A part that asked for WebGPU (navigator.gpu, a 'webgpu' canvas) where the browser has none, and
+ * got no WebGL context either, is not graded here: the browser is to blame, not the page. The
+ * reason, or null.
+ */
+export function notGradedHere({ facts }) {
+  const g = facts.first;
+  if (!g || !g.webgpuMissing || /^webgl/.test(g.api || '')) return null;
+  return `${NOT_GRADED}: this part uses WebGPU (it asked for navigator.gpu or a 'webgpu' canvas), and this browser has no WebGPU ` +
+    '(Firefox ESR has none): grade it in Chromium, npm run grade without --browser firefox';
 }

@@ -43,7 +43,8 @@ async function gather(S) {
   }
   const g = await page.state();
   facts.api = g.api;
-  facts.first = { api: g.api, adapter: g.adapter, draws: g.draws, shaderErrors: g.shaderErrors, gpuErrors: g.gpuErrors };
+  facts.first = { api: g.api, adapter: g.adapter, draws: g.draws, shaderErrors: g.shaderErrors, gpuErrors: g.gpuErrors,
+    ...(g.webgpuMissing ? { webgpuMissing: true } : {}) }; // it asked for WebGPU where the browser has none (Firefox ESR)
   const firstShot = await S.shot();
   if (!firstShot) return;
   facts.canvas = { width: firstShot.img.width, height: firstShot.img.height };

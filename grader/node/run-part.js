@@ -1,0 +1,120 @@
+// One part of the plan graded in a browser, the same in either engine: opened (an opener of
+// playwright-page.js or firefox-page.js: served by serve-submission.js's rules, time frozen,
+// instrumented), gathered and audited (grader/core/grade-part.js), its artifact saved
+// (artifacts.js) and its result (part-result.js), our reference drawn beside it. Chromium's
+// harness runs it as one Playwright test a part (grade.spec.js), Firefox's as a plain Node loop
+// (grade-firefox.js).
+import { writeFileSync, mkdirSync } from 'node:fs';
+import path from 'node:path';
+import { PNG } from 'pngjs';
+import { compareImages } from './compare.js';
+import { writeArtifact, pngOf } from './artifacts.js';
+import { applyAudit } from './part-result.js';
+import { gradePart, addTime } from '../core/grade-part.js';
+import { referenceQuery, referenceStateOf } from '../core/reference-state.js';
+
+// the message of an error thrown because Playwright's time bound closed the part's page (the result stays 'timeout')
+const CLOSED = /Test ended|Target page, context or browser has been closed/;
+
+/**
+ * Grades `item` of `plan` with `openers` ({ student, reference }): writes item.resultFile (first
+ * as a timeout, which stays if the part's time bound stops it) and item.artifactDir. `more(seconds)`
+ * asks for more time for our reference; `over()` says the time bound has stopped the part (nothing
+ * is written after that).
+ */
+export async function runPart({ item, plan, openers, more = () => {}, over = () => false }) {
+  const rubric = plan.rubric;
+  const save = (result) => {
+    if (over()) return;
+    mkdirSync(path.dirname(item.resultFile), { recursive: true });
+    writeFileSync(item.resultFile, JSON.stringify(result, null, 1));
+  };
+  const result = { name: item.name, part: item.part, file: item.page, status: 'timeout', verdict: 'fail', api: null,
+    reasons: [`the page did not finish within the rubric's bound of ${rubric.timeoutSeconds} s (it never returns, or is far too slow)`], actions: [], controls: {},
+    numbers: {}, mismatch: null, rmse: null, pass: false, comparison: null, notes: [], errors: [], blocked: [], images: null,
+    ...(plan.browser && plan.browser !== 'chromium' ? { browser: plan.browser } : {}) };
+  save(result); // what stays if the page never lets go: a timeout
+  if (!item.page) {
+    Object.assign(result, { status: 'missing', reasons: [`no page for ${item.part} was found in the submission`] });
+    return save(result);
+  }
+  const started = Date.now();
+  let graded = { fail: null, checks: [], actions: [], images: {}, shown: {}, busy: 0 };
+  const files = {};
+  let clean = false;
+  // where the part's time goes: opening it, each page-interface call, closing it, writing the pictures
+  const timing = result.timing = {};
+  const phase = (what, t0) => addTime(timing, what, Date.now() - t0);
+  try {
+    const t0 = Date.now();
+    const opened = await openers.student.open({ root: item.root, rel: item.page, loadSeconds: rubric.loadSeconds, log: result });
+    phase('open', t0);
+    if (opened.why) graded.fail = `the page could not be opened: ${opened.why}`;
+    else {
+      // what has been done so far stays in the result if the time bound stops the part
+      // the outer bound: past 85% of it a part is too slow to judge here (time is left to write what was seen)
+      const deadline = started + 0.85 * rubric.timeoutSeconds * 1000;
+      graded = await gradePart(opened.driver, { part: item.part, rubric, deadline, timing, progress: (what) => {
+        result.reasons = [`the page did not finish within the rubric's bound of ${rubric.timeoutSeconds} s: stopped while ${what} (a click or frame that never returns?)`];
+        save(result);
+      } });
+      const t0 = Date.now();
+      const { facts, images } = graded.artifact;
+      if (over()) return;
+      const saved = writeArtifact(item.artifactDir, { facts: { ...facts, blocked: result.blocked, notes: result.notes }, images });
+      const rel = path.relative(plan.out, item.artifactDir).split(path.sep).join('/');
+      for (const [name, file] of Object.entries(saved)) files[name] = `${rel}/${file}`;
+      phase('write', t0);
+    }
+    clean = true;
+  } catch (err) {
+    if (over() || CLOSED.test(err.message)) throw err; // the time bound: stays 'timeout'
+    // the grader's own trouble with this page: never a pass on it, a teacher looks
+    graded.checks = [{ level: 'review', reason: `the grader could not finish on this page: ${err.message.split('\n')[0]}` }];
+    if (process.env.GRADE_DEBUG) console.error(err);
+  } finally {
+    const t0 = Date.now();
+    if (!over()) await openers.student.done(clean);
+    phase('close', t0);
+  }
+  applyAudit(result, graded, files);
+  result.seconds = (Date.now() - started) / 1000;
+  save(result);
+  if (rubric.reference && graded.images.judged && !graded.fail && !graded.notGraded) {
+    more(plan.referenceSeconds);
+    await drawReference({ item, plan, openers, result, graded });
+    save(result);
+  }
+}
+
+/** Our reference at the student's size, beside theirs: evidence, not the verdict. */
+async function drawReference({ item, plan, openers, result, graded }) {
+  const dir = path.dirname(item.resultFile);
+  const stem = path.basename(item.resultFile, '.json');
+  const relDir = path.relative(plan.out, dir).split(path.sep).join('/');
+  const refLog = { errors: [], blocked: [], notes: [] };
+  const query = referenceQuery(graded.images.judged, result.numbers, plan.rubric.thresholds, item.referenceQuery);
+  let ref = null;
+  try {
+    const r = await openers.reference.open({ root: plan.repo, rel: `${item.part}/index.html`, query: query.toString(), log: refLog });
+    if (!r.why) {
+      await r.driver.tick(500, 30);
+      ref = await r.driver.snap();
+      const scene = await r.page.evaluate(() => window.scene || null).catch(() => null);
+      result.referenceState = referenceStateOf(query, scene);
+    }
+    await openers.reference.done(true);
+  } catch (err) {
+    await openers.reference.done(false);
+    result.notes.push(`our reference could not be drawn: ${err.message.split('\n')[0]}`);
+  }
+  const { width, height } = graded.images.judged;
+  if (ref && ref.width === width && ref.height === height) {
+    const cmp = compareImages(PNG.sync.read(pngOf(ref)), PNG.sync.read(pngOf(graded.images.judged)));
+    Object.assign(result, { mismatch: cmp.mismatch, rmse: cmp.rmse, comparison: cmp.comparison, mismatchFull: cmp.mismatchFull, mismatchObject: cmp.mismatchObject });
+    result.notes.push(...cmp.notes, `the reference is our page at the same canvas size${result.referenceState && result.referenceState.light ? ', lit from the fitted light' : ''}; the difference is evidence, the verdict comes from the checks`);
+    writeFileSync(path.join(dir, `${stem}-reference.png`), PNG.sync.write(cmp.reference));
+    writeFileSync(path.join(dir, `${stem}-diff.png`), PNG.sync.write(cmp.diff));
+    Object.assign(result.images, { reference: `${relDir}/${stem}-reference.png`, diff: `${relDir}/${stem}-diff.png` });
+  } else if (ref) result.notes.push(`our reference drew ${ref.width}×${ref.height}, not ${width}×${height}: not compared`);
+}
