@@ -115,6 +115,18 @@ test('WP04P2: the inside of the far side with clockwise front faces and back fac
   for (const faces of [{ depthTest: true, culling: true, cullMode: 'back' }, { depthTest: true, culling: true, cullMode: 'front', frontFace: 'cw' }, { depthTest: true, culling: false, frontFace: 'cw' }]) {
     assert.ok(judge(faces).some((k) => k.level === 'review' && /inside of the far side/.test(k.reason)), JSON.stringify(faces));
   }
+  // the grader's frame with culling off: the same picture means the nearest faces showed, unless the
+  // page drew nothing meanwhile (it draws only when a control asks): then it tells nothing
+  const faces = { depthTest: true, culling: true, frontFace: 'cw' };
+  const probe = (draws) => {
+    const { C, checks } = context(['normalColours', 'frontFaces'], { api: 'webgl', faces, noCull: { faces, image: 'no-cull', draws } });
+    C.images['no-cull'] = far.img;
+    auditNormals(C, far);
+    return checks.map((k) => k.reason).join(' | ');
+  };
+  assert.match(probe(3), /the visible faces are the nearest ones/);
+  assert.match(probe(0), /note: the back side of the sphere shows/);
+  assert.doesNotMatch(probe(0), /nearest/);
 });
 
 test('a lit step that shows WP04P1\'s colours is not lit; a lit sphere, white or tinted by the normal colour, is not taken for them', () => {

@@ -27,7 +27,8 @@ export function auditNormals({ facts, images, T, must, say, numbers }, judged) {
   const probe = facts.noCull;
   if (must.has('frontFaces') && probe) {
     if (probe.faces.depthTest && probe.faces.culling) {
-      const s = probe.image ? images[probe.image] : null;
+      // (a page that drew nothing while culling was off shows its last frame: that tells nothing)
+      const s = probe.image && probe.draws !== 0 ? images[probe.image] : null;
       const sAn = s && analyse(s, T);
       const nc2 = s && !sAn.blank ? normalColours(samples(s, sAn)) : null;
       nearest = nc2 ? nc2.det < 0 && pictureChange(s, img) <= 0.01 : null;
