@@ -5,6 +5,8 @@ const RULES = [
   { test: /shader|compile|link|WGSL/i, slide: 'Upload parameters (k_d, L_e, and p_ℓ or I_e) as uniform vectors.', note: 'the shaders must compile first: the error above gives the line' },
   { test: /adapter|WebGPU/i, slide: 'Draw a solid sphere in perspective view. (A: 6.6)', note: 'this browser has no WebGPU adapter: try the WebGL view, or a browser with WebGPU' },
   { test: /drew nothing|no canvas|one colou?r|could not be opened|never returns|time bound|page error/i, slide: 'Draw a solid sphere in perspective view. (A: 6.6)' },
+  { test: /not in perspective view/i, slide: 'Draw a solid sphere in perspective view. (A: 6.6)', note: 'an orthographic view shows the normals out to 90° at the rim' },
+  { test: /normal colouring of WP04P1/i, slide: 'Given other parameters k_d, k_a, L_e, L_a as uniforms and the surface normal n as an attribute, we can calculate L_o and store it in a varying color variable.' },
   { test: /per vertex|per fragment|coarse level|fragment shader/i, slide: 'We implement it by moving our evaluation of the Phong reflection model to the fragment shader. Most importantly, we must normalize the direction vectors in the fragment shader.' },
   { test: /subdivi|coarsen|finer|level|round|silhouette/i, slide: 'Insert buttons for subdividing or coarsening the mesh (incrementing or decrementing the level of subdivision). (A: 3.6.2)' },
   { test: /back side|front face|reflection of|inside|depth|cull/i, slide: 'Now, enable the depth test. Then enable backface culling. There is no visible effect of the back face culling.' },

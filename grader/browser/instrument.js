@@ -72,7 +72,7 @@ export function instrumentScript() {
       }
     };
     // the slide's WP04P2: the depth test and back-face culling enabled (recorded, never changed)
-    const { enable, disable, cullFace } = proto;
+    const { enable, disable, cullFace, frontFace } = proto;
     proto.enable = function (cap) {
       if (cap === this.DEPTH_TEST) g.faces.depthTest = true;
       if (cap === this.CULL_FACE) g.faces.culling = g.cullOn = true;
@@ -96,6 +96,12 @@ export function instrumentScript() {
     proto.cullFace = function (mode) {
       g.faces.cullMode = mode === this.FRONT ? 'front' : mode === this.BACK ? 'back' : 'front-and-back';
       return cullFace.call(this, mode);
+    };
+    // the slide's experiment, gl.frontFace(gl.CW) ("you should now see the back side"): recorded
+    // only once the page sets it (the default is CCW), the last call winning
+    proto.frontFace = function (mode) {
+      if (mode === this.CW || mode === this.CCW) g.faces.frontFace = mode === this.CW ? 'cw' : 'ccw';
+      return frontFace.call(this, mode);
     };
     // the page's own work, counted (draw calls and vertices): what a page costs, never read off a clock
     proto.drawArrays = function (...a) { g.draws++; g.vertices += Math.max(0, a[2] | 0); drew(this); return bare(this, drawArrays, a); };
@@ -166,6 +172,7 @@ export function instrumentScript() {
       const ds = desc && desc.depthStencil, prim = (desc && desc.primitive) || {};
       if (ds && ds.depthCompare && ds.depthCompare !== 'always') g.faces.depthTest = true;
       if (prim.cullMode && prim.cullMode !== 'none') { g.faces.culling = true; g.faces.cullMode = prim.cullMode; }
+      if (prim.frontFace === 'cw' || prim.frontFace === 'ccw') g.faces.frontFace = prim.frontFace;
     };
     GPUDevice.prototype.createRenderPipeline = function (desc) { seePipeline(desc); return createRenderPipeline.call(this, desc); };
     GPUDevice.prototype.createRenderPipelineAsync = function (desc) { seePipeline(desc); return awaited(createRenderPipelineAsync.call(this, desc)); };

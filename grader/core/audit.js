@@ -9,7 +9,7 @@ import { litView } from './views.js';
 import { sphereView, shadingOf, viewFits } from './evidence.js';
 import { auditFirstFrame, notGradedHere } from './audits/first-frame.js';
 import { auditLevelControls, auditHeavyLevel, auditSphere } from './audits/sphere.js';
-import { auditNormals, auditDepthCulling } from './audits/normals.js';
+import { auditNormals, auditPerspective, auditNormalsNotLight, auditDepthCulling } from './audits/normals.js';
 import { auditDiffuse, auditPointLight } from './audits/diffuse.js';
 import { auditOrbitStopsAgain, auditOrbit, auditNotStopped } from './audits/orbit.js';
 import { auditHighlight, auditPlaceFarther } from './audits/highlight.js';
@@ -53,12 +53,13 @@ export function auditPart({ facts, images }, rubric) {
   const { an, circleArc } = sphereView(img, T);
   const judged = { img, an, raw, circleArc };
   auditSphere(C, judged, facts.ladder.map((l) => l.roundness), analyse(images.first, T).roundness);
-  auditNormals(C, judged);
+  auditPerspective(C, auditNormals(C, judged));
   auditDepthCulling(C);
-  const shaded = must.has('diffuse') || must.has('highlight');
+  // a lit step that shows WP04P1's colours has no shading to judge: its colours are not lighting
+  const shaded = (must.has('diffuse') || must.has('highlight')) && !auditNormalsNotLight(C, judged);
   const shading = shaded ? shadingOf(img, an, T) : null;
   // the lit views kept along the orbit: their sparse fits (the orbit's), and full fits (the highlight's)
-  const lit = facts.views.map((v) => ({ ...litView(images[v.image], T), orbiting: v.orbiting, image: v.image })).filter((v) => v.lit);
+  const lit = !shaded ? [] : facts.views.map((v) => ({ ...litView(images[v.image], T), orbiting: v.orbiting, image: v.image })).filter((v) => v.lit);
   if (shaded) auditDiffuse(C, shading, lit);
   auditOrbit(C, lit);
   if (shaded) auditPointLight(C, shading);

@@ -61,5 +61,7 @@ test('a review or a fail names the slide sentence it misses', async () => {
   assert.equal(slide('REVIEW: nothing found that makes the sphere finer: 2 controls tried'), 'Insert buttons for subdividing');
   assert.equal(slide('REVIEW: back faces show through the front (normals do not vary smoothly): depth test or culling missing'), 'Now, enable the depth');
   assert.equal(slide('REVIEW: no specular highlight: nothing brighter than the diffuse fit'), 'Update your reflection model');
+  assert.equal(slide('REVIEW: not in perspective view (the slide: "Draw a solid sphere in perspective view"): the inside of the far side, whose normals reach 90°'), 'Draw a solid sphere');
+  assert.equal(slide('REVIEW: shows the normal colouring of WP04P1, not the lighting: its colours decode to unit normals 2c − 1'), 'Given other parameters k_d,');
   assert.deepEqual(missedSlides(['a round closed sphere (radius 80 px)']), []); // what passed names nothing
 });

@@ -7,6 +7,7 @@ import { findStandIn, typeOf } from '../../grader/core/standin.js';
 import { serveSubmission } from '../../grader/node/serve-submission.js';
 import { analyse, diffuseFit, samples, highlightSeen, highlightOffset, openMask } from '../../grader/core/measure.js';
 import { effectOf, nameRole, trialOrder } from '../../grader/core/controls.js';
+import { normalAngle } from '../../grader/core/measure/perspective.js';
 import { checkList, verdictOf, reasonsOf } from '../../grader/core/verdict.js';
 import { parseLabels, agreement, agreementText } from '../../grader/node/labels.js';
 import { readFileSync } from 'node:fs';
@@ -227,7 +228,11 @@ test('at a high level a level change moves only outline pixels: still finer or c
  */
 function fakePart({ controls, act = () => {}, key = () => {}, level = 1 }) {
   const state = { level };
-  const normals = (nx, ny, nz) => [0.5 * nx + 0.5, 0.5 * ny + 0.5, 0.5 * nz + 0.5];
+  // the normals an eye 3 radii away sees (WP04P1 asks for a perspective view), as 0.5·n + 0.5
+  const normals = (nx, ny) => {
+    const rho = Math.hypot(nx, ny), t = normalAngle(rho, Math.asin(1 / 3)), k = rho ? Math.sin(t) / rho : 0;
+    return [0.5 * nx * k + 0.5, 0.5 * ny * k + 0.5, 0.5 * Math.cos(t) + 0.5];
+  };
   return {
     state,
     page: {

@@ -1,13 +1,19 @@
-// WP04P1/P2: "colour = 0.5·p + 0.5", read back as normals 2c − 1, and (P2) the normals facing the
-// viewer: front faces only, the depth test and back-face culling enabled.
+// WP04P1/P2: "colour = 0.5·p + 0.5", read back as normals 2c − 1, the sphere "in perspective view"
+// (how far those normals reach at the rim), and (P2) the normals facing the viewer: front faces
+// only, the depth test and back-face culling enabled, or the slide's clockwise experiment. P3–P5:
+// the same colours where lighting is asked are not lighting.
 import { analyse, samples, normalColours, pictureChange } from '../measure.js';
+import { rimAngle } from '../measure/perspective.js';
 import { facesViewer } from '../gather/probes.js';
 
 const fmt = (x, d = 2) => (x === null || x === undefined || Number.isNaN(x) ? '–' : Number(x).toFixed(d));
 
-/** The normals as colours, on the judged picture (`judged`: { img, an }) or the one the page's face controls gave. */
+/**
+ * The normals as colours, on the judged picture (`judged`: { img, an }) or the one the page's face
+ * controls gave. Returns what was read ({ img, an, nc }) for auditPerspective, or null.
+ */
 export function auditNormals({ facts, images, T, must, say, numbers }, judged) {
-  if (!must.has('normalColours') && !must.has('frontFaces')) return;
+  if (!must.has('normalColours') && !must.has('frontFaces')) return null;
   let { img, an } = judged;
   if (facts.facesImage) {
     img = images[facts.facesImage];
@@ -21,7 +27,8 @@ export function auditNormals({ facts, images, T, must, say, numbers }, judged) {
   const probe = facts.noCull;
   if (must.has('frontFaces') && probe) {
     if (probe.faces.depthTest && probe.faces.culling) {
-      const s = probe.image ? images[probe.image] : null;
+      // (a page that drew nothing while culling was off shows its last frame: that tells nothing)
+      const s = probe.image && probe.draws !== 0 ? images[probe.image] : null;
       const sAn = s && analyse(s, T);
       const nc2 = s && !sAn.blank ? normalColours(samples(s, sAn)) : null;
       nearest = nc2 ? nc2.det < 0 && pictureChange(s, img) <= 0.01 : null;
@@ -36,9 +43,56 @@ export function auditNormals({ facts, images, T, must, say, numbers }, judged) {
   if (must.has('frontFaces') && nc && nc.spread >= T.normalsSpread) {
     if (facesViewer(nc, T)) say('pass', 'the visible colours are the normals facing the viewer: front faces only');
     else if (nearest) say('pass', 'the visible faces are the nearest ones (the depth test is on, and culling off draws the same picture): the view looks along +z (clip space without a view matrix?), so their normals point away from +z');
-    else if (nc.det < 0 && nc.residual <= T.facingResidual) say('mistake', 'the inside of the far side shows (the normals face away from the viewer): the front faces are culled, or the depth test is off and the far side is drawn last');
-    else say('mistake', `back faces show through the front (normals do not vary smoothly across the picture, misfit ${fmt(nc.residual)}): depth test or culling missing`);
+    else if (nc.det < 0 && nc.residual <= T.facingResidual) {
+      if (clockwiseExperiment(facts)) say('pass', `note: the back side of the sphere shows, as the slide's clockwise experiment asks ("Try changing the convention to having clockwise wound triangles being front facing … You should now see the back side of the sphere"): ${facts.api === 'webgpu' ? "frontFace: 'cw'" : 'gl.frontFace(gl.CW)'} with back-face culling on; the default, counter-clockwise, shows the front`);
+      else say('mistake', 'the inside of the far side shows (the normals face away from the viewer): the front faces are culled, or the depth test is off and the far side is drawn last');
+    } else say('mistake', `back faces show through the front (normals do not vary smoothly across the picture, misfit ${fmt(nc.residual)}): depth test or culling missing`);
   }
+  return { img, an, nc };
+}
+
+/** The page set clockwise front faces (gl.frontFace(gl.CW), WebGPU's frontFace: 'cw') with back faces culled. */
+function clockwiseExperiment(facts) {
+  const faces = facts.faces || (facts.noCull && facts.noCull.faces) || {};
+  return faces.frontFace === 'cw' && !!faces.culling && (faces.cullMode || 'back') === 'back';
+}
+
+/**
+ * WP04P1/P2: "Draw a solid sphere in perspective view". Where the colours decode to the normals of
+ * one side of the sphere (`seen`: what auditNormals read), the rim's angle tells the projection: an
+ * orthographic view shows normals out to 90° from the view direction, a perspective view from a
+ * distance d none past acos(1/d). Where front and back faces mix, the picture cannot tell: not said.
+ */
+export function auditPerspective({ T, must, say, numbers }, seen) {
+  if (!must.has('perspective') || !seen || !seen.nc) return;
+  const { img, an, nc } = seen;
+  if (nc.spread < T.normalsSpread || nc.unitError > T.normalsUnitError || nc.residual > T.facingResidual) return;
+  const far = nc.det < 0;
+  if (!far && nc.det < T.facingDeterminant) return;
+  const rim = rimAngle(samples(img, an, { maxRho: 0.9 }), far);
+  if (!rim || rim.rms > T.perspectiveFitDegrees) return;
+  numbers.perspective = rim;
+  const short = Math.abs(90 - rim.rimDegrees);
+  const side = far ? 'the inside of the far side, whose normals' : 'the normals';
+  if (short >= 90 - T.orthographicRimDegrees) {
+    say('pass', `in perspective view: ${side} reach ${fmt(rim.rimDegrees, 0)}° from the view direction at the rim, an eye about ${fmt(rim.distance, 1)} sphere radii from the centre (acos(1/d) = ${fmt(90 - short, 0)}°; an orthographic view reaches 90°)`);
+  } else {
+    say('mistake', `not in perspective view (the slide: "Draw a solid sphere in perspective view"): ${side} reach ${fmt(rim.rimDegrees, 0)}° from the view direction at the rim, as an orthographic view shows them (90°); a perspective view from a distance d shows none past acos(1/d) (71° at d = 3): an orthographic projection, or an eye so far away that it looks the same?`);
+  }
+}
+
+/**
+ * P3–P5: a lit step whose colours still decode to unit normals everywhere (WP04P1's 0.5·n + 0.5,
+ * which a diffuse fit accepts: its brightness is linear in n, and it turns with the orbit) shows no
+ * lighting. Returns true when it says so (the shading is then not judged as lighting).
+ */
+export function auditNormalsNotLight({ T, must, say, numbers }, judged) {
+  if (!must.has('diffuse') && !must.has('highlight')) return false;
+  const nc = normalColours(samples(judged.img, judged.an));
+  if (!nc || nc.spread < T.normalsSpread || nc.unitError > T.normalsUnitError || nc.residual > T.facingResidual || Math.abs(nc.det) < T.facingDeterminant) return false;
+  numbers.normalColouring = nc;
+  say('mistake', `shows the normal colouring of WP04P1, not the lighting: its colours decode to unit normals 2c − 1 all over the sphere (off by ${fmt(nc.unitError, 3)}), which is 0.5·n + 0.5, not kd·Le·max(n·w_i, 0) + ambient`);
+  return true;
 }
 
 /** P2: the depth test and back-face culling enabled (the slide: "no visible effect of the back face culling"). */

@@ -1,5 +1,6 @@
 // s at its least (the Phong term with s = 0 is pow(0, 0) where cos φ ≤ 0: undefined, black on
-// many GPUs), and WP04P5's shading per fragment, seen at a coarse level.
+// many GPUs; a note, since the slides do not ask for s = 0), and WP04P5's shading per fragment,
+// seen at a coarse level.
 import { analyse, darkSpots, shadingChange } from '../measure.js';
 
 const fmt = (x, d = 2) => (x === null || x === undefined || Number.isNaN(x) ? '–' : Number(x).toFixed(d));
@@ -15,8 +16,9 @@ export function auditLeastShininess({ facts, images, T, say, numbers, imagesShow
   if (!spots) return;
   numbers.darkSpotsAtLeastS = spots;
   imagesShown.leastS = least.image;
+  // the slides do not ask for s = 0: the spots are worth telling the student, as a note
   if (spots.share >= T.darkSpotShare && spots.count >= 5) {
-    say('review', `s = ${least.value} gives black spots inside the sphere (${fmt(100 * spots.share, 1)}% of it darker than diffuse + ambient): pow(0, 0) is undefined; guard it (e.g. cos φ > 0 ? pow(cos φ, s) : 0)`);
+    say('pass', `note: s = ${least.value} gives black spots inside the sphere (${fmt(100 * spots.share, 1)}% of it darker than diffuse + ambient): pow(0, 0) is undefined (black on many GPUs); guard it (e.g. cos φ > 0 ? pow(cos φ, s) : 0)`);
   } else say('pass', `s = ${least.value} leaves no dark spots inside the sphere (pow(0, 0) guarded)`);
 }
 

@@ -17,7 +17,8 @@ export const facesViewer = (nc, T) => !!nc && nc.det >= T.facingDeterminant && n
  * P2: the page may start with the depth test off or culling on the wrong side: its own controls
  * set as the step ends, until the colours face the viewer (facts.facesImage: the picture after).
  * Then, where the colours are the normals reflected, a frame with culling off (WebGL): the same
- * picture means the nearest faces were showing (facts.noCull).
+ * picture means the nearest faces were showing (facts.noCull; its `draws`, the page's draw calls
+ * meanwhile: none, and the picture tells nothing).
  */
 export async function probeFaces(S, controls, judged) {
   const { T, facts } = S;
@@ -40,9 +41,12 @@ export async function probeFaces(S, controls, judged) {
     const faces = (await S.page.state()).faces || {};
     facts.noCull = { faces };
     if (faces.depthTest && faces.culling) {
+      const before = (await S.page.state()).draws;
       await S.page.setNoCull(true);
       await S.tick(100);
       const s = await S.shot();
+      // a page that draws only when a control asks drew nothing here: its picture tells nothing
+      facts.noCull.draws = (await S.page.state()).draws - before;
       await S.page.setNoCull(false);
       await S.tick(100);
       if (s) facts.noCull.image = S.keep('no-cull', s.img);
