@@ -10,7 +10,7 @@ import { sphereView, shadingOf, viewFits } from './evidence.js';
 import { auditFirstFrame } from './audits/first-frame.js';
 import { auditLevelControls, auditHeavyLevel, auditSphere } from './audits/sphere.js';
 import { auditNormals, auditDepthCulling } from './audits/normals.js';
-import { auditDiffuse, auditPointLight } from './audits/diffuse.js';
+import { auditDiffuse, auditPointLight, auditUnclipped } from './audits/diffuse.js';
 import { auditOrbitStopsAgain, auditOrbit, auditNotStopped } from './audits/orbit.js';
 import { auditHighlight, auditPlaceFarther } from './audits/highlight.js';
 import { auditSliders } from './audits/sliders.js';
@@ -53,7 +53,10 @@ export function auditPart({ facts, images }, rubric) {
   auditNormals(C, judged);
   auditDepthCulling(C);
   const shaded = must.has('diffuse') || must.has('highlight');
-  const shading = shaded ? shadingOf(img, an, T) : null;
+  // a picture that clipped to white was read again with the page's own sliders lowered (gather/visible.js)
+  const shadeImg = facts.shadingImage ? images[facts.shadingImage] : img;
+  const shading = shaded ? shadingOf(shadeImg, an, T) : null;
+  if (shaded) auditUnclipped(C);
   // the lit views kept along the orbit: their sparse fits (the orbit's), and full fits (the highlight's)
   const lit = facts.views.map((v) => ({ ...litView(images[v.image], T), orbiting: v.orbiting, image: v.image })).filter((v) => v.lit);
   if (shaded) auditDiffuse(C, shading, lit);
@@ -61,7 +64,7 @@ export function auditPart({ facts, images }, rubric) {
   if (shaded) auditPointLight(C, shading);
   const later = shaded ? auditHighlight(C, shading, viewFits(lit.map((v) => ({ img: images[v.image] })), T)) : null;
   auditSliders(C, judged, shading);
-  if (must.has('highlight')) auditLeastShininess(C, judged, shading);
+  if (must.has('highlight')) auditLeastShininess(C, { ...judged, img: shadeImg }, shading);
   auditPerFragment(C, judged, shading);
   if (later) auditPlaceFarther(C, later);
   auditNotStopped(C);
