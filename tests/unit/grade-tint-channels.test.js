@@ -122,3 +122,58 @@ test('a highlight at the light is a review on a plain material, and a note where
   assert.ok(!tinted.some((c) => c.level === 'mistake'), tinted.map((c) => c.reason).join(' | '));
   assert.ok(tinted.some((c) => /^note: the highlight's place is not judged: the colours are tinted by the normal/.test(c.reason)), tinted.map((c) => c.reason).join(' | '));
 });
+
+/** A page under the page interface: snap() draws `draw(values)` (values: control index → value as set), setValue records each call. */
+function fakePage(controls, draw) {
+  const values = new Map(controls.map((c) => [c.index, c.value]));
+  const calls = [];
+  return {
+    calls, values,
+    page: {
+      state: async () => ({ api: 'webgl', frames: 0, draws: 1, vertices: 3, pending: 0, faces: {} }),
+      snap: async () => draw(values),
+      controls: async () => controls,
+      setValue: async (c, v, events) => { values.set(c.index, String(v)); calls.push([c.id, String(v), events.join(',')]); },
+      tick: async () => {},
+      click: async () => ({ ok: true }),
+    },
+  };
+}
+
+test('trySliders moves the three sliders of one parameter together, and the artifact says which', async () => {
+  const { session } = await import('../../grader/core/gather/session.js');
+  const { trySliders } = await import('../../grader/core/gather/probes.js');
+  const controls = ['ks_r', 'ks_g', 'ks_b', 'shine'].map((id, k) => ({ ...slider(k, id), max: id === 'shine' ? '100' : '1', value: id === 'shine' ? '30' : '0.6' }));
+  const { page, calls } = fakePage(controls, (v) => sphere((n) => { const ks = [0, 1, 2].map((k) => Number(v.get(k))); return ks.map((x) => 0.3 + 0.5 * x * Math.pow(n[2], Number(v.get(3)))); }));
+  const S = session(page, { part: 'WP04P4', rubric });
+  S.facts.judged = S.keep('judged', await page.snap());
+  await trySliders(S, controls);
+  assert.equal(S.facts.sliders.length, 2);
+  assert.deepEqual(S.facts.sliders[0].controls, [0, 1, 2]);
+  assert.equal(S.facts.sliders[0].role, 'ks');
+  // the three set to 0 before the picture was taken, on input, then back
+  assert.deepEqual(calls.slice(0, 3), [['ks_r', '0', 'input'], ['ks_g', '0', 'input'], ['ks_b', '0', 'input']]);
+  assert.deepEqual(calls.slice(3, 6).map((c) => c[1]), ['0.6', '0.6', '0.6']);
+});
+
+test('a picture washed out to white: the page\'s own kd, Le, La are halved in turn until it is not, and stay there', async () => {
+  const { session } = await import('../../grader/core/gather/session.js');
+  const { unclip } = await import('../../grader/core/gather/visible.js');
+  const controls = [['kd', '2', '1.6'], ['Le', '3', '1.5'], ['La', '1', '0.5']].map(([id, max, value], k) => ({ ...slider(k, id), max, value }));
+  const draw = (v) => sphere((n) => {
+    const kd = Number(v.get(0)), Le = Number(v.get(1)), La = Number(v.get(2)), d = Math.max(dot(n, wi), 0);
+    return [1, 0.96, 0.9].map((c) => c * kd * (La + Le * d));
+  });
+  const { page, values } = fakePage(controls, draw);
+  const S = session(page, { part: 'WP04P5', rubric });
+  const img = await page.snap();
+  const shown = await unclip(S, controls, img, analyse(img, T));
+  assert.ok(shown, 'a picture to read the shading from');
+  assert.deepEqual(S.facts.unclipped.steps.map((s) => [s.role, s.value]), [['kd', 0.8], ['Le', 0.75]]);
+  assert.ok(S.facts.unclipped.before >= T.clippedShare && S.facts.unclipped.after <= T.unclippedShare);
+  assert.equal(values.get(0), '0.8');
+  assert.equal(S.now(controls[1]), 0.75);
+  // a picture that is not washed out is left alone
+  const S2 = session(fakePage(controls, draw).page, { part: 'WP04P5', rubric });
+  assert.equal(await unclip(S2, controls, shown, analyse(shown, T)), null);
+});
