@@ -267,7 +267,7 @@ export function instrumentScript() {
     return text.trim();
   };
 
-  /** The page's controls with what a teacher would read on them. */
+  /** The page's controls with what a teacher would read on them (a colour picker too: one parameter, set as a whole). */
   g.controls = () => {
     const els = [...document.querySelectorAll('button, input, select, [role=button], a[onclick]')];
     return els.map((el, index) => {
@@ -286,7 +286,7 @@ export function instrumentScript() {
       return { index, type, id: el.id || '', name: el.name || '', text: type === 'submit' || type === 'button' ? (el.value + ' ' + text).trim() : text,
         value: el.value, min: el.min, max: el.max, step: el.step, checked: el.checked, disabled: el.disabled, events,
         visible: el.getClientRects().length > 0, options: el.tagName === 'SELECT' ? [...el.options].map((o) => o.value) : undefined };
-    }).filter((c) => c.visible && !['hidden', 'text', 'number', 'color', 'file'].includes(c.type) || c.type === 'number');
+    }).filter((c) => c.visible && !['hidden', 'text', 'number', 'file'].includes(c.type) || c.type === 'number');
   };
 
   /** Sets a range/number input and sends only the events asked for (default: input, then change). */

@@ -10,7 +10,7 @@ import { sphereView, shadingOf, viewFits } from './evidence.js';
 import { auditFirstFrame, notGradedHere } from './audits/first-frame.js';
 import { auditLevelControls, auditHeavyLevel, auditSphere } from './audits/sphere.js';
 import { auditNormals, auditPerspective, auditNormalsNotLight, auditDepthCulling } from './audits/normals.js';
-import { auditDiffuse, auditPointLight } from './audits/diffuse.js';
+import { auditDiffuse, auditPointLight, auditUnclipped } from './audits/diffuse.js';
 import { auditOrbitStopsAgain, auditOrbit, auditNotStopped } from './audits/orbit.js';
 import { auditHighlight, auditPlaceFarther } from './audits/highlight.js';
 import { auditSliders } from './audits/sliders.js';
@@ -57,7 +57,10 @@ export function auditPart({ facts, images }, rubric) {
   auditDepthCulling(C);
   // a lit step that shows WP04P1's colours has no shading to judge: its colours are not lighting
   const shaded = (must.has('diffuse') || must.has('highlight')) && !auditNormalsNotLight(C, judged);
-  const shading = shaded ? shadingOf(img, an, T) : null;
+  // a picture that clipped to white was read again with the page's own sliders lowered (gather/visible.js)
+  const shadeImg = facts.shadingImage ? images[facts.shadingImage] : img;
+  const shading = shaded ? shadingOf(shadeImg, an, T) : null;
+  if (shaded) auditUnclipped(C);
   // the lit views kept along the orbit: their sparse fits (the orbit's), and full fits (the highlight's)
   const lit = !shaded ? [] : facts.views.map((v) => ({ ...litView(images[v.image], T), orbiting: v.orbiting, image: v.image })).filter((v) => v.lit);
   if (shaded) auditDiffuse(C, shading, lit);
@@ -65,7 +68,7 @@ export function auditPart({ facts, images }, rubric) {
   if (shaded) auditPointLight(C, shading);
   const later = shaded ? auditHighlight(C, shading, viewFits(lit.map((v) => ({ img: images[v.image] })), T)) : null;
   auditSliders(C, judged, shading);
-  if (must.has('highlight')) auditLeastShininess(C, judged, shading);
+  if (must.has('highlight')) auditLeastShininess(C, { ...judged, img: shadeImg }, shading);
   auditPerFragment(C, judged, shading);
   if (later) auditPlaceFarther(C, later);
   auditNotStopped(C);

@@ -79,3 +79,70 @@ export function trialOrder(controls, role, patterns, taken = new Set()) {
   const rank = (c) => (named(c, role, patterns) ? 0 : nameRole(c, patterns) === null ? 1 : 2);
   return free.map((c, k) => [rank(c), k, c]).sort((a, b) => a[0] - b[0] || a[1] - b[1]).map((x) => x[2]);
 }
+
+// ---- the sliders of one parameter ----
+const FAMILIES = [['r', 'g', 'b'], ['red', 'green', 'blue'], ['x', 'y', 'z'], ['0', '1', '2']];
+const CHANNEL = new Map(FAMILIES.flatMap((f, k) => f.map((ch) => [ch, k])));
+
+/**
+ * A name split into the parameter it names and a colour or vector channel: "ksR", "ks_r", "kd-red",
+ * "lightX", "ks0", "k_s (g)", "Specular B:" → { stem, channel, family }; null where it names none.
+ */
+export function channelOf(s) {
+  if (!s) return null;
+  const t = String(s).trim();
+  const m = /^(.*?[a-z0-9])(R|G|B|Red|Green|Blue|X|Y|Z)$/.exec(t) || // camelCase: ksR, lightPosX
+    /^(.*?\S)[\s_\-.:([]+(r|g|b|red|green|blue|x|y|z|0|1|2)\]?\)?[\s:=]*$/i.exec(t) || // ks_r, k_s (g), Specular B:
+    /^(.*?[a-z_])(\d)$/i.exec(t); // ks0 (and s1..s5, a numbering: see parameterGroups)
+  if (!m) return null;
+  const stem = m[1].replace(/[\s_\-.:([]+$/, '').toLowerCase();
+  const channel = m[2].toLowerCase();
+  return stem && { stem, channel, family: CHANNEL.has(channel) ? CHANNEL.get(channel) : -1 };
+}
+
+const isSetting = (c) => (isValued(c) && c.type !== 'select') || c.type === 'color';
+
+/**
+ * The page's sliders as the parameters they set (WP04P4: "sliders for the different parameters"):
+ * three sliders of one name stem with r/g/b (red/green/blue), x/y/z or 0/1/2, one a channel, are
+ * one parameter and move together; a colour picker (`<input type=color>`) is one parameter; every
+ * other slider is its own. Names are read from the id, then the name, then the words beside it; a
+ * stem numbered past 2 (s1 … s5) is a numbering, not channels. [{ controls, stem, channels, role }]
+ * in the page's order.
+ */
+export function parameterGroups(controls, patterns) {
+  const settable = controls.filter(isSetting);
+  const grouped = new Map(); // control index → group
+  for (const source of [(c) => c.id, (c) => c.name, (c) => c.text]) {
+    const byStem = new Map();
+    for (const c of settable) {
+      if (grouped.has(c.index) || c.type === 'color') continue;
+      const ch = channelOf(source(c));
+      if (!ch) continue;
+      if (!byStem.has(ch.stem)) byStem.set(ch.stem, []);
+      byStem.get(ch.stem).push({ c, ...ch });
+    }
+    for (const [stem, xs] of byStem) {
+      const fam = xs[0].family;
+      const channels = new Set(xs.map((x) => x.channel));
+      if (fam < 0 || xs.length !== 3 || channels.size !== 3 || xs.some((x) => x.family !== fam)) continue;
+      const g = { controls: xs.map((x) => x.c), stem, channels: FAMILIES[fam].join(', ') };
+      for (const x of xs) grouped.set(x.c.index, g);
+    }
+  }
+  const out = [];
+  for (const c of settable) {
+    const g = grouped.get(c.index);
+    if (g && g.controls[0] !== c) continue;
+    const group = g || { controls: [c], stem: null, channels: null };
+    const asSlider = (x) => ({ ...x, type: 'range' });
+    group.role = (g ? [{ index: -1, type: 'range', id: g.stem, text: g.stem }, ...g.controls] : [c]).map((x) => nameRole(asSlider(x), patterns)).find(Boolean) || null;
+    out.push(group);
+  }
+  return out;
+}
+
+/** How a group of sliders is named in the report: its one control, or its stem and channels. */
+export function describeGroup(g) {
+  return g.controls.length === 1 ? describe(g.controls[0]) : `the ${g.controls.length} "${g.stem}" sliders (${g.channels}: ${g.controls.map((c) => (c.id ? `#${c.id}` : describe(c))).join(', ')}) together`;
+}

@@ -2,7 +2,7 @@
 // the lit edge where the unlit side merges with the background), the diffuse fit and point-light
 // fit of its shading, and where a highlight shows. Pure: a gatherer that acts on one of these (to
 // raise ks, or look farther along the orbit) and the audit that judges it read the same numbers.
-import { analyse, samples, diffuseFit, pointLightFit, perspectiveSamples, highlightSeen, clearlyNearFalloff } from './measure.js';
+import { analyse, samples, shadeFit, pointLightFit, perspectiveSamples, highlightSeen, clearlyNearFalloff } from './measure.js';
 import { fullFit, lightAngle } from './views.js';
 
 /**
@@ -26,7 +26,7 @@ export function sphereView(img, T) {
  * fits clearly better (then the highlight is what rises above it, in `fit`'s highlight fields).
  */
 export function shadingOf(img, an, T) {
-  const fit = diffuseFit(samples(img, an), T);
+  const fit = shadeFit(samples(img, an), T);
   let pointLight = null;
   if (fit && fit.spread >= T.litSpread) {
     pointLight = pointLightFit(perspectiveSamples(img, an, T.pointLightFovy, { max: 1500 }), { ...T, around: fit.light });

@@ -11,6 +11,7 @@ export { openMask, fitCircle } from './measure/silhouette.js';
 export { samples, perspectiveSamples } from './measure/samples.js';
 export { normalColours } from './measure/normals.js';
 export { diffuseFit } from './measure/diffuse.js';
+export { hueByNormal, tintedByNormal, detintedFit, shadeFit } from './measure/tint.js';
 export { highlightOf, highlightOffset, highlightSeen } from './measure/highlight.js';
 export { silhouetteChange, outlineFlips, shadingChange, pictureChange } from './measure/change.js';
 export { pointLightFit, pointLightPredict, highlightAbove, nearPointLight, clearlyBetter, clearlyNearFalloff } from './measure/point-light.js';

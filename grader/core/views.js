@@ -1,7 +1,7 @@
 // A view of the sphere read for its shading: is it lit (a clear spread of brightness, or a clean
 // diffuse fit with a clear diffuse term), and its diffuse fit. Pure: the gatherers use it to decide
 // how long to sample the orbit, the audits to judge the views kept.
-import { analyse, samples, diffuseFit } from './measure.js';
+import { analyse, samples, shadeFit } from './measure.js';
 import { memo } from './memo.js';
 
 /**
@@ -12,7 +12,7 @@ import { memo } from './memo.js';
 export const litView = memo((img, T) => {
   const an = analyse(img, T);
   if (an.blank) return { an, fit: null, lit: false };
-  const fit = diffuseFit(samples(img, an, { max: 1500 }), T);
+  const fit = shadeFit(samples(img, an, { max: 1500 }), T);
   const lit = !!fit && an.roundness < T.orbitCoarseRoundness && (fit.spread >= T.litSpread * 1.5 ||
     (fit.spread >= T.litSpread / 2 && fit.r2 >= T.diffuseR2 && fit.diffuse >= T.diffuseMin));
   return { an, fit, lit };
@@ -21,7 +21,7 @@ export const litView = memo((img, T) => {
 /** A picture's diffuse fit over all its samples. */
 export const fullFit = memo((img, T) => {
   const an = analyse(img, T);
-  return an.blank ? null : diffuseFit(samples(img, an), T);
+  return an.blank ? null : shadeFit(samples(img, an), T);
 });
 
 /** The light's angle from the viewer (+z), in degrees. */

@@ -41,3 +41,12 @@ export function auditPointLight({ T, say }, shading) {
     say('pass', `a point light ${fmt(pointLight.falloff.distance, 1)} radii from the centre, with the 1/r² fall-off (R² ${fmt(pointLight.falloff.r2, 3)}; without it ${fmt(pointLight.none.r2, 3)})`);
   }
 }
+
+/** Where the picture clipped to white, the sliders the gatherer lowered to read its shading (facts.unclipped). */
+export function auditUnclipped({ facts, say, imagesShown }) {
+  const u = facts.unclipped;
+  if (!u) return;
+  imagesShown.unclipped = u.image;
+  const set = u.steps.map((x) => `${x.role} to ${x.value}`).join(', then ');
+  say('pass', `note: the picture clips to white over ${fmt(100 * u.before, 0)}% of the sphere, which hides its shading and highlight; they were judged with the page's own slider${u.steps.length > 1 ? 's' : ''} lowered: ${set} (${fmt(100 * u.after, 0)}% white then)`);
+}

@@ -53,7 +53,25 @@ function judgePlace({ T, say, numbers }, place) {
   // clearly nearer the light than w_h is at the light (w_o or w_r wrong), even within the bound below
   const fromLight = highlightOffset(place.fit.highlightNormal, place.fit.light, 0);
   numbers.highlightFromLight = fromLight;
-  if (!near && offset - fromLight >= T.highlightAtLightDegrees) say('mistake', `the highlight sits at the light, not halfway between the light and the viewer: ${fmt(fromLight, 0)}° from the light, ${fmt(offset, 0)}° from the halfway normal (the light fitted at ${fitted}; ${where}): ${ask}`);
+  const tint = place.fit.tint;
+  const atLight = !near && offset - fromLight >= T.highlightAtLightDegrees;
+  if (tint && !tint.sure && (atLight || offset > T.highlightPlaceDegrees)) {
+    // the hue turns with the normal (the P1 colour kept in the material): the fitted light is unsure
+    say('pass', `note: the highlight's place is not judged: the colours are tinted by the normal (the WP04P1 colour 0.5·n + 0.5 in the material or mixed in), and with ${unsure(tint, T)} the fitted light cannot place it (it is ${fmt(offset, 0)}° from the halfway normal the fit gives, ${where})`);
+    return;
+  }
+  if (atLight) say('mistake', `the highlight sits at the light, not halfway between the light and the viewer: ${fmt(fromLight, 0)}° from the light, ${fmt(offset, 0)}° from the halfway normal (the light fitted at ${fitted}; ${where}): ${ask}`);
   else if (offset > T.highlightPlaceDegrees) say('mistake', `the highlight is ${fmt(offset, 0)}° from where the model puts it (at the normal halfway between the light, fitted at ${fitted}, and the viewer; ${where}): ${ask}`);
   else say('pass', `the highlight sits where the normal is halfway between the light and the viewer (${fmt(offset, 0)}° off, ${where}${near ? `; with the light this near the viewer that halfway normal is only ${fmt(light / 2, 0)}° from the light, so a highlight at the light would pass too` : ''})`);
+}
+
+/** Why a tinted fit cannot place a highlight, in words. */
+function unsure(tint, T) {
+  const why = [];
+  if (tint.slope === null) why.push('no fit that divides the tint out');
+  else {
+    if (tint.slope >= T.tintSlope) why.push(`an albedo whose brightness varies by ±${fmt(100 * tint.slope, 0)}% over the sphere`);
+    if (tint.lightShift > T.tintLightDegrees) why.push(`a light that moves ${fmt(tint.lightShift, 0)}° when the tint is divided out`);
+  }
+  return why.length ? why.join(' and ') : `a fit of R² under ${T.diffuseR2}`;
 }

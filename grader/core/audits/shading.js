@@ -12,7 +12,8 @@ export function auditLeastShininess({ facts, images, T, say, numbers, imagesShow
   const after = images[least.image];
   const { img, an } = judged;
   if (after.width !== img.width || after.height !== img.height) return;
-  const spots = darkSpots(img, an, after, shading.judgedFit, T);
+  const fit = shading.judgedFit.tint ? shading.judgedFit.tint.plain : shading.judgedFit; // the picture's own brightness, not a de-tinted one
+  const spots = darkSpots(img, an, after, fit, T);
   if (!spots) return;
   numbers.darkSpotsAtLeastS = spots;
   imagesShown.leastS = least.image;

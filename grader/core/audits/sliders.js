@@ -1,6 +1,6 @@
 // WP04P4: "sliders for the material and light parameters" that act on the input event (while
 // sliding), and ks used in the specular term.
-import { analyse, samples, diffuseFit, perspectiveSamples, highlightAbove } from '../measure.js';
+import { analyse, samples, shadeFit, perspectiveSamples, highlightAbove } from '../measure.js';
 
 const fmt = (x, d = 2) => (x === null || x === undefined || Number.isNaN(x) ? '–' : Number(x).toFixed(d));
 const SLIDERS = ['kd', 'ks', 's', 'Le', 'La'];
@@ -14,10 +14,12 @@ export function auditSliders({ facts, images, T, must, say, rubric, part }, judg
   const nearModel = shading && shading.nearModel;
   let inputOk = 0, changeOnly = 0, dead = 0;
   const found = {};
+  const together = {}; // role → how its sliders moved together (ks r, g, b: one parameter)
   for (const s of facts.sliders) {
     const { how, role, target } = s;
     if (how !== 'none' && !s.levelSlider) {
       if (role && !found[role]) found[role] = true;
+      if (role && s.controls) together[role] = `${s.controls.length} sliders (${s.channels}) moved together`;
       if (how === 'input') inputOk++;
       else changeOnly++;
     } else if (how === 'none') dead++;
@@ -27,13 +29,13 @@ export function auditSliders({ facts, images, T, must, say, rubric, part }, judg
       const after = images[s.image];
       const a = analyse(after, T);
       const f = a.blank ? null : nearModel ? { highlightPeak: highlightAbove(perspectiveSamples(after, judged.an, T.pointLightFovy, { max: 1500 }), nearModel, T) }
-        : diffuseFit(samples(after, a), T);
+        : shadeFit(samples(after, a), T);
       if (f && f.highlightPeak >= baseFit.highlightPeak * 0.5 && f.highlightPeak >= T.highlightPeak) {
-        say('review', `ks at ${target} leaves the highlight as it was (${fmt(f.highlightPeak)}): is ks used in the specular term?`);
+        say('review', `ks${s.controls ? ` (its ${s.controls.length} sliders)` : ''} at ${target} leaves the highlight as it was (${fmt(f.highlightPeak)}): is ks used in the specular term?`);
       }
     }
   }
-  const named = Object.keys(found);
+  const named = Object.keys(found).map((k) => (together[k] ? `${k}: ${together[k]}` : k));
   const missing = looked.filter((k) => !found[k]);
   const changeOnlyWords = `${changeOnly} slider(s) update the picture only on the change event, not while sliding (the slide asks for the input event)`;
   if (inputOk) say('pass', `${inputOk} slider(s) change the material or light on the input event${named.length ? ` (${named.join(', ')})` : ''}`);

@@ -12,6 +12,7 @@ import { session, TooSlow } from './session.js';
 import { findOrbit, sampleOrbit, look } from './orbit.js';
 import { findLevel, climb } from './level.js';
 import { probeFaces, probeDepthCulling, raiseHighlight, trySliders, leastShininess, placeFarther } from './probes.js';
+import { unclip } from './visible.js';
 import { sphereView, shadingOf, viewFits, highlightShown, placeView, raisedSeen } from '../evidence.js';
 import { lightAngle } from '../views.js';
 
@@ -100,7 +101,10 @@ async function gather(S) {
   const { an } = sphereView(img, T);
   if (must.has('frontFaces')) await probeFaces(S, controls, { img, an });
   if (must.has('depthCulling')) await probeDepthCulling(S, controls);
-  const shading = must.has('diffuse') || must.has('highlight') ? shadingOf(img, an, T) : null;
+  // a picture that clips to white over much of the sphere: read with the page's own kd, Le, La lowered
+  const shaded = must.has('diffuse') || must.has('highlight');
+  const shadeImg = (shaded && await unclip(S, controls, img, an)) || img;
+  const shading = shaded ? shadingOf(shadeImg, an, T) : null;
   let placeLater = false;
   if (must.has('highlight') && shading.fit) {
     const views = viewFits(facts.views.map((v) => ({ img: S.images[v.image] })), T);

@@ -2,8 +2,8 @@
 // culling and winding controls, and a frame with culling off), the highlight (the page's own ks and
 // s sliders, and a view farther along the orbit), the sliders, s at its least. Each records the
 // pictures it took for the audits; the decisions read the same evidence the audits do.
-import { samples, normalColours, diffuseFit, highlightSeen, pictureChange } from '../measure.js';
-import { nameRole, describe, isValued } from '../controls.js';
+import { samples, normalColours, shadeFit, highlightSeen, pictureChange } from '../measure.js';
+import { nameRole, parameterGroups, describeGroup } from '../controls.js';
 import { lightAngle } from '../views.js';
 import { searchOrbit } from './orbit.js';
 
@@ -65,6 +65,23 @@ export async function probeDepthCulling(S, controls) {
   S.facts.faces = faces;
 }
 
+/** A slider's least and greatest values (a colour picker's: black and white). */
+export const least = (c) => (c.type === 'color' ? '#000000' : Number(c.min || 0));
+export const greatest = (c) => (c.type === 'color' ? '#ffffff' : Number(c.max === '' || c.max === undefined ? (c.type === 'range' ? 100 : 1) : c.max));
+
+/** The parameters the page's free sliders set (parameterGroups: ks r, g, b as one). */
+export const groupsOf = (S, controls) => parameterGroups(controls.filter((c) => !S.taken.has(c.index)), S.P);
+
+/** Sets every slider of a parameter group (`value(c)` each), on `events`; returns the values set. */
+export async function setGroup(S, g, value, events = ['input', 'change']) {
+  const vs = g.controls.map(value);
+  for (let k = 0; k < vs.length; k++) await S.page.setValue(g.controls[k], vs[k], events);
+  return vs;
+}
+
+/** A group's entry in facts: its first control, and the others (and their values) where it has more. */
+const groupFacts = (g, vs) => ({ control: g.controls[0].index, ...(g.controls.length > 1 ? { controls: g.controls.map((c) => c.index), values: vs, channels: g.channels } : {}) });
+
 /**
  * P4/P5, no highlight seen: the page's own material sliders show it: ks up to its greatest, then s
  * down to 10 (a broad highlight). facts.raised: [{ role, control, value, image, seen }].
@@ -74,49 +91,57 @@ export async function raiseHighlight(S, controls) {
   const set = [];
   const s10 = (c) => Math.max(Number(c.min || 0) + 1, Math.min(10, Number(c.max || 10)));
   const raised = S.facts.raised = [];
-  for (const [r, to] of [['ks', (c) => Number(c.max === '' || c.max === undefined ? 1 : c.max)], ['s', s10]]) {
-    const c = free(S, controls, r, (x) => x.type === 'range' || x.type === 'number');
-    if (!c || raised.some((x) => x.seen)) continue;
-    await S.page.setValue(c, to(c), ['input', 'change']);
-    set.push(c);
+  const groups = groupsOf(S, controls).filter((g) => g.controls.every((c) => c.type === 'range' || c.type === 'number' || (g.role === 'ks' && c.type === 'color')));
+  for (const [r, to] of [['ks', (c) => (c.type === 'color' ? greatest(c) : Number(c.max === '' || c.max === undefined ? 1 : c.max))], ['s', s10]]) {
+    const g = groups.find((x) => x.role === r);
+    if (!g || raised.some((x) => x.seen)) continue;
+    const c = g.controls[0];
+    const vs = await setGroup(S, g, to);
+    set.push(g);
     await S.tick(100);
     const sh = await S.shot();
-    const f = sh && !sh.an.blank ? diffuseFit(samples(sh.img, sh.an), T) : null;
+    const f = sh && !sh.an.blank ? shadeFit(samples(sh.img, sh.an), T) : null;
     const seen = !!f && highlightSeen(f, T);
-    raised.push({ role: r, control: c.index, value: to(c), broad: r === 's' && s10(c) < Number(c.value), image: sh ? S.keep(`raised-${r}`, sh.img) : null, seen });
-    S.act(`set ${describe(c)} to ${to(c)} to look for a highlight${seen ? ': one shows' : ''}`);
+    raised.push({ role: r, ...groupFacts(g, vs), value: vs[0], broad: r === 's' && s10(c) < Number(S.now(c)), image: sh ? S.keep(`raised-${r}`, sh.img) : null, seen });
+    S.act(`set ${describeGroup(g)} to ${vs[0]} to look for a highlight${seen ? ': one shows' : ''}`);
   }
-  for (const c of set) await S.page.setValue(c, c.value, ['input', 'change']);
+  for (const g of set) await setGroup(S, g, (c) => S.now(c));
   if (set.length) await S.tick(100);
 }
 
-/** P4: each slider set far from where it is, on input (else change), its picture kept; then back. */
+/**
+ * P4: each parameter's sliders (one slider, or the three of a colour or vector: parameterGroups)
+ * set far from where they are, on input (else change), its picture kept; then back.
+ */
 export async function trySliders(S, controls) {
-  const { T, P, facts } = S;
+  const { T, facts } = S;
   S.step('trying the sliders');
-  const base = S.images[facts.judged];
-  const sliders = controls.filter((c) => isValued(c) && c.type !== 'select' && !S.taken.has(c.index));
-  facts.slidersFound = sliders.length;
-  for (const c of sliders.slice(0, T.maxSliderTrials)) {
-    const k = nameRole(c, P);
-    const lo = Number(c.min || 0), hi = Number(c.max === '' || c.max === undefined ? 100 : c.max);
-    const target = k === 's' ? (Number(c.value) > (lo + hi) / 2 ? lo : hi) : (Number(c.value) > lo ? lo : hi); // s: far from where it is; others: to the least
-    await S.page.setValue(c, target, ['input']);
+  const base = S.images[facts.shadingImage || facts.judged];
+  const groups = groupsOf(S, controls);
+  facts.slidersFound = groups.length;
+  for (const g of groups.slice(0, T.maxSliderTrials)) {
+    const k = g.role;
+    const target = (c) => {
+      if (c.type === 'color') return least(c);
+      const lo = Number(c.min || 0), hi = Number(c.max === '' || c.max === undefined ? 100 : c.max);
+      return k === 's' ? (Number(S.now(c)) > (lo + hi) / 2 ? lo : hi) : (Number(S.now(c)) > lo ? lo : hi); // s: far from where it is; others: to the least
+    };
+    const vs = await setGroup(S, g, target, ['input']);
     await S.tick(100);
     let after = await S.page.snap();
     let how = 'input';
     if (pictureChange(base, after) <= T.sliderChange) {
-      await S.page.setValue(c, target, ['change']);
+      await setGroup(S, g, target, ['change']);
       await S.tick(100);
       after = await S.page.snap();
       how = pictureChange(base, after) > T.sliderChange ? 'change' : 'none';
     }
     const r = k && k !== 'levelSlider' ? k : null;
-    S.act(`set ${describe(c)} to ${target} (${how === 'none' ? 'no visible change' : `the picture changed on the ${how} event`})`);
-    if (how !== 'none' && k !== 'levelSlider') facts.roles[r || `slider ${Object.keys(facts.roles).length}`] = `${describe(c)}: changes the shading on ${how}`;
-    facts.sliders.push({ control: c.index, role: r, levelSlider: k === 'levelSlider', target, how, image: S.keep(`slider-${facts.sliders.length}`, after) });
+    S.act(`set ${describeGroup(g)} to ${vs[0]} (${how === 'none' ? 'no visible change' : `the picture changed on the ${how} event`})`);
+    if (how !== 'none' && k !== 'levelSlider') facts.roles[r || `slider ${Object.keys(facts.roles).length}`] = `${describeGroup(g)}: changes the shading on ${how}`;
+    facts.sliders.push({ ...groupFacts(g, vs), role: r, levelSlider: k === 'levelSlider', target: vs[0], how, image: S.keep(`slider-${facts.sliders.length}`, after) });
     // back to where it was (drawn with the next slider's frame, or the last one below)
-    await S.page.setValue(c, c.value, ['input', 'change']);
+    await setGroup(S, g, (c) => S.now(c));
   }
   await S.tick(100);
 }
@@ -130,7 +155,7 @@ export async function leastShininess(S, controls) {
   await S.page.setValue(c, lo, ['input', 'change']);
   await S.tick(100);
   const after = await S.page.snap();
-  await S.page.setValue(c, c.value, ['input', 'change']);
+  await S.page.setValue(c, S.now(c), ['input', 'change']);
   await S.tick(100);
   if (after) S.facts.leastS = { value: lo, image: S.keep('least-s', after) };
 }
@@ -145,17 +170,23 @@ export async function placeFarther(S, controls) {
   S.step('looking along the orbit for a view with the light away from the viewer');
   const raised = (facts.raised || []).some((x) => x.seen) ? facts.raised : []; // the sliders as they showed the highlight
   const byIndex = (i) => controls.find((c) => c.index === i);
-  for (const x of raised) await S.page.setValue(byIndex(x.control), x.value, ['input', 'change']);
+  const each = async (value) => {
+    for (const x of raised) {
+      const cs = (x.controls || [x.control]).map(byIndex);
+      for (let k = 0; k < cs.length; k++) await S.page.setValue(cs[k], value(x, k, cs[k]), ['input', 'change']);
+    }
+  };
+  await each((x, k) => (x.values ? x.values[k] : x.value));
   let far = { img: null, k: 0 };
   if (await S.tryClick(orbit.start, 'the orbit control', { watchMotion: true }) === 'starts') {
     far = await searchOrbit(S, (img, an) => {
       if (an.blank || an.roundness >= T.orbitCoarseRoundness) return false;
-      const f = diffuseFit(samples(img, an), T);
+      const f = shadeFit(samples(img, an), T);
       return !!f && f.r2 >= T.diffuseR2 && highlightSeen(f, T) && lightAngle(f) >= T.highlightPlaceLightDegrees;
     });
     await S.tryClick(orbit.stop, 'the orbit control again', { watchMotion: true });
   }
-  for (const x of raised) await S.page.setValue(byIndex(x.control), byIndex(x.control).value, ['input', 'change']);
+  await each((x, k, c) => S.now(c));
   S.act(`sampled the orbit at ${far.k} positions for a view with the light ${T.highlightPlaceLightDegrees}° or more from the viewer${raised.length ? `, ${raised.map((x) => `${x.role} at ${x.value}`).join(' and ')}` : ''}: ${far.img ? 'one shows the highlight' : 'none shows the highlight over a clean diffuse fit'}`);
   facts.placeFarther = { image: far.img ? S.keep('highlight-place', far.img) : null };
 }

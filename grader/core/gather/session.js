@@ -40,6 +40,7 @@ export function session(page, { part, rubric, progress = () => {}, deadline = In
     taken: new Set(), // controls given a role
     R: {}, // role → control
     trialsMade: 0,
+    values: new Map(), // control index → the value we left it at (a slider lowered to make the shading visible stays lowered)
     // what a frame of this page costs, in its own work (vertices, and draw calls at drawCallWork
     // vertices each), from the last frames run
     frameWork: 0,
@@ -78,6 +79,15 @@ export function session(page, { part, rubric, progress = () => {}, deadline = In
     keep(name, img) {
       S.images[name] = img;
       return name;
+    },
+    /** Sets a value control and remembers it as where the page now stands. */
+    async set(c, value, events = ['input', 'change']) {
+      await page.setValue(c, value, events);
+      S.values.set(c.index, value);
+    },
+    /** A value control's value as we left it (else as the page had it). */
+    now(c) {
+      return S.values.has(c.index) ? S.values.get(c.index) : c.value;
     },
     act(text) {
       facts.actions.push(text);

@@ -1,0 +1,51 @@
+// When a property of the step cannot be seen, the page's own controls make it visible, as a
+// teacher does by hand: a picture that clips to white over much of the sphere hides its diffuse
+// shading and its highlight, so the page's own kd, Le and La sliders are lowered (halved toward
+// their least, one at a time) until it no longer does. The sliders stay where they were lowered for
+// the rest of the part (the slider trials, the highlight's search), and facts.unclipped says what
+// was changed, so that the reasons can name it.
+import { samples } from '../measure.js';
+import { groupsOf, setGroup, least } from './probes.js';
+
+/** The share of the sphere's samples (the judged view's outline `an`) white (every channel clipped). */
+export function clippedShare(img, an) {
+  const pts = samples(img, an);
+  return pts.length ? pts.filter((s) => Math.min(...s.c) >= 0.98).length / pts.length : 0;
+}
+
+/**
+ * The judged picture `img` (outline `an`) clips over clippedShare or more of the sphere: the page's
+ * kd, Le and La sliders halved in turn (at most maxUnclipSteps settings) until at most
+ * unclippedShare clips. facts.unclipped: { before, after, steps: [{ role, control, value }], image };
+ * returns the picture to read the shading from, or null (nothing lowered).
+ */
+export async function unclip(S, controls, img, an) {
+  const { T, facts } = S;
+  const before = clippedShare(img, an);
+  if (before < T.clippedShare) return null;
+  const groups = ['kd', 'Le', 'La'].map((r) => groupsOf(S, controls).find((g) => g.role === r && g.controls.every((c) => c.type !== 'color')))
+    .filter(Boolean);
+  if (!groups.length) return null;
+  S.step('lowering the page\'s own sliders: the picture clips to white');
+  const steps = [];
+  let share = before, shot = null;
+  for (let k = 0; k < T.maxUnclipSteps && share > T.unclippedShare; k++) {
+    const g = groups[k % groups.length];
+    const vs = await setGroup(S, g, (c) => {
+      const lo = least(c), v = Number(S.now(c));
+      return Math.round(1000 * (lo + (v - lo) / 2)) / 1000;
+    });
+    g.controls.forEach((c, i) => S.values.set(c.index, vs[i]));
+    await S.tick(100);
+    const sh = await S.shot();
+    if (!sh || sh.an.blank) break;
+    shot = sh;
+    share = clippedShare(sh.img, an);
+    steps.push({ role: g.role, control: g.controls[0].index, value: vs[0] });
+    S.act(`set the ${g.role} slider to ${vs[0]} (the picture clipped to white over ${Math.round(100 * before)}% of the sphere; now ${Math.round(100 * share)}%)`);
+  }
+  if (!shot) return null;
+  facts.unclipped = { before, after: share, steps, image: S.keep('unclipped', shot.img) };
+  facts.shadingImage = facts.unclipped.image;
+  return shot.img;
+}
