@@ -51,7 +51,7 @@ export function nameRole(c, patterns) {
  * drawn), 'blank' (nothing drawn after it), 'none'.
  */
 export function effectOf({ before, after, later, wasMoving }, T) {
-  const moving = pictureChange(after.img, later.img) > 0.001;
+  const moving = pictureChange(after.img, later.img) > T.pictureMoves;
   if (!wasMoving && moving) return 'starts';
   if (wasMoving && !moving) return 'stops';
   if (wasMoving) return 'none'; // whatever else it did cannot be told while the picture moves
@@ -61,13 +61,13 @@ export function effectOf({ before, after, later, wasMoving }, T) {
   if (sil > T.silhouetteSettled) {
     // a finer mesh inscribed in the sphere covers more of its disc, and its outline is rounder
     const rounder = before.an.roundness - after.an.roundness, larger = (after.an.area - before.an.area) / before.an.area;
-    if (Math.abs(larger) > 0.002) return larger > 0 ? 'finer' : 'coarser';
+    if (Math.abs(larger) > T.levelAreaChange) return larger > 0 ? 'finer' : 'coarser';
     return rounder > 0 ? 'finer' : 'coarser';
   }
   // at a high level: a few outline pixels flip, all of them at the outline, and the area moves with them
   const f = outlineFlips(before.an, after.an);
   if (f && f.flips >= 3 && f.atOutline >= 0.9 * f.flips && Math.abs(f.area) >= Math.max(2, 0.5 * f.flips)) return f.area > 0 ? 'finer' : 'coarser';
-  return pictureChange(before.img, after.img) > 0.0005 ? 'shading' : 'none';
+  return pictureChange(before.img, after.img) > T.pictureChanged ? 'shading' : 'none';
 }
 
 /**

@@ -13,7 +13,7 @@ export function sphereView(img, T) {
   let an = analyse(img, T);
   let circleArc = null;
   const circ = an.circle;
-  if (!an.blank && !(an.roundness <= T.roundness && an.fill >= T.fill) && circ && circ.roundness <= T.roundness && circ.arc >= 180 && !an.touches) {
+  if (!an.blank && !(an.roundness <= T.roundness && an.fill >= T.fill) && circ && circ.roundness <= T.roundness && circ.arc >= T.litEdgeArcDegrees && !an.touches) {
     an = { ...an, cx: circ.cx, cy: circ.cy, radius: circ.r, roundness: circ.roundness, fill: 1 };
     circleArc = circ.arc;
   }

@@ -14,8 +14,8 @@ export function auditDiffuse({ T, must, say, numbers }, shading, lit) {
   // lit on both sides shows where the light comes from the side: any view seen on the orbit (or
   // over all pixels: a crescent lit from behind is left out of the first fit as if a highlight; on
   // a page lit one-sided, |n·w_i| never explains all pixels better, it lights the dark side)
-  const twoSided = [fit, ...lit.map((v) => v.fit)].filter(Boolean).find((f) => (f.r2TwoSided > f.r2 + 0.03 && f.r2 < 0.97) ||
-    (f.r2TwoSidedAll > f.r2All + 0.015 && f.r2TwoSidedAll >= T.diffuseR2));
+  const twoSided = [fit, ...lit.map((v) => v.fit)].filter(Boolean).find((f) => (f.r2TwoSided > f.r2 + T.twoSidedGain && f.r2 < T.twoSidedBelow) ||
+    (f.r2TwoSidedAll > f.r2All + T.twoSidedGainAll && f.r2TwoSidedAll >= T.diffuseR2));
   if (!fit) say('mistake', 'too little of the sphere to read its shading');
   else if (fit.spread < T.litSpread / 2) say('mistake', `the sphere is evenly bright: no diffuse shading to see (in ${1 + lit.length} views${orbitFits.length ? ' along the orbit' : ''})`);
   else if (twoSided) {

@@ -18,7 +18,7 @@ export function auditLeastShininess({ facts, images, T, say, numbers, imagesShow
   numbers.darkSpotsAtLeastS = spots;
   imagesShown.leastS = least.image;
   // the slides do not ask for s = 0: the spots are worth telling the student, as a note
-  if (spots.share >= T.darkSpotShare && spots.count >= 5) {
+  if (spots.share >= T.darkSpotShare && spots.count >= T.darkSpotCount) {
     say('pass', `note: s = ${least.value} gives black spots inside the sphere (${fmt(100 * spots.share, 1)}% of it darker than diffuse + ambient): pow(0, 0) is undefined (black on many GPUs); guard it (e.g. cos φ > 0 ? pow(cos φ, s) : 0)`);
   } else say('pass', `s = ${least.value} leaves no dark spots inside the sphere (pow(0, 0) guarded)`);
 }

@@ -30,7 +30,7 @@ export function auditSliders({ facts, images, T, must, say, rubric, part }, judg
       const a = analyse(after, T);
       const f = a.blank ? null : nearModel ? { highlightPeak: highlightAbove(perspectiveSamples(after, judged.an, T.pointLightFovy, { max: 1500 }), nearModel, T) }
         : shadeFit(samples(after, a), T);
-      if (f && f.highlightPeak >= baseFit.highlightPeak * 0.5 && f.highlightPeak >= T.highlightPeak) {
+      if (f && f.highlightPeak >= baseFit.highlightPeak * T.ksLeftShare && f.highlightPeak >= T.highlightPeak) {
         say('review', `ks${s.controls ? ` (its ${s.controls.length} sliders)` : ''} at ${target} leaves the highlight as it was (${fmt(f.highlightPeak)}): is ks used in the specular term?`);
       }
     }

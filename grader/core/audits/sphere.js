@@ -34,6 +34,6 @@ export function auditSphere({ T, say, numbers }, judged, ladder, firstRoundness)
   else say('mistake', `the object is not a round closed sphere (roundness ${fmt(an.roundness, 3)}, fill ${fmt(an.fill)}${ladder.length > 1 ? ', after subdividing' : ''})`);
   if (ladder.length > 2) {
     const rs = ladder.filter((r) => Number.isFinite(r));
-    if (rs[0] > rs[rs.length - 1] + 0.02) say('pass', `rounder with each level (roundness ${fmt(rs[0], 3)} → ${fmt(rs[rs.length - 1], 3)})`);
+    if (rs[0] > rs[rs.length - 1] + T.rounderBy) say('pass', `rounder with each level (roundness ${fmt(rs[0], 3)} → ${fmt(rs[rs.length - 1], 3)})`);
   }
 }
