@@ -31,7 +31,7 @@ test.beforeAll(({}, testInfo) => {
   const run = spawnSync(process.execPath, ['grader/node/grade.js', '--batch', cls, '--similarity-only', '--out', out], { encoding: 'utf8' });
   expect(run.status, run.stderr).toBe(0);
 });
-test.afterAll(() => rmSync(dir, { recursive: true, force: true }));
+test.afterAll(() => { if (dir) rmSync(dir, { recursive: true, force: true }); });
 
 test('the report leads from the class grid to the planted pair, its fragments side by side', async ({ page }) => {
   await page.goto(pathToFileURL(path.join(out, 'report.html')).href);
