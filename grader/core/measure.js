@@ -16,3 +16,4 @@ export { highlightOf, highlightOffset, highlightSeen } from './measure/highlight
 export { silhouetteChange, outlineFlips, shadingChange, pictureChange } from './measure/change.js';
 export { pointLightFit, pointLightPredict, highlightAbove, nearPointLight, clearlyBetter, clearlyNearFalloff } from './measure/point-light.js';
 export { darkSpots } from './measure/dark-spots.js';
+export { unnormalisedInputs } from './measure/fragment-normals.js';

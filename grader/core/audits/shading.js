@@ -1,7 +1,7 @@
 // s at its least (the Phong term with s = 0 is pow(0, 0) where cos φ ≤ 0: undefined, black on
 // many GPUs; a note, since the slides do not ask for s = 0), and WP04P5's shading per fragment,
 // seen at a coarse level.
-import { analyse, darkSpots, shadingChange } from '../measure.js';
+import { analyse, darkSpots, shadingChange, unnormalisedInputs } from '../measure.js';
 
 const fmt = (x, d = 2) => (x === null || x === undefined || Number.isNaN(x) ? '–' : Number(x).toFixed(d));
 
@@ -37,6 +37,8 @@ export function fragmentPow(sources) {
 /** P5: the highlight per fragment: as smooth at a coarse level as at the finest; else pow() in the fragment shader. */
 export function auditPerFragment({ facts, images, T, must, say, numbers, imagesShown }, judged, shading) {
   if (!must.has('perFragment') || !shading || !shading.fit) return;
+  const raw = facts.sources ? unnormalisedInputs(facts.sources) : [];
+  if (raw.length) say('mistake', `the fragment shader takes the interpolated ${raw.join(' and ')} into dot() or reflect() without normalising ${raw.length > 1 ? 'them' : 'it'}: interpolated directions are shorter than 1 between the vertices (the slides: "most importantly, we must normalize the direction vectors in the fragment shader")`);
   const j = facts.judgedLevel;
   const coarseAt = facts.stopped && !facts.viewMoved ? facts.ladder.findIndex((s, k) => k !== j && !s.blank && s.roundness < T.coarseRoundness && s.image) : -1;
   const coarse = coarseAt >= 0 ? images[facts.ladder[coarseAt].image] : null;
