@@ -81,3 +81,17 @@ export function raisedSeen(raised, images, T) {
   return { fit: fullFit(img, T), broad: x.broad,
     where: `the judged view with ${set.join(' and ')} set by the page's own slider${set.length > 1 ? 's' : ''}` };
 }
+
+/**
+ * The highlight's evidence, as the gatherer acts on it and the audit judges it: where it shows (the
+ * judged view, a lit view along the orbit, else with the page's sliders raised: `raised`, absent
+ * before they are tried) and the view to place it in (none with a near point light). `farther`:
+ * the light in that view is too near the viewer to tell w_h from w_i, so the place is better
+ * judged farther along the orbit. { seen, place, farther }.
+ */
+export function highlightEvidence(shading, views, raised, images, T) {
+  let seen = highlightShown(shading, views, T);
+  if (!seen && !shading.nearModel && raised) seen = raisedSeen(raised, images, T);
+  const place = seen && !shading.nearModel ? placeView(seen, views, T) : null;
+  return { seen, place, farther: !!place && lightAngle(place.fit) < T.highlightPlaceLightDegrees };
+}

@@ -2,7 +2,7 @@
 // or with the page's own ks and s sliders raised), and it sits at w_h, halfway between the light
 // and the viewer (the slides' w_r · w_o peaks there too), not at the light.
 import { highlightOffset } from '../measure.js';
-import { highlightShown, placeView, raisedSeen } from '../evidence.js';
+import { highlightEvidence } from '../evidence.js';
 import { fullFit, lightAngle } from '../views.js';
 
 const fmt = (x, d = 2) => (x === null || x === undefined || Number.isNaN(x) ? '–' : Number(x).toFixed(d));
@@ -15,13 +15,11 @@ export function auditHighlight(C, shading, views) {
   const { facts, images, T, must, say, numbers } = C;
   if (!must.has('highlight') || !shading.fit) return null;
   const fit = shading.judgedFit;
-  let seen = highlightShown(shading, views, T);
-  if (!seen && !shading.nearModel && facts.raised) seen = raisedSeen(facts.raised, images, T);
+  const { seen, place } = highlightEvidence(shading, views, facts.raised, images, T);
   numbers.highlightViews = 1 + views.length;
   if (seen) say('pass', `a specular highlight in ${seen.where} (up to ${fmt(100 * seen.fit.highlightPeak, 0)}% of the way from the diffuse fit to white, ${fmt(seen.fit.highlightRise, 2)} above it)`);
   let later = null;
   if (seen && !shading.nearModel) {
-    const place = placeView(seen, views, T);
     if (!place) say('pass', 'note: the highlight\'s place is not judged: it shows only with s lowered to 10 by the page\'s own slider, which makes it too broad to place');
     else if (facts.placeFarther) later = place;
     else judgePlace(C, place);

@@ -13,8 +13,7 @@ import { findOrbit, sampleOrbit, look } from './orbit.js';
 import { findLevel, climb } from './level.js';
 import { probeFaces, probeDepthCulling, raiseHighlight, trySliders, leastShininess, placeFarther } from './probes.js';
 import { unclip } from './visible.js';
-import { sphereView, shadingOf, viewFits, highlightShown, placeView, raisedSeen } from '../evidence.js';
-import { lightAngle } from '../views.js';
+import { sphereView, shadingOf, viewFits, highlightEvidence } from '../evidence.js';
 
 /** Gathers one opened part: { facts, images }. `timing` ({ method: { ms, calls } }) hears where the time went. */
 export async function gatherPart(page, { part, rubric, progress = () => {}, deadline = Infinity, timing = {} }) {
@@ -108,13 +107,8 @@ async function gather(S) {
   let placeLater = false;
   if (must.has('highlight') && shading.fit) {
     const views = viewFits(facts.views.map((v) => ({ img: S.images[v.image] })), T);
-    let seen = highlightShown(shading, views, T);
-    if (!seen && !shading.nearModel) {
-      await raiseHighlight(S, controls);
-      seen = raisedSeen(facts.raised, S.images, T);
-    }
-    const place = seen && !shading.nearModel ? placeView(seen, views, T) : null;
-    placeLater = !!place && lightAngle(place.fit) < T.highlightPlaceLightDegrees && !!orbit.start && !!orbit.stop && stopped;
+    if (!highlightEvidence(shading, views, null, S.images, T).seen && !shading.nearModel) await raiseHighlight(S, controls);
+    placeLater = highlightEvidence(shading, views, facts.raised, S.images, T).farther && !!orbit.start && !!orbit.stop && stopped;
   }
   if (must.has('sliders')) await trySliders(S, controls);
   if (must.has('highlight') && shading.fit && stopped) await leastShininess(S, controls);
