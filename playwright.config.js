@@ -1,7 +1,7 @@
 // Browser tests: Debian's Chromium and Firefox ESR (never a downloaded browser), small canvases,
 // one server. Every Chromium spec runs under WebGL 2 (the page's ?api= is set from the project),
-// what a WebGL 1 context can change under WebGL 1, and the page specs again under WebGPU, whose
-// screenshots must match the WebGL 2 baselines. The project "firefox" runs firefox.spec.js, which
+// what a WebGL 1 context can change under WebGL 1, and what the API changes in the page specs
+// again under WebGPU, whose screenshots must match the WebGL 2 baselines. The project "firefox" runs firefox.spec.js, which
 // launches Firefox itself (puppeteer-core over WebDriver BiDi: tests/browser/firefox-fixtures.js).
 import { defineConfig } from '@playwright/test';
 import { CHROMIUM, CHROMIUM_ARGS } from './tools/browser.js';
@@ -27,15 +27,17 @@ export default defineConfig({
   projects: [
     { name: 'webgl2', use: { api: 'webgl2' }, testIgnore: /firefox\.spec\.js/ },
     // WebGL 1 runs the same GLSL and the same JavaScript as WebGL 2 (only getContext differs), so
-    // here it runs what the context can change: the page contract and the unlit screenshots
-    // (foundation), and the numerical edge cases against the exact render. The lit steps and
-    // their controls under WebGL 1 are held by the Firefox suite (another engine, the same exact
-    // reference); the faults (fuzzed URLs, a lost context, heap) run the same code in either context.
-    { name: 'webgl1', use: { api: 'webgl' }, testIgnore: /(lighting|faults|bench|firefox)\.spec\.js/ },
+    // here it runs what the context can change: the unlit steps' pictures, buffers and state
+    // (foundation). The lit steps under WebGL 1 are held by the Firefox suite (another engine, the
+    // same exact reference). Tests tagged @any-api run once, under WebGL 2: the same JavaScript
+    // whichever API (the controls, the URL, fuzzed values), or a picture whose WebGPU twin
+    // webgpu.spec.js holds equal to WebGL 2's in the same views.
+    { name: 'webgl1', use: { api: 'webgl' }, testMatch: /foundation\.spec\.js/, grepInvert: /@any-api/ },
     {
       name: 'webgpu',
       use: { api: 'webgpu', launchOptions: { executablePath: CHROMIUM, args: [...CHROMIUM_ARGS, ...WEBGPU_ARGS] } },
       testMatch: /(foundation|lighting|faults|edge-cases|webgpu)\.spec\.js/,
+      grepInvert: /@any-api/,
       // the same pictures: a WebGPU page is held to the WebGL 2 baselines
       snapshotPathTemplate: 'tests/screenshots/webgl2/{arg}{ext}',
     },

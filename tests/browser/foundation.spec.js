@@ -6,7 +6,7 @@
 import { test, expect, open, scene, andDraw, canvasPixels, expectCanvasScreenshot, messages } from './fixtures.js';
 import { checkNormalColours } from './bounds.js';
 
-test('the front page lists the steps in order and every link works', async ({ page }) => {
+test('the front page lists the steps in order and every link works', { tag: '@any-api' }, async ({ page }) => {
   await page.goto('/');
   const links = page.locator('ol.steps a');
   const hrefs = await links.evaluateAll((as) => as.map((a) => a.getAttribute('href')));
@@ -37,7 +37,7 @@ test.describe('WP04P1', () => {
     checkNormalColours(await canvasPixels(page), s.camera, { allowFar: true });
   });
 
-  test('Subdivide and Coarsen step the level, stop at the ends, and show the count', async ({ page }) => {
+  test('Subdivide and Coarsen step the level, stop at the ends, and show the count', { tag: '@any-api' }, async ({ page }) => {
     await open(page, '/WP04P1/', { level: 1 });
     const subdivide = page.getByRole('button', { name: 'Subdivide' });
     const coarsen = page.getByRole('button', { name: 'Coarsen' });
@@ -130,7 +130,7 @@ test.describe('bad input and failures', () => {
     ['api=foo', { api: 'foo' }, 5, /api=foo is not one of webgl2, webgl/],
   ];
   for (const [name, params, level, notice] of cases) {
-    test(`${name} draws a valid sphere and says what was fixed`, async ({ page }) => {
+    test(`${name} draws a valid sphere and says what was fixed`, { tag: '@any-api' }, async ({ page }) => {
       const s = await open(page, '/WP04P1/', params);
       expect(s.level).toBe(level);
       expect(s.vertices).toBe(12 * 4 ** level);
@@ -197,14 +197,14 @@ test.describe('bad input and failures', () => {
     await expect(page.locator('#messages .notice')).toContainText('WebGL 2 is not available');
   });
 
-  test('opened from file:// the page says how to serve it', async ({ page }) => {
+  test('opened from file:// the page says how to serve it', { tag: '@any-api' }, async ({ page }) => {
     page.expectProblems(/CORS|file:|Failed to load|ERR_/i);
     await page.goto(new URL('../../WP04P1/index.html', import.meta.url).href);
     await expect(page.locator('#messages .error')).toContainText('npm start');
     expect(await messages(page)).toContain('file://');
   });
 
-  test('the address follows the controls and reloads to the same view', async ({ page }) => {
+  test('the address follows the controls and reloads to the same view', { tag: '@any-api' }, async ({ page }) => {
     await open(page, '/WP04P2/', { level: 2 });
     await andDraw(page, () => page.getByRole('button', { name: 'Subdivide' }).click());
     await andDraw(page, () => page.getByRole('checkbox', { name: 'Depth test' }).uncheck());

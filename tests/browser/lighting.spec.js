@@ -45,7 +45,7 @@ test.describe('against the exact reference', () => {
     });
   }
 
-  test('WP04P3 (Gouraud, diffuse only) at the default level: RMSE ≤ 2/255', async ({ page }, testInfo) => {
+  test('WP04P3 (Gouraud, diffuse only) at the default level: RMSE ≤ 2/255', { tag: '@any-api' }, async ({ page }, testInfo) => {
     const s = await open(page, '/WP04P3/', STILL);
     expect(s.material.ks).toBeUndefined();
     const stats = await errorAgainstReference(page);
@@ -54,7 +54,7 @@ test.describe('against the exact reference', () => {
     expect(stats.silhouetteMismatchRatio).toBeLessThanOrEqual(0.005);
   });
 
-  test('WP04P4 (Gouraud with highlights) is further off than WP04P5 at low levels', async ({ page }, testInfo) => {
+  test('WP04P4 (Gouraud with highlights) is further off than WP04P5 at low levels', { tag: '@any-api' }, async ({ page }, testInfo) => {
     const errors = {};
     for (const level of [2, 3, 4]) {
       for (const step of ['WP04P4', 'WP04P5']) {
@@ -75,7 +75,7 @@ test.describe('against the exact reference while the camera orbits', () => {
   // a directional and a point light, held to its bound (bounds.js: litBound).
   const lights = { directional: {}, point: { light: 'point', lx: 1, ly: 1.5, lz: 2, Le: 4 } };
   for (const step of ['WP04P3', 'WP04P4', 'WP04P5']) {
-    test(`${step} at angles 0, 1.1, 2.5, 4 rad, directional and point light: within its bound of the exact render`, async ({ page }, testInfo) => {
+    test(`${step} at angles 0, 1.1, 2.5, 4 rad, directional and point light: within its bound of the exact render`, { tag: '@any-api' }, async ({ page }, testInfo) => {
       for (const angle of [0, 1.1, 2.5, 4]) {
         for (const [kind, params] of Object.entries(lights)) {
           const s = await open(page, `/${step}/`, { orbit: 0, angle, ...params });
@@ -130,7 +130,7 @@ test.describe('controls', () => {
     await expect(page.getByLabel('light z', { exact: true })).toHaveValue('2');
   });
 
-  test('Orbit on moves the camera with time; Orbit off stops it', async ({ page }) => {
+  test('Orbit on moves the camera with time; Orbit off stops it', { tag: '@any-api' }, async ({ page }) => {
     await page.clock.install({ time: 0 }); // requestAnimationFrame runs on this clock only
     await page.clock.pauseAt(1000); // and time moves only when we say so, however slow the machine is
     await page.goto(`/WP04P4/?api=${page.api}&size=64&orbit=0&angle=0`);
@@ -159,7 +159,7 @@ test.describe('controls', () => {
     await expect(page).toHaveURL(new RegExp(`angle=${stopped.angle}`));
   });
 
-  test('the address after the controls reloads to the same pixels', async ({ page }) => {
+  test('the address after the controls reloads to the same pixels', { tag: '@any-api' }, async ({ page }) => {
     await open(page, '/WP04P5/', STILL);
     await andDraw(page, () => page.getByLabel('ks', { exact: true }).fill('0.8'));
     await andDraw(page, () => page.getByLabel('s', { exact: true }).fill('120'));
