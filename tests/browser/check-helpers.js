@@ -82,3 +82,27 @@ export function earlyHandIn(dir) {
   cpSync(path.join(FIXTURES, 'handins/kaja/week4/part3.html'), path.join(out, 'Part3/index.html'));
   return out;
 }
+
+/** The top message the check page shows where the browser has no WebGPU. */
+export const NO_WEBGPU = /^This browser has no WebGPU, which your WebGPU parts need: they are marked "not checked here", not failed\. Check them in Chromium or Google Chrome/;
+
+/**
+ * Each hand-in folder `names` of `dir`, zipped as a student zips it and checked on the check page
+ * in Firefox (`firefox`: a puppeteer Browser), one after another in one page:
+ * [{ name, parts: window.check.parts, message, seconds }].
+ */
+export async function checkClassInFirefox(firefox, baseURL, dir, names, zips) {
+  const page = await firefox.newPage();
+  const out = [];
+  try {
+    for (const name of names) {
+      const { check, seconds, message } = await checkZipInFirefox(page, baseURL, zipFolder(path.join(dir, name), path.join(zips, `${name}.zip`)));
+      expect(check.error, name).toBeUndefined();
+      console.log(`check in Firefox: ${name} in ${seconds.toFixed(0)} s: ${check.parts.map((p) => p.verdict).join(' ')}`);
+      out.push({ name, parts: check.parts, message, seconds });
+    }
+  } finally {
+    await page.close();
+  }
+  return out;
+}
