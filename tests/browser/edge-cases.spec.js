@@ -1,5 +1,5 @@
 // The numerical edge cases of tools/edge-cases.js, each for Gouraud (WP04P4) and Phong shading
-// (WP04P5), in every API (WebGL 2, WebGL 1, WebGPU), against the exact reference: each step's
+// (WP04P5), in WebGL 2 and WebGPU (WebGL 1 runs the same GLSL), against the exact reference: each step's
 // interior RMSE and silhouette within a bound per case, wherever the case allows one; never a
 // NaN-black or saturated pixel where the reference is not. The errors are printed.
 import { test, expect, open, errorAgainstReference } from './fixtures.js';
