@@ -1,7 +1,9 @@
 // Audits of many saved artifacts at once, on worker threads (one a core): the judging of a class
 // is pure arithmetic on pictures, so it parallelises as it is. Each result is what
 // grade-part.js's judged() gives, without the pictures (plain data, as a worker sends it).
+import { readdirSync, statSync } from 'node:fs';
 import os from 'node:os';
+import path from 'node:path';
 import { Worker } from 'node:worker_threads';
 
 const WORKER = new URL('./audit-worker.js', import.meta.url);
@@ -13,7 +15,10 @@ const WORKER = new URL('./audit-worker.js', import.meta.url);
  */
 export async function auditDirs(dirs, rubric, { workers = os.availableParallelism(), progress = () => {} } = {}) {
   const results = new Map();
-  const queue = [...dirs];
+  // the largest artifacts (the most pictures to read and fit) first, so that no worker is left
+  // with a long one at the end
+  const size = new Map(dirs.map((d) => [d, folderBytes(d)]));
+  const queue = [...dirs].sort((a, b) => size.get(b) - size.get(a));
   let done = 0;
   const run = () => new Promise((resolve, reject) => {
     const w = new Worker(WORKER, { workerData: { rubric } });
@@ -32,4 +37,13 @@ export async function auditDirs(dirs, rubric, { workers = os.availableParallelis
   });
   await Promise.all(Array.from({ length: Math.max(1, Math.min(workers, dirs.length)) }, run));
   return results;
+}
+
+/** The bytes of the files in `dir` (0 where it is missing). */
+function folderBytes(dir) {
+  try {
+    return readdirSync(dir).reduce((sum, f) => sum + statSync(path.join(dir, f)).size, 0);
+  } catch {
+    return 0;
+  }
 }
