@@ -23,7 +23,7 @@ export const VIEWPORT = 1000;
 /** The script every part's HTML gets first: the watch, the WebGPU capture, the grader's instrumentation, the clock. */
 export function frameScript(rubric) {
   return [
-    `(${frameWatchScript})(${JSON.stringify({ loopSeconds: rubric.loadSeconds ?? 20 })});`,
+    `(${frameWatchScript})(${JSON.stringify({ loopSeconds: rubric.loadSeconds })});`,
     `(${webgpuCaptureScript})();`,
     `(${instrumentScript})();`,
     `(${frameClockScript})(${FROZEN});`,
@@ -53,7 +53,7 @@ async function load(stage, src, seconds) {
 }
 
 /** The grader's words for a part stopped by the time bound (as grade.spec.js's). */
-const timedOut = (rubric, why) => `the page did not finish within the rubric's bound of ${rubric.timeoutSeconds ?? 90} s (it never returns, or is far too slow)${why ? `: ${why}` : ''}`;
+const timedOut = (rubric, why) => `the page did not finish within the rubric's bound of ${rubric.timeoutSeconds} s (it never returns, or is far too slow)${why ? `: ${why}` : ''}`;
 
 /**
  * Checks one part. Returns what report.json says of it ({ part, verdict, reasons, api, actions,
@@ -65,7 +65,7 @@ const timedOut = (rubric, why) => `the page did not finish within the rubric's b
  */
 export async function checkPart({ part, page, session, rubric, stage, progress = () => {}, webgpuHere = true }) {
   const started = performance.now();
-  const loadSeconds = rubric.loadSeconds ?? 20;
+  const loadSeconds = rubric.loadSeconds;
   let graded = { fail: null, checks: [], actions: [], images: {}, busy: 0 };
   progress(`opening ${page}`);
   const { frame, how } = await load(stage, session.url(page), loadSeconds);
@@ -79,9 +79,9 @@ export async function checkPart({ part, page, session, rubric, stage, progress =
       graded.fail = fp.hung() ? `${notLoaded}: ${fp.hung()}` : notLoaded;
     } else {
       await session.idle(500, 5000);
-      frame.contentWindow.__checkWatch.setLoopSeconds(rubric.timeoutSeconds ?? 90);
+      frame.contentWindow.__checkWatch.setLoopSeconds(rubric.timeoutSeconds);
       let timer;
-      const bound = new Promise((resolve) => { timer = setTimeout(() => resolve('timeout'), (rubric.timeoutSeconds ?? 90) * 1000); });
+      const bound = new Promise((resolve) => { timer = setTimeout(() => resolve('timeout'), rubric.timeoutSeconds * 1000); });
       // a loop stopped after loading (in a promise, a frame, a handler) is a page that never returns, as
       // under the grader, whatever was judged meanwhile; the grader's outer bound (as grade.spec.js's):
       // past it the part is too slow to judge here
@@ -126,7 +126,7 @@ export async function drawReference({ result, rubric, session, stage }) {
   const judged = result.images.judged;
   if (!judged || result.verdict === 'fail') return null;
   const query = referenceQuery(judged, result.numbers, rubric.thresholds, {});
-  const { frame, how } = await load(stage, `${session.url(`${result.part}/index.html`)}?${query}`, rubric.loadSeconds ?? 20);
+  const { frame, how } = await load(stage, `${session.url(`${result.part}/index.html`)}?${query}`, rubric.loadSeconds);
   try {
     if (how !== 'load') return null;
     await session.idle(500, 5000);
@@ -134,7 +134,7 @@ export async function drawReference({ result, rubric, session, stage }) {
     await fp.tick(500, 30);
     // our pages publish window.scene after each frame drawn: wait for one (a loaded machine is slow)
     const drawn = () => frame.contentWindow.scene && frame.contentWindow.scene.frame >= 1;
-    for (const until = performance.now() + 1000 * (rubric.firstFrameSeconds ?? 10); !drawn() && performance.now() < until;) {
+    for (const until = performance.now() + 1000 * rubric.firstFrameSeconds; !drawn() && performance.now() < until;) {
       await sleep(100);
       await fp.tick(16);
     }

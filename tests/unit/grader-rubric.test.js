@@ -9,15 +9,18 @@ import { fileURLToPath } from 'node:url';
 import { mergeRubric } from '../../grader/core/rubric.js';
 
 const grader = fileURLToPath(new URL('../../grader/', import.meta.url));
+// the check page runs the grader's core in the browser with the same rubric: its runner is held too
+const check = fileURLToPath(new URL('../../check/', import.meta.url));
 const rubric = JSON.parse(readFileSync(path.join(grader, 'core/rubric.json'), 'utf8'));
 
-/** The grader's JavaScript files, by path relative to grader/. */
+/** The grader's and the check page's JavaScript files, by path relative to grader/. */
 function sources(dir = grader) {
-  return readdirSync(dir, { withFileTypes: true }).flatMap((e) => {
+  const files = readdirSync(dir, { withFileTypes: true }).flatMap((e) => {
     const f = path.join(dir, e.name);
-    if (e.isDirectory()) return sources(f);
+    if (e.isDirectory()) return sources(f).map((rel) => path.relative(grader, path.join(grader, rel)));
     return e.name.endsWith('.js') ? [path.relative(grader, f)] : [];
   });
+  return dir === grader ? [...files, ...sources(check)] : files;
 }
 const read = (rel) => readFileSync(path.join(grader, rel), 'utf8');
 
@@ -81,9 +84,9 @@ test('every threshold the grader reads is in grader/core/rubric.json, every top-
   }
 });
 
-test('no rubric value has a number written beside it as a fallback in grader/', () => {
+test('no rubric value has a number written beside it as a fallback in grader/ and check/', () => {
   const files = sources();
-  assert.ok(files.some((rel) => rel.startsWith('core/measure/')) && files.some((rel) => rel.startsWith('core/gather/')) && files.includes('node/grade.spec.js'), 'the measurements, the gatherers and the harness are scanned');
+  assert.ok(files.some((rel) => rel.startsWith('core/measure/')) && files.some((rel) => rel.startsWith('core/gather/')) && files.includes('node/grade.spec.js') && files.includes('../check/runner.js'), 'the measurements, the gatherers, the harness and the check page\'s runner are scanned');
   const found = files.flatMap((rel) => numericFallbacks(read(rel)).map((f) => `${rel}: ${f}`));
   assert.deepEqual(found, [], 'numbers that belong in rubric.json');
 });
