@@ -10,7 +10,7 @@ import { sphereView, shadingOf, viewFits } from './evidence.js';
 import { auditFirstFrame, notGradedHere } from './audits/first-frame.js';
 import { auditLevelControls, auditHeavyLevel, auditSphere } from './audits/sphere.js';
 import { auditNormals, auditPerspective, auditNormalsNotLight, auditDepthCulling } from './audits/normals.js';
-import { auditDiffuse, auditPointLight, auditUnclipped } from './audits/diffuse.js';
+import { auditDiffuse, auditPointLight, auditUnclipped, auditBrightened } from './audits/diffuse.js';
 import { auditOrbitStopsAgain, auditOrbit, auditNotStopped } from './audits/orbit.js';
 import { auditHighlight, auditPlaceFarther } from './audits/highlight.js';
 import { auditSliders } from './audits/sliders.js';
@@ -57,10 +57,12 @@ export function auditPart({ facts, images }, rubric) {
   auditDepthCulling(C);
   // a lit step that shows WP04P1's colours has no shading to judge: its colours are not lighting
   const shaded = (must.has('diffuse') || must.has('highlight')) && !auditNormalsNotLight(C, judged);
-  // a picture that clipped to white was read again with the page's own sliders lowered (gather/visible.js)
+  // a picture that clipped to white was read again with the page's own sliders lowered, one too
+  // dim with its light raised (gather/visible.js)
   const shadeImg = facts.shadingImage ? images[facts.shadingImage] : img;
   const shading = shaded ? shadingOf(shadeImg, an, T) : null;
   if (shaded) auditUnclipped(C);
+  if (shaded) auditBrightened(C);
   // the lit views kept along the orbit: their sparse fits (the orbit's), and full fits (the highlight's)
   const lit = !shaded ? [] : facts.views.map((v) => ({ ...litView(images[v.image], T), orbiting: v.orbiting, image: v.image })).filter((v) => v.lit);
   if (shaded) auditDiffuse(C, shading, lit);

@@ -12,7 +12,7 @@ import { session, TooSlow } from './session.js';
 import { findOrbit, sampleOrbit, look } from './orbit.js';
 import { findLevel, climb } from './level.js';
 import { probeFaces, probeDepthCulling, raiseHighlight, trySliders, leastShininess, placeFarther } from './probes.js';
-import { unclip } from './visible.js';
+import { unclip, brighten } from './visible.js';
 import { sphereView, shadingOf, viewFits, highlightEvidence } from '../evidence.js';
 
 /** Gathers one opened part: { facts, images }. `timing` ({ method: { ms, calls } }) hears where the time went. */
@@ -100,9 +100,10 @@ async function gather(S) {
   const { an } = sphereView(img, T);
   if (must.has('frontFaces')) await probeFaces(S, controls, { img, an });
   if (must.has('depthCulling')) await probeDepthCulling(S, controls);
-  // a picture that clips to white over much of the sphere: read with the page's own kd, Le, La lowered
+  // a picture that clips to white over much of the sphere: read with the page's own kd, Le, La
+  // lowered; one too dim to show its shading, with the page's own Le (else kd) raised
   const shaded = must.has('diffuse') || must.has('highlight');
-  const shadeImg = (shaded && await unclip(S, controls, img, an)) || img;
+  const shadeImg = (shaded && (await unclip(S, controls, img, an) || await brighten(S, controls, img, an))) || img;
   const shading = shaded ? shadingOf(shadeImg, an, T) : null;
   let placeLater = false;
   if (must.has('highlight') && shading.fit) {

@@ -3,9 +3,11 @@
 // shading and its highlight, so the page's own kd, Le and La sliders are lowered (halved toward
 // their least, one at a time) until it no longer does. The sliders stay where they were lowered for
 // the rest of the part (the slider trials, the highlight's search), and facts.unclipped says what
-// was changed, so that the reasons can name it.
+// was changed, so that the reasons can name it. A picture too dim to show its diffuse shading (a
+// dark light) is read again with the page's own Le slider (else kd) at its greatest.
 import { samples } from '../measure.js';
-import { groupsOf, setGroup, least } from './probes.js';
+import { luminance } from '../measure/samples.js';
+import { groupsOf, setGroup, least, greatest } from './probes.js';
 
 /** The share of the sphere's samples (the judged view's outline `an`) white (every channel clipped). */
 export function clippedShare(img, an) {
@@ -48,4 +50,43 @@ export async function unclip(S, controls, img, an) {
   facts.unclipped = { before, after: share, steps, image: S.keep('unclipped', shot.img) };
   facts.shadingImage = facts.unclipped.image;
   return shot.img;
+}
+
+/** The spread (standard deviation) of the brightness over the sphere's samples (the judged view's outline `an`). */
+export function brightnessSpread(img, an) {
+  const ys = samples(img, an).map((s) => luminance(s.c));
+  if (!ys.length) return 0;
+  const mean = ys.reduce((a, y) => a + y, 0) / ys.length;
+  return Math.sqrt(ys.reduce((a, y) => a + (y - mean) ** 2, 0) / ys.length);
+}
+
+/**
+ * The judged picture `img` (outline `an`) is too dim to show diffuse shading (its brightness
+ * spread under litSpread / 2, where the diffuse audit says "evenly bright"): the page's own Le
+ * slider (else kd) set to its greatest, and left there; read again where that spreads its
+ * brightness to litSpread at least. facts.brightened: { before, after, steps: [{ role, control,
+ * value }], image }; returns the picture to read the shading from, or null.
+ */
+export async function brighten(S, controls, img, an) {
+  const { T, facts } = S;
+  const before = brightnessSpread(img, an);
+  if (before >= T.litSpread / 2) return null;
+  const g = ['Le', 'kd'].map((r) => groupsOf(S, controls).find((x) => x.role === r && x.controls.every((c) => c.type !== 'color'))).find(Boolean);
+  if (!g || g.controls.every((c) => Number(S.now(c)) >= greatest(c))) return null;
+  S.step('raising the page\'s own light: the picture is too dim to show its shading');
+  const vs = await setGroup(S, g, greatest);
+  await S.tick(100);
+  const sh = await S.shot();
+  const after = sh && !sh.an.blank ? brightnessSpread(sh.img, an) : 0;
+  if (after < T.litSpread) {
+    // raised as far as the page lets it and still too dim to read: set back, and read as it was seen
+    await setGroup(S, g, (c) => S.now(c));
+    await S.tick(100);
+    return null;
+  }
+  g.controls.forEach((c, i) => S.values.set(c.index, vs[i]));
+  S.act(`set the ${g.role} slider to ${vs[0]} (the sphere was too dim to show its shading: brightness spread ${before.toFixed(3)}; now ${after.toFixed(3)})`);
+  facts.brightened = { before, after, steps: [{ role: g.role, control: g.controls[0].index, value: vs[0] }], image: S.keep('brightened', sh.img) };
+  facts.shadingImage = facts.brightened.image;
+  return sh.img;
 }
