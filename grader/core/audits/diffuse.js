@@ -42,13 +42,15 @@ export function auditPointLight({ T, say }, shading) {
   }
 }
 
+/** The settings a gatherer made to see the shading, in words: "kd to 0.8, then Le to 0.75". */
+const settings = (steps) => steps.map((x) => `${x.role} to ${x.value}`).join(', then ');
+
 /** Where the picture clipped to white, the sliders the gatherer lowered to read its shading (facts.unclipped). */
 export function auditUnclipped({ facts, say, imagesShown }) {
   const u = facts.unclipped;
   if (!u) return;
   imagesShown.unclipped = u.image;
-  const set = u.steps.map((x) => `${x.role} to ${x.value}`).join(', then ');
-  say('pass', `note: the picture clips to white over ${fmt(100 * u.before, 0)}% of the sphere, which hides its shading and highlight; they were judged with the page's own slider${u.steps.length > 1 ? 's' : ''} lowered: ${set} (${fmt(100 * u.after, 0)}% white then)`);
+  say('pass', `note: the picture clips to white over ${fmt(100 * u.before, 0)}% of the sphere, which hides its shading and highlight; they were judged with the page's own slider${u.steps.length > 1 ? 's' : ''} lowered: ${settings(u.steps)} (${fmt(100 * u.after, 0)}% white then)`);
 }
 
 /** Where the picture was too dim to show its shading, the slider the gatherer raised to read it (facts.brightened). */
@@ -56,6 +58,5 @@ export function auditBrightened({ facts, say, imagesShown }) {
   const b = facts.brightened;
   if (!b) return;
   imagesShown.brightened = b.image;
-  const set = b.steps.map((x) => `${x.role} to ${x.value}`).join(', then ');
-  say('pass', `note: the sphere is too dim to show its shading (brightness spread ${fmt(b.before, 3)}: a dark light); it was judged with the page's own slider raised: ${set} (spread ${fmt(b.after, 3)} then)`);
+  say('pass', `note: the sphere is too dim to show its shading (brightness spread ${fmt(b.before, 3)}: a dark light); it was judged with the page's own slider raised: ${settings(b.steps)} (spread ${fmt(b.after, 3)} then)`);
 }

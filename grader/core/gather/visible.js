@@ -9,6 +9,12 @@ import { samples } from '../measure.js';
 import { luminance } from '../measure/samples.js';
 import { groupsOf, setGroup, least, greatest } from './probes.js';
 
+/** The page's free parameter groups for `roles` that are sliders or numbers (not colour pickers), in the order of `roles`. */
+function numericGroups(S, controls, roles) {
+  const groups = groupsOf(S, controls);
+  return roles.map((r) => groups.find((g) => g.role === r && g.controls.every((c) => c.type !== 'color'))).filter(Boolean);
+}
+
 /** The share of the sphere's samples (the judged view's outline `an`) white (every channel clipped). */
 export function clippedShare(img, an) {
   const pts = samples(img, an);
@@ -25,8 +31,7 @@ export async function unclip(S, controls, img, an) {
   const { T, facts } = S;
   const before = clippedShare(img, an);
   if (before < T.clippedShare) return null;
-  const groups = ['kd', 'Le', 'La'].map((r) => groupsOf(S, controls).find((g) => g.role === r && g.controls.every((c) => c.type !== 'color')))
-    .filter(Boolean);
+  const groups = numericGroups(S, controls, ['kd', 'Le', 'La']);
   if (!groups.length) return null;
   S.step('lowering the page\'s own sliders: the picture clips to white');
   const steps = [];
@@ -71,7 +76,7 @@ export async function brighten(S, controls, img, an) {
   const { T, facts } = S;
   const before = brightnessSpread(img, an);
   if (before >= T.litSpread / 2) return null;
-  const g = ['Le', 'kd'].map((r) => groupsOf(S, controls).find((x) => x.role === r && x.controls.every((c) => c.type !== 'color'))).find(Boolean);
+  const [g] = numericGroups(S, controls, ['Le', 'kd']);
   if (!g || g.controls.every((c) => Number(S.now(c)) >= greatest(c))) return null;
   S.step('raising the page\'s own light: the picture is too dim to show its shading');
   const vs = await setGroup(S, g, greatest);
