@@ -57,6 +57,9 @@ function clockwiseExperiment(facts) {
   return faces.frontFace === 'cw' && !!faces.culling && (faces.cullMode || 'back') === 'back';
 }
 
+/** The colours decode to unit normals (2c − 1) that vary over the picture as one side of a sphere's do. */
+const smoothUnitNormals = (nc, T) => !!nc && !(nc.spread < T.normalsSpread || nc.unitError > T.normalsUnitError || nc.residual > T.facingResidual);
+
 /**
  * WP04P1/P2: "Draw a solid sphere in perspective view". Where the colours decode to the normals of
  * one side of the sphere (`seen`: what auditNormals read), the rim's angle tells the projection: an
@@ -66,7 +69,7 @@ function clockwiseExperiment(facts) {
 export function auditPerspective({ T, must, say, numbers }, seen) {
   if (!must.has('perspective') || !seen || !seen.nc) return;
   const { img, an, nc } = seen;
-  if (nc.spread < T.normalsSpread || nc.unitError > T.normalsUnitError || nc.residual > T.facingResidual) return;
+  if (!smoothUnitNormals(nc, T)) return;
   const far = nc.det < 0;
   if (!far && nc.det < T.facingDeterminant) return;
   const rim = rimAngle(samples(img, an, { maxRho: 0.9 }), far);
@@ -89,7 +92,7 @@ export function auditPerspective({ T, must, say, numbers }, seen) {
 export function auditNormalsNotLight({ T, must, say, numbers }, judged) {
   if (!must.has('diffuse') && !must.has('highlight')) return false;
   const nc = normalColours(samples(judged.img, judged.an));
-  if (!nc || nc.spread < T.normalsSpread || nc.unitError > T.normalsUnitError || nc.residual > T.facingResidual || Math.abs(nc.det) < T.facingDeterminant) return false;
+  if (!smoothUnitNormals(nc, T) || Math.abs(nc.det) < T.facingDeterminant) return false;
   numbers.normalColouring = nc;
   say('mistake', `shows the normal colouring of WP04P1, not the lighting: its colours decode to unit normals 2c − 1 all over the sphere (off by ${fmt(nc.unitError, 3)}), which is 0.5·n + 0.5, not kd·Le·max(n·w_i, 0) + ambient`);
   return true;
