@@ -55,7 +55,11 @@ export function gradeVerdicts(dir, names) {
   const run = spawnSync(process.execPath, ['grader/node/grade.js', '--batch', batch, '--rubric', rubric, '--out', path.join(dir, 'report')],
     { encoding: 'utf8', timeout: 3_000_000 });
   expect(run.status, run.stderr + run.stdout.slice(-2000)).toBe(0);
-  const report = JSON.parse(readFileSync(path.join(dir, 'report', 'report.json'), 'utf8'));
+  return partsByName(JSON.parse(readFileSync(path.join(dir, 'report', 'report.json'), 'utf8')));
+}
+
+/** A report.json's parts by submission and part: { name: { part: { verdict, reasons, api } } }. */
+export function partsByName(report) {
   return Object.fromEntries(report.submissions.map((s) => [s.name, Object.fromEntries(s.parts.map((p) => [p.part, p]))]));
 }
 

@@ -14,7 +14,7 @@ import { partOpener } from '../../grader/node/playwright-page.js';
 import { CHROMIUM, CHROMIUM_ARGS } from '../../tools/browser.js';
 import { WEBGPU_ARGS, webgpuCaptureScript, readWebGPUFrame } from '../../grader/browser/webgpu-capture.js';
 import { launchFirefox } from '../../tools/firefox.js';
-import { checkClassInFirefox, NO_WEBGPU } from './check-helpers.js';
+import { checkClassInFirefox, NO_WEBGPU, partsByName } from './check-helpers.js';
 
 const RECORDED = path.resolve(import.meta.dirname, '../fixtures/artifacts');
 
@@ -237,7 +237,7 @@ test.describe('grading real hand-ins against their labels', () => {
     expect(verdicts(JSON.parse(readFileSync(path.join(out, 'report.json'), 'utf8')))).toEqual(verdicts(report));
     // the check page in Firefox: the grader's verdict on every WebGL part, but where the engines
     // really differ; a WebGPU part is "not checked here", said at the top, never a fail
-    const grade = Object.fromEntries(report.submissions.map((s) => [s.name, Object.fromEntries(s.parts.map((p) => [p.part, p]))]));
+    const grade = partsByName(report);
     const rows = [];
     for (const { name, parts, message } of checked) {
       for (const p of parts) {
