@@ -17,6 +17,8 @@ import { launchFirefox } from '../../tools/firefox.js';
 import { checkClassInFirefox, NO_WEBGPU, partsByName } from './check-helpers.js';
 
 const RECORDED = path.resolve(import.meta.dirname, '../fixtures/artifacts');
+/** A report's verdicts and reasons, a line a part, sorted: what --audit-only must give again. */
+const verdicts = (r) => r.submissions.flatMap((x) => x.parts.map((p) => `${x.name} ${p.part} ${p.verdict}: ${p.reasons.join(' | ')}`)).sort();
 
 test('parts are found by the names students give them', () => {
   for (const [name, n] of [['WP04P1', 1], ['Part2', 2], ['part3', 3], ['p4', 4], ['p05', 5], ['w4p1', 1], ['week04p03', 3], ['part-2', 2],
@@ -172,7 +174,6 @@ test.describe('gathering live gives the recorded artifacts', () => {
     expect(csv.find((l) => l.startsWith('"ada"')).split(',').slice(1, 7)).toEqual(['5', 'pass', 'pass', 'pass', 'pass', 'pass']);
     expect(findParts(path.join(dir, 'class', 'cy')).WP04P3).toBe(path.join('Lab 4', 'w04', 'w04p03.html'));
     expect(findParts(path.join(dir, 'class', 'bo')).WP04P2).toBe(path.join('week04', 'part02', 'index.html'));
-    const verdicts = (r) => r.submissions.flatMap((x) => x.parts.map((p) => `${x.name} ${p.part} ${p.verdict}: ${p.reasons.join(' | ')}`)).sort();
     const again = spawnSync(process.execPath, ['grader/node/grade.js', '--audit-only', out, '--rubric', 'tests/fixtures/test-rubric.json'], { encoding: 'utf8' });
     expect(again.status, again.stderr).toBe(0);
     expect(verdicts(JSON.parse(readFileSync(path.join(out, 'report.json'), 'utf8')))).toEqual(verdicts(report));
@@ -231,7 +232,6 @@ test.describe('grading real hand-ins against their labels', () => {
     expect(a.brokenPassed, summary).toBe(0);
     expect(a.partialPassed, summary).toBeLessThanOrEqual(1);
     // judged again from the saved artifacts, with no browser: the same verdicts and reasons
-    const verdicts = (r) => r.submissions.flatMap((x) => x.parts.map((p) => `${x.name} ${p.part} ${p.verdict}: ${p.reasons.join(' | ')}`)).sort();
     const again = spawnSync(process.execPath, ['grader/node/grade.js', '--audit-only', out, '--rubric', rubric], { encoding: 'utf8' });
     expect(again.status, again.stderr).toBe(0);
     expect(verdicts(JSON.parse(readFileSync(path.join(out, 'report.json'), 'utf8')))).toEqual(verdicts(report));
