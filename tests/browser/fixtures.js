@@ -73,30 +73,76 @@ export function instrument() {
   window.__gl.devices = devices;
 }
 
+// Opening a page in a new browser context starts a renderer process: about a core-second here, as
+// much as the test itself. So a worker keeps one page and each test navigates it anew (open() and
+// page.goto load a new document: new WebGL context, new window.__gl). A test that changes the page
+// beyond where it stands (an init script, a route, the clock, a listener of its own)
+// or that fails gets a fresh context after it, as does the first test of a worker.
+const CHANGES_THE_PAGE = ['addInitScript', 'route', 'unroute', 'on', 'once', 'addListener', 'exposeFunction', 'exposeBinding',
+  'setViewportSize', 'emulateMedia', 'setExtraHTTPHeaders'];
+
 export const test = base.extend({
-  api: ['webgl2', { option: true }],
-  page: async ({ page, api }, use) => {
-    const problems = [];
+  api: ['webgl2', { option: true, scope: 'worker' }],
+  kept: [async ({ browser, api }, use, workerInfo) => {
+    const { baseURL, viewport, deviceScaleFactor } = workerInfo.project.use;
+    const kept = {
+      context: null, page: null, problems: [],
+      async fresh() {
+        if (kept.context) await kept.context.close().catch(() => {});
+        kept.context = await browser.newContext({ baseURL, viewport, deviceScaleFactor });
+        const page = kept.page = await kept.context.newPage();
+        page.on('pageerror', (e) => kept.problems.push(`page error: ${e.message}`));
+        page.on('console', (m) => {
+          if (m.type() === 'error') kept.problems.push(`console error: ${m.text()}`);
+        });
+        // our pages never open a dialog: one is dismissed, kept in page.dialogs, and a problem
+        page.on('dialog', (d) => {
+          page.dialogs.push(d.message());
+          kept.problems.push(`dialog: ${d.message()}`);
+          d.dismiss().catch(() => {});
+        });
+        await page.addInitScript(instrument);
+        if (api === 'webgpu') await page.addInitScript(webgpuCaptureScript);
+        page.api = api;
+        kept.changed = false;
+        for (const name of CHANGES_THE_PAGE) {
+          const own = page[name];
+          page[name] = (...args) => { kept.changed = true; return own.apply(page, args); };
+        }
+        const clock = page.clock;
+        Object.defineProperty(page, 'clock', { get: () => { kept.changed = true; return clock; } });
+      },
+    };
+    await use(kept);
+    if (kept.context) await kept.context.close().catch(() => {});
+  }, { scope: 'worker' }],
+  page: async ({ kept }, use, testInfo) => {
+    if (!kept.page || kept.changed || kept.page.isClosed()) await kept.fresh();
+    const { page } = kept;
+    const problems = kept.problems = [];
     let expected = null;
-    page.on('pageerror', (e) => problems.push(`page error: ${e.message}`));
-    page.on('console', (m) => {
-      if (m.type() === 'error') problems.push(`console error: ${m.text()}`);
-    });
-    await page.addInitScript(instrument);
-    if (api === 'webgpu') await page.addInitScript(webgpuCaptureScript);
     page.expectProblems = (pattern) => { expected = pattern; };
     page.problems = problems;
-    page.api = api;
+    page.dialogs = [];
+    const others = [];
+    const opened = (p) => others.push(p);
+    kept.context.on('page', opened);
     await use(page);
+    kept.context.off('page', opened);
+    for (const p of others) await p.close().catch(() => {});
     if (!page.isClosed()) {
       const glErrors = await page.evaluate(() => (window.__gl ? window.__gl.errors() : []));
       for (const e of glErrors) problems.push(`gl.getError() = 0x${e.toString(16)}`);
-      if (api === 'webgpu') {
+      if (page.api === 'webgpu') {
         // what the capture met so far (not waiting for a copy in flight: an orbiting page never stops)
         const errors = await page.evaluate(() => (window.__webgpuCapture ? [...window.__webgpuCapture.errors] : []));
         for (const e of errors) problems.push(`WebGPU capture: ${e}`);
       }
     }
+    if (testInfo.status !== testInfo.expectedStatus) kept.changed = true;
+    // nothing left running (an orbit draws on) until the next test opens its page; a changed page
+    // is closed then (its init scripts would run on about:blank too)
+    if (!kept.changed && !page.isClosed()) await page.goto('about:blank').catch(() => { kept.changed = true; });
     const unexpected = expected ? problems.filter((p) => !expected.test(p)) : problems;
     expect(unexpected, 'page, console and GL errors').toEqual([]);
   },
