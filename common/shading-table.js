@@ -1,6 +1,6 @@
 // Written by `npm run calibrate` (tools/calibrate.js) on 2026-11-24, measured in
 // Chromium 156.0.8078.79 at 128, 256, 512 px in 50 s. Do not edit: run the command again.
-// tests/browser/calibration.spec.js (and `npm run calibrate -- --check`) re-measure every entry.
+// tests/browser/calibration.spec.js re-measures every entry but some at 512 px; `npm run calibrate -- --check` every one.
 
 /**
  * How far the mesh at each level falls inside the unit sphere at worst: 1 − the least distance
