@@ -48,7 +48,7 @@ function handIn(files) {
 
 /** Checks `dir` with short bounds, and holds: WP04P1 fails for its loop, WP04P2 is checked after it, the page is usable. */
 async function expectLoopStopped(page, dir) {
-  await routeRubric(page, { loadSeconds: 4, timeoutSeconds: 20 });
+  await routeRubric(page, { loadSeconds: 2, timeoutSeconds: 20 });
   const { check } = await checkFolder(page, dir, { query: '?reference=0', timeout: 150_000 });
   expect(check.error).toBeUndefined();
   const [p1, p2] = check.parts;
