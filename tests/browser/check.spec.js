@@ -2,9 +2,11 @@
 // in the browser, nothing installed. Here hand-ins are picked through the folder input
 // (setInputFiles on <input webkitdirectory>) in a Chromium with WebGPU, and the page's verdicts
 // (window.check) are compared with the grader's:
-// - npm test: a representative few (our own site in WebGL and in WebGPU, and `cy`, one mistake a
-//   part), against their labels, which the grader agrees with on every labelled part
-//   (tests/browser/grader.spec.js);
+// - npm test: a representative two (our own site in WebGPU, the API only this Chromium gives the
+//   check page, and `cy`, one WebGL mistake a part), against their labels, which the grader agrees
+//   with on every labelled part (tests/unit/grader-class.test.js; our site in WebGL there too);
+//   the check page in WebGL is also held to the grader in Firefox on ../shared/handins
+//   (grader.spec.js) and on pages that begin with their scripts (check-guard.spec.js);
 // - CHECK_ALL=1 (npm run test:check-all): every hand-in of the fixture class, the hand-written
 //   hand-ins and ../shared/handins/ when it is there, against `npm run grade` on the same folders.
 // Also: the front page's step pictures are the steps' renders; bad input gets a clear message and
@@ -116,10 +118,10 @@ function theClass() {
   return { dir, labels, names };
 }
 
-test('the check page gives the grader\'s verdicts: our own site passes in WebGL and WebGPU, mistakes get their reviews', async () => {
+test('the check page gives the grader\'s verdicts: our own site passes in WebGPU, mistakes get their reviews', async () => {
   const { dir, labels, names } = theClass();
   // CHECK_ONLY=regex: a share of the class (to split the whole comparison into runs)
-  const picked = ALL ? names.filter((n) => new RegExp(process.env.CHECK_ONLY || '.').test(n)) : ['own', 'own-gpu', 'cy'];
+  const picked = ALL ? names.filter((n) => new RegExp(process.env.CHECK_ONLY || '.').test(n)) : ['own-gpu', 'cy'];
   test.setTimeout((ALL ? 600 + 150 * picked.length : 150 * picked.length) * 1000);
   // the grader itself on the same folders (CHECK_ALL); in npm test the labels stand for it
   const graded = ALL ? gradeVerdicts(dir, picked) : null;
@@ -150,7 +152,7 @@ test('the check page gives the grader\'s verdicts: our own site passes in WebGL 
   }
   const differ = rows.filter((r) => r.check !== r.grade);
   console.log(`check = ${graded ? 'grade' : 'labels'} on ${rows.length - differ.length} of ${rows.length} parts`);
-  expect(rows.length).toBeGreaterThanOrEqual(15);
+  expect(rows.length).toBeGreaterThanOrEqual(10);
   if (ALL) expect(differ.length, 'parts where the check page and the grader differ').toBeLessThanOrEqual(Math.floor(0.05 * rows.length));
   else expect(differ.map((r) => `${r.name} ${r.part}`)).toEqual([]);
 });
