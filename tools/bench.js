@@ -43,7 +43,7 @@ const OPTIONS = { quick: { type: 'boolean' }, out: { type: 'string' }, 'no-publi
 
 /** How much to measure: the quick run is for tests and a first look, the full one is published. */
 const PLANS = {
-  quick: { sizes: [128], maxLevel: 5, frames: 5, warmup: 2, repeats: 3, changeRepeats: 5, orbitSize: 128, angles: 12, changeLevels: 6, edgeCases: 2 },
+  quick: { sizes: [128], maxLevel: 5, frames: 3, warmup: 1, repeats: 2, changeRepeats: 3, orbitSize: 128, angles: 12, changeLevels: 6, edgeCases: 2 },
   full: { sizes: [256, 512], maxLevel: 8, frames: 15, warmup: 3, repeats: 5, changeRepeats: 15, orbitSize: 256, angles: 90, changeLevels: 8, edgeCases: EDGE_CASES.length },
 };
 const METHODS = ['flat', 'gouraud', 'phong'];
