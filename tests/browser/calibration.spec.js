@@ -8,11 +8,12 @@ import { SHADING_BY_SIZE } from '../../common/shading-table.js';
 
 // SHADING_TABLE, which chooseLevel reads, is the largest of SHADING_BY_SIZE's sizes, entry by
 // entry; the pixels are deterministic here, so every entry measured measures to the digit
-// (±0.02/255, its rounding). Every entry at the smaller sizes; at 512 px, where an entry costs four
-// times as much (31 s for all of them), every level of the diffuse row and of s = 0, 40 and 500 (the
-// slider's least, the steps' default, its greatest): a change to a shader moves those too. `npm run
-// calibrate -- --check` measures every entry of every size.
-const SAMPLED = { 512: [0, 40, 500] };
+// (±0.02/255, its rounding). Every entry at 128 px, the size the browser tests draw the steps at;
+// at 256 and 512 px, where an entry costs four and sixteen times as much, every level of
+// the diffuse row and of s = 0, 40 and 500 (the slider's least, the steps' default, its greatest):
+// a change to a shader moves those too. `npm run calibrate -- --check` measures every entry of
+// every size.
+const SAMPLED = { 256: [0, 40, 500], 512: [0, 40, 500] };
 for (const size of Object.keys(SHADING_BY_SIZE).map(Number)) {
   const shininess = SAMPLED[size] || SHININESS;
   test(`${shininess === SHININESS ? 'every entry' : `the diffuse row and s = ${shininess.join(', ')}`} of the shading table at ${size} px: what the step's shaders measure`, async ({ browser, api, baseURL }) => {
