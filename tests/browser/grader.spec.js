@@ -270,7 +270,7 @@ test('a submission folder that does not exist: a clear message and exit code 1; 
   expect(run.stderr).toContain('grade: no such folder: /nonexistent/student');
   const usage = spawnSync(process.execPath, ['grader/node/grade.js', '--bogus'], { encoding: 'utf8' });
   expect(usage.status).toBe(2);
-  const rubric = spawnSync(process.execPath, ['grader/node/grade.js', '--rubric', '/nonexistent/rubric.json', '/tmp'], { encoding: 'utf8' });
+  const rubric = spawnSync(process.execPath, ['grader/node/grade.js', '--rubric', '/nonexistent/rubric.json', mkdtempSync(path.join(os.tmpdir(), 'empty-'))], { encoding: 'utf8' });
   expect(rubric.status).toBe(2);
   expect(rubric.stderr).toContain('cannot read the rubric');
   expect(findParts('/nonexistent')).toEqual({ WP04P1: null, WP04P2: null, WP04P3: null, WP04P4: null, WP04P5: null });
