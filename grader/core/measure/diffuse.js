@@ -23,7 +23,7 @@ function flat(pts, use) {
 function fitDirection(F, l, twoSided = false) {
   // brightness ≈ a + b max(n·l, 0) (or a + b |n·l|, lit on both sides): linear in (a, b) for a given l;
   // one pass: at the least-squares (a, b) the residual is Σy² − a Σy − b Σxy
-  const { m, nx, ny, nz, y, sy, syy } = F;
+  const { m, nx, ny, nz, y } = F;
   const l0 = l[0], l1 = l[1], l2 = l[2];
   let sx = 0, sxx = 0, sxy = 0;
   if (twoSided) {
@@ -37,6 +37,34 @@ function fitDirection(F, l, twoSided = false) {
       if (x > 0) { sx += x; sxx += x * x; sxy += x * y[i]; }
     }
   }
+  return solve(F, sx, sxx, sxy, l);
+}
+
+/** Do two masks (0/1 a sample) pick the same samples? */
+function sameMask(a, b) {
+  for (let i = 0; i < a.length; i++) if (!a[i] !== !b[i]) return false;
+  return true;
+}
+
+/**
+ * fitDirection(F, l, true) and fitDirection(Fall, l, true) at once, F being the samples of Fall
+ * that `use` picks, in the same order: |n·l| computed once a sample, each sum added up in the
+ * order either fit alone adds it (the same numbers to the last bit).
+ */
+function fitTwoSided(Fall, F, use, l) {
+  const { m, nx, ny, nz, y } = Fall;
+  const l0 = l[0], l1 = l[1], l2 = l[2];
+  let sx = 0, sxx = 0, sxy = 0, ux = 0, uxx = 0, uxy = 0;
+  for (let i = 0; i < m; i++) {
+    const x = Math.abs(nx[i] * l0 + ny[i] * l1 + nz[i] * l2);
+    sx += x; sxx += x * x; sxy += x * y[i];
+    if (use[i]) { ux += x; uxx += x * x; uxy += x * y[i]; }
+  }
+  return [solve(F, ux, uxx, uxy, l), solve(Fall, sx, sxx, sxy, l)];
+}
+
+/** The least-squares (a, b) of y ≈ a + b x from the sums, and the residual Σy² − a Σy − b Σxy. */
+function solve({ m, sy, syy }, sx, sxx, sxy, l) {
   const den = m * sxx - sx * sx;
   const b = den > 1e-9 ? (m * sxy - sx * sy) / den : 0;
   const a = (sy - b * sx) / m;
@@ -77,7 +105,10 @@ export function diffuseFit(pts, T) {
     }
     if (pass === 0) {
       sseAll = best.sse;
-      use = Uint8Array.from(pts, (s, i) => use0[i] && s.y - (best.a + best.b * Math.max(0, s.n[0] * best.l[0] + s.n[1] * best.l[1] + s.n[2] * best.l[2])) < highlightMargin * 0.7);
+      const left = Uint8Array.from(pts, (s, i) => use0[i] && s.y - (best.a + best.b * Math.max(0, s.n[0] * best.l[0] + s.n[1] * best.l[1] + s.n[2] * best.l[2])) < highlightMargin * 0.7);
+      // no pixel above the fit: the second pass would fit the same pixels to the same numbers
+      if (sameMask(left, use)) break;
+      use = left;
     }
   }
   const used = use.reduce((a, v) => a + v, 0);
@@ -90,9 +121,8 @@ export function diffuseFit(pts, T) {
   let twoSided = null, twoSidedAll = null;
   const Fall = flat(pts, null); // (F: the second pass's pixels, the highlight left out)
   for (const l of DIRS) {
-    const f = fitDirection(F, l, true);
+    const [f, g] = fitTwoSided(Fall, F, use, l);
     if (f.b >= 0 && (!twoSided || f.sse < twoSided.sse)) twoSided = f;
-    const g = fitDirection(Fall, l, true);
     if (g.b >= 0 && (!twoSidedAll || g.sse < twoSidedAll.sse)) twoSidedAll = g;
   }
   // ... and both models over all pixels, none left out as a highlight

@@ -18,16 +18,24 @@ export function pointLightFit(pts, T) {
   if (use0.filter(Boolean).length < 50) return null;
   for (const s of pts) s.y = luminance(s.c);
   const DIST = [1.25, 1.5, 1.75, 2, 2.5, 3, 4, 5, 7, 10, 20, 1e4];
+  // the samples as flat arrays, read by every fit below
+  const m = pts.length, nx = new Float64Array(m), ny = new Float64Array(m), nz = new Float64Array(m), ys = new Float64Array(m);
+  for (let i = 0; i < m; i++) [nx[i], ny[i], nz[i], ys[i]] = [pts[i].n[0], pts[i].n[1], pts[i].n[2], pts[i].y];
   // (`keep`: the model's term at each sample, kept for the best fit only)
   const fit = (use, l, d, falloff, keep = false) => {
     let n = 0, sx = 0, sy = 0, sxx = 0, sxy = 0, syy = 0;
-    const xs = keep ? new Float64Array(pts.length) : null;
-    for (let i = 0; i < pts.length; i++) {
+    const xs = keep ? new Float64Array(m) : null;
+    // pointLightTerm, inlined: the same operations in the same order
+    const px = d * l[0], py = d * l[1], pz = d * l[2], near = (d - 1) * (d - 1);
+    for (let i = 0; i < m; i++) {
       if (!use[i]) continue;
-      const s = pts[i];
-      const x = pointLightTerm(s.n, l, d, falloff);
+      const wx = px - nx[i], wy = py - ny[i], wz = pz - nz[i];
+      const r2 = wx * wx + wy * wy + wz * wz;
+      const cos = Math.max(0, (nx[i] * wx + ny[i] * wy + nz[i] * wz) / Math.sqrt(r2));
+      const x = falloff ? cos * near / r2 : cos;
+      const y = ys[i];
       if (keep) xs[i] = x;
-      n++; sx += x; sy += s.y; sxx += x * x; sxy += x * s.y; syy += s.y * s.y;
+      n++; sx += x; sy += y; sxx += x * x; sxy += x * y; syy += y * y;
     }
     const den = n * sxx - sx * sx;
     const b = den > 1e-9 ? (n * sxy - sx * sy) / den : 0;
@@ -66,7 +74,10 @@ export function pointLightFit(pts, T) {
     if (!none || !inv) return null;
     if (pass === 0) {
       const margin = T.highlightMargin * 0.7;
-      use = pts.map((s, i) => use0[i] && Math.min(s.y - none.a - none.b * none.xs[i], s.y - inv.a - inv.b * inv.xs[i]) < margin);
+      const left = pts.map((s, i) => use0[i] && Math.min(s.y - none.a - none.b * none.xs[i], s.y - inv.a - inv.b * inv.xs[i]) < margin);
+      // no pixel above both fits: the second pass would fit the same pixels to the same numbers
+      if (left.every((v, i) => v === use[i])) break;
+      use = left;
     }
   }
   const used = use.reduce((a, v) => a + v, 0);
