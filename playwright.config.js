@@ -27,8 +27,8 @@ export default defineConfig({
   projects: [
     { name: 'webgl2', use: { api: 'webgl2' }, testIgnore: /firefox\.spec\.js/ },
     // WebGL 1 runs the same GLSL and the same JavaScript as WebGL 2 (only getContext differs), so
-    // here it runs what the context can change: the unlit steps' pictures, buffers and state
-    // (foundation). The lit steps under WebGL 1 are held by the Firefox suite (another engine, the
+    // here it runs what the context can change: the unlit steps' pictures against the sphere,
+    // buffers and state (foundation). The lit steps under WebGL 1 are held by the Firefox suite (another engine, the
     // same exact reference). Tests tagged @any-api run once, under WebGL 2: the same JavaScript
     // whichever API (the controls, the URL, fuzzed values), or a picture whose WebGPU twin
     // webgpu.spec.js holds equal to WebGL 2's in the same views.

@@ -2,7 +2,10 @@
 // subdivided sphere coloured 0.5 p + 0.5, Subdivide / Coarsen, one recycled buffer) and WP04P2
 // (depth test, culling, clockwise front faces). Then what a page does with bad input and failures:
 // out-of-range URL values, broken or missing shaders, no WebGL (2), file://, and the address
-// following the controls. Run under WebGL 2 and WebGL 1.
+// following the controls. Run under WebGL 2, WebGL 1 and WebGPU; the screenshots under WebGL 2
+// only (@any-api): WebGL 1 draws with the same GLSL and JavaScript (its pictures are held to the
+// exact sphere here and in Firefox), and webgpu.spec.js holds WebGPU's equal to WebGL 2's in the
+// same views.
 import { test, expect, open, scene, andDraw, canvasPixels, expectCanvasScreenshot, messages } from './fixtures.js';
 import { checkNormalColours } from './bounds.js';
 
@@ -22,7 +25,7 @@ test('the front page lists the steps in order and every link works', { tag: '@an
 
 test.describe('WP04P1', () => {
   for (const level of [0, 2, 5]) {
-    test(`screenshot at level ${level}`, async ({ page }) => {
+    test(`screenshot at level ${level}`, { tag: '@any-api' }, async ({ page }) => {
       const s = await open(page, '/WP04P1/', { level });
       expect(s.level).toBe(level);
       expect(s.vertices).toBe(12 * 4 ** level);
@@ -89,7 +92,7 @@ test.describe('WP04P2', () => {
     clockwise: { cw: 1 },
   };
   for (const [name, params] of Object.entries(views)) {
-    test(`screenshot: ${name}`, async ({ page }) => {
+    test(`screenshot: ${name}`, { tag: '@any-api' }, async ({ page }) => {
       await open(page, '/WP04P2/', { level: 4, ...params });
       await expectCanvasScreenshot(page, `WP04P2-${name}.png`);
     });
