@@ -184,8 +184,8 @@ test.describe('gathering live gives the recorded artifacts', () => {
 // checkout, or HANDINS_DIR): the grader is judged on hand-ins it was not written for. Graded with
 // the shipped rubric and its own time bounds, as a teacher runs it (our reference left out). While
 // the grader runs, the check page in Firefox (where many students are, and where there is no
-// WebGPU) checks every third hand-in's .zip by name (all with FIREFOX_CHECK=all: 74 s more on a
-// quiet machine for ../shared/handins' seven), and must give the grader's verdicts on the WebGL parts.
+// WebGPU) checks every third hand-in's .zip by name (all with FIREFOX_CHECK=all: ../shared/handins'
+// seven took 74 s in Firefox alone, its three 28 s), and must give the grader's verdicts on the WebGL parts.
 const HANDINS = process.env.HANDINS_DIR || path.resolve(import.meta.dirname, '../../../shared/handins');
 const checkedInFirefox = (names) => (process.env.FIREFOX_CHECK === 'all' ? names : names.filter((_, k) => k % 3 === 0));
 // Parts where the engines really differ, and why (any other difference fails the test):
