@@ -25,14 +25,9 @@ export function pointLightFit(pts, T) {
   const fit = (use, l, d, falloff, keep = false) => {
     let n = 0, sx = 0, sy = 0, sxx = 0, sxy = 0, syy = 0;
     const xs = keep ? new Float64Array(m) : null;
-    // pointLightTerm, inlined: the same operations in the same order
-    const px = d * l[0], py = d * l[1], pz = d * l[2], near = (d - 1) * (d - 1);
     for (let i = 0; i < m; i++) {
       if (!use[i]) continue;
-      const wx = px - nx[i], wy = py - ny[i], wz = pz - nz[i];
-      const r2 = wx * wx + wy * wy + wz * wz;
-      const cos = Math.max(0, (nx[i] * wx + ny[i] * wy + nz[i] * wz) / Math.sqrt(r2));
-      const x = falloff ? cos * near / r2 : cos;
+      const x = pointLightTerm(nx[i], ny[i], nz[i], l, d, falloff);
       const y = ys[i];
       if (keep) xs[i] = x;
       n++; sx += x; sy += y; sxx += x * x; sxy += x * y; syy += y * y;
@@ -93,19 +88,19 @@ export function pointLightFit(pts, T) {
 }
 
 /**
- * max(n·w_i, 0) at the unit sphere's point x = n for a point light at p_ℓ = d·l, w_i =
+ * max(n·w_i, 0) at the unit sphere's point x = n = (n0, n1, n2) for a point light at p_ℓ = d·l, w_i =
  * normalize(p_ℓ − x); with `falloff`, times 1/‖p_ℓ − x‖² scaled to 1 at the point nearest the light.
  */
-function pointLightTerm(n, l, d, falloff) {
-  const wx = d * l[0] - n[0], wy = d * l[1] - n[1], wz = d * l[2] - n[2];
+function pointLightTerm(n0, n1, n2, l, d, falloff) {
+  const wx = d * l[0] - n0, wy = d * l[1] - n1, wz = d * l[2] - n2;
   const r2 = wx * wx + wy * wy + wz * wz;
-  const cos = Math.max(0, (n[0] * wx + n[1] * wy + n[2] * wz) / Math.sqrt(r2));
+  const cos = Math.max(0, (n0 * wx + n1 * wy + n2 * wz) / Math.sqrt(r2));
   return falloff ? cos * ((d - 1) * (d - 1)) / r2 : cos;
 }
 
 /** The brightness a fitted point-light model (pointLightFit's `model`) gives at a sample's normal. */
 export function pointLightPredict(n, m) {
-  return m.a + m.b * pointLightTerm(n, m.l, m.d, m.falloff);
+  return m.a + m.b * pointLightTerm(n[0], n[1], n[2], m.l, m.d, m.falloff);
 }
 
 /**
