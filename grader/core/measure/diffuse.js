@@ -1,7 +1,7 @@
 // P3–P5: brightness fitted by a + b·max(n·w_i, 0) for a fitted light direction w_i (and, to tell
 // them apart, by the two-sided a + b·|n·w_i|), the highlight above the fit measured on the way.
 import { DIRS } from './directions.js';
-import { luminance } from './samples.js';
+import { luminance, sameMask } from './samples.js';
 import { highlightOf } from './highlight.js';
 
 /** The samples where `use` is set, as flat arrays (normals, brightness), which every fit below reads. */
@@ -38,12 +38,6 @@ function fitDirection(F, l, twoSided = false) {
     }
   }
   return solve(F, sx, sxx, sxy, l);
-}
-
-/** Do two masks (0/1 a sample) pick the same samples? */
-function sameMask(a, b) {
-  for (let i = 0; i < a.length; i++) if (!a[i] !== !b[i]) return false;
-  return true;
 }
 
 /**

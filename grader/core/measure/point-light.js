@@ -1,7 +1,7 @@
 // P3–P5: a point light at a fitted distance, with and without the 1/r² fall-off, and which of the
 // two models a picture clearly shows.
 import { DIRS } from './directions.js';
-import { luminance } from './samples.js';
+import { luminance, sameMask } from './samples.js';
 import { highlightOf } from './highlight.js';
 
 /**
@@ -71,7 +71,7 @@ export function pointLightFit(pts, T) {
       const margin = T.highlightMargin * 0.7;
       const left = pts.map((s, i) => use0[i] && Math.min(s.y - none.a - none.b * none.xs[i], s.y - inv.a - inv.b * inv.xs[i]) < margin);
       // no pixel above both fits: the second pass would fit the same pixels to the same numbers
-      if (left.every((v, i) => v === use[i])) break;
+      if (sameMask(left, use)) break;
       use = left;
     }
   }

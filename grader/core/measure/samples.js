@@ -42,3 +42,9 @@ export function perspectiveSamples(img, an, fovy, opts = {}) {
 
 /** A sample colour's brightness: the mean of its channels. */
 export const luminance = (c) => (c[0] + c[1] + c[2]) / 3;
+
+/** Do two masks (a truthy entry a sample picked) pick the same samples? */
+export function sameMask(a, b) {
+  for (let i = 0; i < a.length; i++) if (!a[i] !== !b[i]) return false;
+  return true;
+}
