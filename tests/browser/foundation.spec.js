@@ -8,6 +8,7 @@
 // same views.
 import { test, expect, open, scene, andDraw, canvasPixels, expectCanvasScreenshot, messages } from './fixtures.js';
 import { checkNormalColours } from './bounds.js';
+import { P1_VIEWS, P2_VIEWS } from './screenshot-views.js';
 
 test('the front page lists the steps in order and every link works', { tag: '@any-api' }, async ({ page }) => {
   await page.goto('/');
@@ -24,12 +25,12 @@ test('the front page lists the steps in order and every link works', { tag: '@an
 });
 
 test.describe('WP04P1', () => {
-  for (const level of [0, 2, 5]) {
+  for (const { name, params: { level } } of P1_VIEWS) {
     test(`screenshot at level ${level}`, { tag: '@any-api' }, async ({ page }) => {
       const s = await open(page, '/WP04P1/', { level });
       expect(s.level).toBe(level);
       expect(s.vertices).toBe(12 * 4 ** level);
-      await expectCanvasScreenshot(page, `WP04P1-level${level}.png`);
+      await expectCanvasScreenshot(page, `${name}.png`);
     });
   }
 
@@ -84,17 +85,10 @@ test.describe('WP04P1', () => {
 });
 
 test.describe('WP04P2', () => {
-  const views = {
-    default: {},
-    'no-depth-no-cull': { depth: 0, cull: 0 },
-    'depth-only': { depth: 1, cull: 0 },
-    'cull-only': { depth: 0, cull: 1 },
-    clockwise: { cw: 1 },
-  };
-  for (const [name, params] of Object.entries(views)) {
-    test(`screenshot: ${name}`, { tag: '@any-api' }, async ({ page }) => {
-      await open(page, '/WP04P2/', { level: 4, ...params });
-      await expectCanvasScreenshot(page, `WP04P2-${name}.png`);
+  for (const { name, label, params } of P2_VIEWS) {
+    test(`screenshot: ${label}`, { tag: '@any-api' }, async ({ page }) => {
+      await open(page, '/WP04P2/', params);
+      await expectCanvasScreenshot(page, `${name}.png`);
     });
   }
 

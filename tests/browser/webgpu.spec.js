@@ -3,6 +3,7 @@
 // multisampling is a parameter. (The capture these pictures come through is held to a cleared
 // canvas and a triangle, in both formats and with padded rows, in grader.spec.js.)
 import { test, expect, open, scene, canvasPixels, andDraw, anotherPage } from './fixtures.js';
+import { P1_VIEWS, P2_VIEWS } from './screenshot-views.js';
 
 test.beforeEach(({ api }) => {
   test.skip(api !== 'webgpu', 'WebGPU only');
@@ -32,8 +33,8 @@ async function webglTwin(page, path, params) {
 const STILL = { orbit: 0 };
 const CASES = [
   // the unlit steps: the views of foundation.spec.js's screenshots (held there under WebGL 2 only)
-  ['WP04P1', [{ level: 0 }, { level: 2 }, { level: 5 }, {}]],
-  ['WP04P2', [{ level: 2 }, ...[{}, { depth: 0, cull: 0 }, { depth: 1, cull: 0 }, { depth: 0, cull: 1 }, { cw: 1 }].map((p) => ({ level: 4, ...p })), {}]],
+  ['WP04P1', [...P1_VIEWS.map((v) => v.params), {}]],
+  ['WP04P2', [{ level: 2 }, ...P2_VIEWS.map((v) => v.params), {}]],
   // the lit steps: each orbit angle once, each level (2, 4 and the chosen one) at more than one
   // angle, the point light once
   ...['WP04P3', 'WP04P4', 'WP04P5'].map((step) => [step, [{ angle: 0 }, { angle: 0, level: 2 }, { angle: 1.1, level: 4, light: 'point' },
