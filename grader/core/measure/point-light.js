@@ -32,20 +32,35 @@ export function pointLightFit(pts, T) {
       if (keep) xs[i] = x;
       n++; sx += x; sy += y; sxx += x * x; sxy += x * y; syy += y * y;
     }
-    const den = n * sxx - sx * sx;
-    const b = den > 1e-9 ? (n * sxy - sx * sy) / den : 0;
-    const a = (sy - b * sx) / n;
-    return { a, b, l, d, falloff, sse: Math.max(0, syy - a * sy - b * sxy), xs };
+    return { ...solve(n, sy, syy, sx, sxx, sxy, l, d, falloff), xs };
   };
-  const search = (use, falloff, around) => {
-    let best = null;
-    const dirs = DIRS.filter((l) => !around || l[0] * around[0] + l[1] * around[1] + l[2] * around[2] > 0.5);
+  // the coarse grid of lights for both models at once: a sample's w_i and ‖p_ℓ − x‖² serve both, and
+  // each model's sums are added up in the order fit() adds them (the same numbers to the last bit)
+  const grid = (use, dirs) => {
+    let none = null, inv = null;
     for (const d of DIST) {
+      const g = (d - 1) * (d - 1);
       for (const l of dirs) {
-        const f = fit(use, l, d, falloff);
-        if (f.b > 0 && (!best || f.sse < best.sse)) best = f;
+        let n = 0, sy = 0, syy = 0, sx = 0, sxx = 0, sxy = 0, ux = 0, uxx = 0, uxy = 0;
+        for (let i = 0; i < m; i++) {
+          if (!use[i]) continue;
+          const cos = pointLightTerm(nx[i], ny[i], nz[i], l, d, false);
+          const x = cos * g / distance2(nx[i], ny[i], nz[i], l, d);
+          const y = ys[i];
+          n++; sy += y; syy += y * y;
+          sx += cos; sxx += cos * cos; sxy += cos * y;
+          ux += x; uxx += x * x; uxy += x * y;
+        }
+        const f = solve(n, sy, syy, sx, sxx, sxy, l, d, false), h = solve(n, sy, syy, ux, uxx, uxy, l, d, true);
+        if (f.b > 0 && (!none || f.sse < none.sse)) none = f;
+        if (h.b > 0 && (!inv || h.sse < inv.sse)) inv = h;
       }
     }
+    return { none, inv };
+  };
+  // from the grid's best, the direction refined, then the distance
+  const search = (use, falloff, coarse) => {
+    let best = coarse;
     if (!best) return null;
     for (let step = 0.1; step > 0.005; step /= 2) { // refine the direction, then the distance
       for (const dd of [[1, 0, 0], [-1, 0, 0], [0, 1, 0], [0, -1, 0], [0, 0, 1], [0, 0, -1]]) {
@@ -63,9 +78,11 @@ export function pointLightFit(pts, T) {
   let use = use0;
   let none = null, inv = null;
   const around = T.around || null;
+  const dirs = DIRS.filter((l) => !around || l[0] * around[0] + l[1] * around[1] + l[2] * around[2] > 0.5);
   for (let pass = 0; pass < 2; pass++) {
-    none = search(use, false, around);
-    inv = search(use, true, around);
+    const coarse = grid(use, dirs);
+    none = search(use, false, coarse.none);
+    inv = search(use, true, coarse.inv);
     if (!none || !inv) return null;
     if (pass === 0) {
       const margin = T.highlightMargin * 0.7;
@@ -96,6 +113,20 @@ function pointLightTerm(n0, n1, n2, l, d, falloff) {
   const r2 = wx * wx + wy * wy + wz * wz;
   const cos = Math.max(0, (n0 * wx + n1 * wy + n2 * wz) / Math.sqrt(r2));
   return falloff ? cos * ((d - 1) * (d - 1)) / r2 : cos;
+}
+
+/** ‖p_ℓ − x‖² for the light at p_ℓ = d·l and the unit sphere's point x = (n0, n1, n2). */
+function distance2(n0, n1, n2, l, d) {
+  const wx = d * l[0] - n0, wy = d * l[1] - n1, wz = d * l[2] - n2;
+  return wx * wx + wy * wy + wz * wz;
+}
+
+/** The least-squares (a, b) of y ≈ a + b x over n samples from the sums, and the residual Σy² − a Σy − b Σxy. */
+function solve(n, sy, syy, sx, sxx, sxy, l, d, falloff) {
+  const den = n * sxx - sx * sx;
+  const b = den > 1e-9 ? (n * sxy - sx * sy) / den : 0;
+  const a = (sy - b * sx) / n;
+  return { a, b, l, d, falloff, sse: Math.max(0, syy - a * sy - b * sxy) };
 }
 
 /** The brightness a fitted point-light model (pointLightFit's `model`) gives at a sample's normal. */
