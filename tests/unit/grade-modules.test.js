@@ -130,6 +130,13 @@ test('openMask is a morphological opening by a (2r + 1)² square, outside the pi
     const m = Uint8Array.from({ length: w * h }, () => (rnd() < density ? 1 : 0));
     assert.deepEqual([...openMask(m.slice(), w, h, r)], [...byDefinition(m, w, h, r)], `${w}×${h}, r ${r}`);
   }
+  // the ones in a part of the picture only (openMask works in the box around them): inside, at an
+  // edge, in a corner, none at all
+  for (const [w, h, r, bx0, bx1, by0, by1] of [[40, 30, 2, 10, 25, 5, 15], [40, 30, 3, 30, 39, 12, 29], [25, 25, 1, 0, 6, 0, 8], [20, 20, 2, 5, 4, 5, 4]]) {
+    const m = new Uint8Array(w * h);
+    for (let y = by0; y <= by1; y++) for (let x = bx0; x <= bx1; x++) m[y * w + x] = rnd() < 0.85 ? 1 : 0;
+    assert.deepEqual([...openMask(m.slice(), w, h, r)], [...byDefinition(m, w, h, r)], `${w}×${h}, r ${r}, ones in x ${bx0}..${bx1}, y ${by0}..${by1}`);
+  }
 });
 
 test('diffuseFit finds the light of a diffuse sphere, and its ambient and diffuse terms', () => {

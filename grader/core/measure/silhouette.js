@@ -92,6 +92,30 @@ export function analyse(img, T) {
  */
 export function openMask(mask, w, h, r) {
   if (!r) return mask;
+  // an opening only takes ones away, so it is done in the box around the ones, as a picture of
+  // its own whose outside counts as 0 (as the picture's does, and all round the box it holds no
+  // one): the same mask, for a fraction of the work where the object is small in the picture
+  let x0 = w, x1 = -1, y0 = h, y1 = -1;
+  for (let y = 0, o = 0; y < h; y++, o += w) {
+    for (let x = 0; x < w; x++) {
+      if (!mask[o + x]) continue;
+      if (x < x0) x0 = x;
+      if (x > x1) x1 = x;
+      if (y < y0) y0 = y;
+      y1 = y;
+    }
+  }
+  if (x1 < 0) return mask;
+  const bw = x1 - x0 + 1, bh = y1 - y0 + 1;
+  const box = new Uint8Array(bw * bh);
+  for (let y = 0; y < bh; y++) box.set(mask.subarray((y0 + y) * w + x0, (y0 + y) * w + x0 + bw), y * bw);
+  const opened = openBox(box, bw, bh, r);
+  for (let y = 0; y < bh; y++) mask.set(opened.subarray(y * bw, (y + 1) * bw), (y0 + y) * w + x0);
+  return mask;
+}
+
+/** The opening of a w × h mask by a square of side 2r + 1 (outside the mask counts as 0): a new mask. */
+function openBox(mask, w, h, r) {
   const tmp = new Uint8Array(mask.length);
   // erode then dilate, each as a horizontal and a vertical pass of a 1-D min (max) over 2r + 1,
   // read off a count of ones in the window (outside the picture counts as 0); the vertical pass
@@ -125,8 +149,7 @@ export function openMask(mask, w, h, r) {
   pass(eroded, tmp, true, false);
   const opened = new Uint8Array(mask.length);
   pass(tmp, opened, false, false);
-  mask.set(opened);
-  return mask;
+  return opened;
 }
 
 /**
