@@ -28,14 +28,11 @@ export default defineConfig({
     // the course's real hand-ins graded live (grader.spec.js): the longest test, queued first so
     // that the others fill the second worker around it instead of waiting on it at the end
     { name: 'handins', testMatch: /grader\.spec\.js/, grep: /real hand-ins/ },
+    // Firefox (WebGL 2 and WebGL 1 inside the spec); Playwright's own browser is not used here.
+    // Projects are queued in this order: the long tests early (Firefox's grader run is 16 s), the
+    // short ones of WebGL 1 last, so that neither worker waits on the other at the end
+    { name: 'firefox', testMatch: /firefox\.spec\.js/ },
     { name: 'webgl2', use: { api: 'webgl2' }, testIgnore: /firefox\.spec\.js/, grepInvert: /real hand-ins/ },
-    // WebGL 1 runs the same GLSL and the same JavaScript as WebGL 2 (only getContext differs), so
-    // here it runs what the context can change: the unlit steps' pictures against the sphere,
-    // buffers and state (foundation). The lit steps under WebGL 1 are held by the Firefox suite (another engine, the
-    // same exact reference). Tests tagged @any-api run once, under WebGL 2: the same JavaScript
-    // whichever API (the controls, the URL, fuzzed values), or a picture whose WebGPU twin
-    // webgpu.spec.js holds equal to WebGL 2's in the same views.
-    { name: 'webgl1', use: { api: 'webgl' }, testMatch: /foundation\.spec\.js/, grepInvert: /@any-api/ },
     {
       name: 'webgpu',
       use: { api: 'webgpu', launchOptions: { executablePath: CHROMIUM, args: [...CHROMIUM_ARGS, ...WEBGPU_ARGS] } },
@@ -44,8 +41,13 @@ export default defineConfig({
       // the same pictures: a WebGPU page is held to the WebGL 2 baselines
       snapshotPathTemplate: 'tests/screenshots/webgl2/{arg}{ext}',
     },
-    // Firefox (WebGL 2 and WebGL 1 inside the spec); Playwright's own browser is not used here
-    { name: 'firefox', testMatch: /firefox\.spec\.js/ },
+    // WebGL 1 runs the same GLSL and the same JavaScript as WebGL 2 (only getContext differs), so
+    // here it runs what the context can change: the unlit steps' pictures against the sphere,
+    // buffers and state (foundation). The lit steps under WebGL 1 are held by the Firefox suite (another engine, the
+    // same exact reference). Tests tagged @any-api run once, under WebGL 2: the same JavaScript
+    // whichever API (the controls, the URL, fuzzed values), or a picture whose WebGPU twin
+    // webgpu.spec.js holds equal to WebGL 2's in the same views.
+    { name: 'webgl1', use: { api: 'webgl' }, testMatch: /foundation\.spec\.js/, grepInvert: /@any-api/ },
   ],
   webServer: {
     command: `node tools/serve.js --port ${PORT}`,
