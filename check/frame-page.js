@@ -20,7 +20,7 @@ export function framePage(frame, log) {
   /** Waits for the last WebGPU frame's copy to the canvas (grader/browser/webgpu-capture.js). */
   const settle = async () => {
     const s = win().__webgpuCapture;
-    for (let k = 0; s && k < 100 && s.pending; k++) await s.pending;
+    if (s) await s.settled();
   };
   const newTask = () => { const w = watch(); if (w.newTask) w.newTask(); }; // check/frame-watch.js's loop guard
 
@@ -57,12 +57,13 @@ export function framePage(frame, log) {
       if (key.length === 1) target.dispatchEvent(new W.KeyboardEvent('keypress', { ...init, charCode: key.charCodeAt(0), keyCode: key.charCodeAt(0), which: key.charCodeAt(0) }));
       target.dispatchEvent(new W.KeyboardEvent('keyup', init));
     },
-    /** Frozen time advances: a jump to 16·frames before `ms`, then `frames` frames at 60 Hz. */
+    /** Frozen time advances: a jump to 16·frames before `ms`, then `frames` frames at 60 Hz; returns state() after them. */
     async tick(ms, frames = 2) {
       const clock = win().__checkClock;
       if (ms > 16 * frames + 8) await clock.fastForward(ms - 16 * frames);
       await clock.runFor(Math.min(ms, 16 * frames));
       await settle();
+      return plain(g().state());
     },
     /** The grader's experiment: WebGL draws with back-face culling off (true) or as the page set it (false). */
     async setNoCull(on) {

@@ -16,6 +16,11 @@ export const WEBGPU_ARGS = ['--enable-unsafe-webgpu', '--enable-features=Vulkan'
 export function webgpuCaptureScript() {
   if (typeof navigator === 'undefined' || !navigator.gpu || typeof GPUQueue === 'undefined') return;
   const state = { frames: 0, captured: 0, width: 0, height: 0, format: null, pending: null, again: false, errors: [] };
+  // waits until the last submitted frame has been copied (no timers: the grader's clock may be
+  // paused; a finished copy starts the next one at once)
+  state.settled = async () => {
+    for (let k = 0; k < 100 && state.pending; k++) await state.pending;
+  };
   Object.defineProperty(window, '__webgpuCapture', { value: state, enumerable: false });
   const contexts = new Set();
   const realGetContext = HTMLCanvasElement.prototype.getContext;
@@ -117,8 +122,7 @@ export async function readWebGPUFrame(page) {
   return page.evaluate(async () => {
     const s = window.__webgpuCapture;
     if (!s) return null;
-    // no timers here: the grader's clock may be paused; a finished copy starts the next one at once
-    for (let k = 0; k < 100 && s.pending; k++) await s.pending;
+    await s.settled();
     return { frames: s.frames, captured: s.captured, width: s.width, height: s.height, format: s.format, errors: [...s.errors] };
   });
 }

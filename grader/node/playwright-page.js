@@ -4,7 +4,7 @@
 // firefox-page.js opens in Firefox ESR. The check page has its own implementation of the same
 // interface for a part in an iframe; the core knows none of them.
 import { PNG } from 'pngjs';
-import { webgpuCaptureScript, readWebGPUFrame } from '../browser/webgpu-capture.js';
+import { webgpuCaptureScript } from '../browser/webgpu-capture.js';
 import { instrumentScript } from '../browser/instrument.js';
 import { frameClockScript } from '../browser/clock.js';
 import { serveSubmission } from './serve-submission.js';
@@ -102,8 +102,11 @@ export function pageDriver(page, log) {
     state: () => page.evaluate(() => window.__grade.state()),
     /** The canvas as { width, height, api, data } (RGBA bytes), after the last WebGPU frame is copied; or null. */
     async snap() {
-      await readWebGPUFrame(page);
-      const r = await page.evaluate(() => window.__grade.pixels('png'));
+      // (one call to the page: each costs the grader milliseconds of its own)
+      const r = await page.evaluate(async () => {
+        if (window.__webgpuCapture) await window.__webgpuCapture.settled();
+        return window.__grade.pixels('png');
+      });
       if (!r) return null;
       const { data } = PNG.sync.read(Buffer.from(r.png.slice(r.png.indexOf(',') + 1), 'base64'));
       return { width: r.width, height: r.height, api: r.api, data: new Uint8Array(data.buffer, data.byteOffset, data.length) };
@@ -114,14 +117,17 @@ export function pageDriver(page, log) {
     setValue: (c, value, events) => page.evaluate(([i, v, ev]) => window.__grade.setValue(i, v, ev), [c.index, value, events]),
     /** A key pressed and released, sent where the page listens (the focused element, else the body). */
     press: (key) => page.keyboard.press(key),
-    /** Lets `ms` of frozen time pass (grader/browser/clock.js): a jump (due timers and one animation frame fire once), then `frames` frames at 60 Hz. */
-    async tick(ms, frames = 2) {
-      await page.evaluate(async ([jump, run]) => {
-        if (jump > 0) await window.__checkClock.fastForward(jump);
-        await window.__checkClock.runFor(run);
-      }, [ms > 16 * frames + 8 ? ms - 16 * frames : 0, Math.min(ms, 16 * frames)]);
-      await readWebGPUFrame(page);
-    },
+    /**
+     * Lets `ms` of frozen time pass (grader/browser/clock.js): a jump (due timers and one animation
+     * frame fire once), then `frames` frames at 60 Hz; the last WebGPU frame's copy awaited. Returns
+     * state() as the frames left it, in the same call to the page.
+     */
+    tick: (ms, frames = 2) => page.evaluate(async ([jump, run]) => {
+      if (jump > 0) await window.__checkClock.fastForward(jump);
+      await window.__checkClock.runFor(run);
+      if (window.__webgpuCapture) await window.__webgpuCapture.settled();
+      return window.__grade.state();
+    }, [ms > 16 * frames + 8 ? ms - 16 * frames : 0, Math.min(ms, 16 * frames)]),
     /** The grader's experiment: WebGL draws with back-face culling off (true) or as the page set it (false). */
     setNoCull: (on) => page.evaluate((v) => { window.__grade.noCull = v; }, on),
     sources: () => page.evaluate(() => ({ glsl: window.__grade.glsl, wgsl: window.__grade.wgsl })),

@@ -240,16 +240,17 @@ function fakePart({ controls, act = () => {}, key = () => {}, level = 1 }) {
     const rho = Math.hypot(nx, ny), t = normalAngle(rho, Math.asin(1 / 3)), k = rho ? Math.sin(t) / rho : 0;
     return [0.5 * nx * k + 0.5, 0.5 * ny * k + 0.5, 0.5 * Math.cos(t) + 0.5];
   };
+  const pageState = async () => ({ api: 'webgl', frames: 0, adapter: 'ok', draws: 1, vertices: 3, pending: 0, shaderErrors: [], gpuErrors: [], faces: { depthTest: true, culling: true } });
   return {
     state,
     page: {
-      state: async () => ({ api: 'webgl', frames: 0, adapter: 'ok', draws: 1, vertices: 3, pending: 0, shaderErrors: [], gpuErrors: [], faces: { depthTest: true, culling: true } }),
+      state: pageState,
       snap: async () => ({ ...polygon(4 * 2 ** Math.min(state.level, 6), { w: 128, r: 50, shade: normals }), api: 'webgl' }),
       controls: async () => controls,
       click: async (c) => { act(c, state); return { ok: true }; },
       setValue: async () => {},
       press: async (k) => key(k, state),
-      tick: async () => {},
+      tick: pageState,
       setNoCull: async () => {},
       sources: async () => ({ glsl: [], wgsl: [] }),
       errors: () => [],

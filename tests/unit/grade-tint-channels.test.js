@@ -127,14 +127,15 @@ test('a highlight at the light is a review on a plain material, and a note where
 function fakePage(controls, draw) {
   const values = new Map(controls.map((c) => [c.index, c.value]));
   const calls = [];
+  const pageState = async () => ({ api: 'webgl', frames: 0, draws: 1, vertices: 3, pending: 0, faces: {} });
   return {
     calls, values,
     page: {
-      state: async () => ({ api: 'webgl', frames: 0, draws: 1, vertices: 3, pending: 0, faces: {} }),
+      state: pageState,
       snap: async () => draw(values),
       controls: async () => controls,
       setValue: async (c, v, events) => { values.set(c.index, String(v)); calls.push([c.id, String(v), events.join(',')]); },
-      tick: async () => {},
+      tick: pageState,
       click: async () => ({ ok: true }),
     },
   };

@@ -7,7 +7,7 @@
 //
 // It drives the page only through the page interface (grader/node/playwright-page.js for the
 // grader, check/frame-page.js for the check page): state(), snap(), controls(), click(c),
-// setValue(c, v, events), press(key), tick(ms, frames), setNoCull(on), sources(), errors().
+// setValue(c, v, events), press(key), tick(ms, frames) → state(), setNoCull(on), sources(), errors().
 import { session, TooSlow } from './session.js';
 import { findOrbit, sampleOrbit, look } from './orbit.js';
 import { findLevel, climb } from './level.js';

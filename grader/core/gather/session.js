@@ -56,8 +56,7 @@ export function session(page, { part, rubric, progress = () => {}, deadline = In
     /** A jump (the frame it fires draws a change made in a handler), then `frames` more at 60 Hz. */
     async tick(ms, frames = 0) {
       S.outOfTime();
-      await page.tick(ms, frames);
-      const s = await page.state();
+      const s = await page.tick(ms, frames); // (the state the frames left)
       const w = facts.work;
       S.frameWork = ((s.vertices - w.vertices) + T.drawCallWork * (s.draws - w.draws)) / (frames + 1);
       Object.assign(w, { frames: w.frames + frames + 1, draws: s.draws, vertices: s.vertices });
