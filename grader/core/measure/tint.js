@@ -87,12 +87,14 @@ function albedoAndLighting(use, l, q0, a0, b0, iterations) {
  * A(n) = 1 + q·n: in turns, the lighting by diffuseFit on the brightness with A divided out (its
  * light direction searched, the highlight left out), then A and the lighting for that light by
  * least squares (albedoAndLighting). diffuseFit's result on the de-tinted samples, with
- * `albedoSlope` |q|; null where it cannot be fitted.
+ * `albedoSlope` |q|; null where it cannot be fitted. `plain`: diffuseFit(pts, T), where the caller has it.
  */
-export function detintedFit(pts, T) {
+export function detintedFit(pts, T, plain = diffuseFit(pts, T)) {
   let q = [0, 0, 0];
   const albedo = () => (n) => Math.max(0.05, 1 + q[0] * n[0] + q[1] * n[1] + q[2] * n[2]);
-  const fitWith = (A) => diffuseFit(pts.map((s) => ({ ...s, c: s.c.map((v) => v / A(s.n)) })), T);
+  // (with q = 0, A is 1 and the samples divide out to themselves: the fit is `plain`, diffuseFit's
+  // on the samples as they are, to the last bit)
+  const fitWith = (A) => (q.every((v) => v === 0) ? plain : diffuseFit(pts.map((s) => ({ ...s, c: s.c.map((v) => v / A(s.n)) })), T));
   for (let round = 0; round < T.tintRounds; round++) {
     const A = albedo();
     const fit = fitWith(A);
@@ -125,7 +127,7 @@ export function shadeFit(pts, T) {
   if (!plain) return null;
   const hue = hueByNormal(pts);
   if (!tintedByNormal(hue, T)) return plain;
-  const de = detintedFit(pts, T);
+  const de = detintedFit(pts, T, plain);
   // the de-tinted fit where it explains the picture better, and does not lose a highlight the plain one sees
   const fit = de && de.r2 >= plain.r2 && (highlightSeen(de, T) || !highlightSeen(plain, T)) ? de : plain;
   const lightShift = de ? angleOf(de.light, plain.light) : null;
