@@ -1,13 +1,22 @@
-// One audit worker (audit-pool.js): an artifact's folder in, its judging out.
-import { parentPort, workerData } from 'node:worker_threads';
+// One audit process (audit-pool.js): the rubric, then an artifact's folder at a time in, its
+// judging out. It ends when the pool lets go of it (the IPC channel closes).
 import { readArtifact } from './artifacts.js';
 import { judged } from '../core/grade-part.js';
 
-parentPort.on('message', (dir) => {
-  const artifact = readArtifact(dir);
-  if (!artifact) return parentPort.postMessage(null);
-  const j = judged(artifact, workerData.rubric);
-  delete j.images; // (pictures stay here: the artifact's files name them)
-  delete j.artifact;
-  parentPort.postMessage({ ...j, files: artifact.files, errors: artifact.facts.errors || [] });
+let rubric = null;
+process.on('message', (m) => {
+  if (m.rubric) {
+    rubric = m.rubric;
+    return;
+  }
+  try {
+    const artifact = readArtifact(m.dir);
+    if (!artifact) return process.send({ result: null });
+    const j = judged(artifact, rubric);
+    delete j.images; // (pictures stay here: the artifact's files name them)
+    delete j.artifact;
+    process.send({ result: { ...j, files: artifact.files, errors: artifact.facts.errors || [] } });
+  } catch (err) {
+    process.send({ error: err.message });
+  }
 });
