@@ -3,6 +3,7 @@
 import { DIRS } from './directions.js';
 import { luminance, sameMask } from './samples.js';
 import { highlightOf } from './highlight.js';
+import { lineFit } from './linear.js';
 
 /** The samples where `use` is set, as flat arrays (normals, brightness), which every fit below reads. */
 function flat(pts, use) {
@@ -57,13 +58,8 @@ function fitTwoSided(Fall, F, use, l) {
   return [solve(F, ux, uxx, uxy, l), solve(Fall, sx, sxx, sxy, l)];
 }
 
-/** The least-squares (a, b) of y ≈ a + b x from the sums, and the residual Σy² − a Σy − b Σxy. */
-function solve({ m, sy, syy }, sx, sxx, sxy, l) {
-  const den = m * sxx - sx * sx;
-  const b = den > 1e-9 ? (m * sxy - sx * sy) / den : 0;
-  const a = (sy - b * sx) / m;
-  return { a, b, sse: Math.max(0, syy - a * sy - b * sxy), l };
-}
+/** The line fit of the samples F's brightness against x, from the sums, with the light direction l tried. */
+const solve = ({ m, sy, syy }, sx, sxx, sxy, l) => ({ ...lineFit(m, sy, syy, sx, sxx, sxy), l });
 
 /**
  * P3–P5: fit brightness = ambient + diffuse·max(n·w_i, 0) for some light direction w_i, leaving

@@ -1,4 +1,5 @@
-// The small solvers the fits share: a 3×3 determinant and a 3×3 linear system (Cramer's rule).
+// The small solvers the fits share: a 3×3 determinant and a 3×3 linear system (Cramer's rule), and
+// the straight line through n points from their sums.
 
 /** The determinant of a 3×3 matrix (rows). */
 export const det3 = (m) => m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
@@ -62,4 +63,12 @@ export function symmetricEigenvalues3(M) {
     }
   }
   return [a[0][0], a[1][1], a[2][2]].sort((x, y) => y - x);
+}
+
+/** The least-squares (a, b) of y ≈ a + b x over n points from the sums, and the residual Σy² − a Σy − b Σxy. */
+export function lineFit(n, sy, syy, sx, sxx, sxy) {
+  const den = n * sxx - sx * sx;
+  const b = den > 1e-9 ? (n * sxy - sx * sy) / den : 0;
+  const a = (sy - b * sx) / n;
+  return { a, b, sse: Math.max(0, syy - a * sy - b * sxy) };
 }

@@ -3,6 +3,7 @@
 import { DIRS } from './directions.js';
 import { luminance, sameMask } from './samples.js';
 import { highlightOf } from './highlight.js';
+import { lineFit } from './linear.js';
 
 /**
  * P3–P5: is the light a point light, and does it fall off as 1/r² (the slides: L_i = I/‖p_ℓ − x‖²)?
@@ -121,13 +122,8 @@ function distance2(n0, n1, n2, l, d) {
   return wx * wx + wy * wy + wz * wz;
 }
 
-/** The least-squares (a, b) of y ≈ a + b x over n samples from the sums, and the residual Σy² − a Σy − b Σxy. */
-function solve(n, sy, syy, sx, sxx, sxy, l, d, falloff) {
-  const den = n * sxx - sx * sx;
-  const b = den > 1e-9 ? (n * sxy - sx * sy) / den : 0;
-  const a = (sy - b * sx) / n;
-  return { a, b, l, d, falloff, sse: Math.max(0, syy - a * sy - b * sxy) };
-}
+/** The line fit over n samples from the sums, with the light tried (d·l, with or without fall-off). */
+const solve = (n, sy, syy, sx, sxx, sxy, l, d, falloff) => ({ ...lineFit(n, sy, syy, sx, sxx, sxy), l, d, falloff });
 
 /** The brightness a fitted point-light model (pointLightFit's `model`) gives at a sample's normal. */
 export function pointLightPredict(n, m) {
