@@ -9,6 +9,7 @@
 import { framePage } from './frame-page.js';
 import { frameWatchScript } from './frame-watch.js';
 import { frameClockScript } from '../grader/browser/clock.js';
+import { drawBatchScript } from '../grader/browser/draw-batch.js';
 import { instrumentScript } from '../grader/browser/instrument.js';
 import { webgpuCaptureScript } from '../grader/browser/webgpu-capture.js';
 import { gradePart } from '../grader/core/grade-part.js';
@@ -20,11 +21,12 @@ import { NOT_CHECKED, notCheckedHere } from './not-checked.js';
 export const FROZEN = Date.UTC(2026, 0, 5, 9, 0, 0);
 export const VIEWPORT = 1000;
 
-/** The script every part's HTML gets first: the watch, the WebGPU capture, the grader's instrumentation, the clock. */
+/** The script every part's HTML gets first: the watch, the WebGPU capture, the draw batching and the grader's instrumentation, the clock. */
 export function frameScript(rubric) {
   return [
     `(${frameWatchScript})(${JSON.stringify({ loopSeconds: rubric.loadSeconds })});`,
     `(${webgpuCaptureScript})();`,
+    `(${drawBatchScript})();`,
     `(${instrumentScript})();`,
     `(${frameClockScript})(${FROZEN});`,
   ].join('\n');

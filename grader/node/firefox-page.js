@@ -4,6 +4,7 @@
 // the same serving rules (serve-submission.js's submissionAnswers: only the submission's files,
 // stand-ins said, other hosts blocked and listed), driven by the same pageDriver. This Firefox has
 // no WebGPU, so there is no WebGPU capture: a WebGPU part is not graded here (audits/first-frame.js).
+import { drawBatchScript } from '../browser/draw-batch.js';
 import { instrumentScript } from '../browser/instrument.js';
 import { frameClockScript } from '../browser/clock.js';
 import { submissionAnswers } from './serve-submission.js';
@@ -58,6 +59,7 @@ export function firefoxOpener(browser, host) {
         log.errors.push(`dialog: ${d.message()}`);
         d.dismiss().catch(() => {});
       });
+      await page.evaluateOnNewDocument(drawBatchScript);
       await page.evaluateOnNewDocument(instrumentScript);
       await page.evaluateOnNewDocument(frameClockScript, FROZEN.getTime());
       const url = `${site.origin}/${rel.split(/[\\/]/).map(encodeURIComponent).join('/')}${query ? `?${query}` : ''}`;

@@ -5,6 +5,7 @@
 // interface for a part in an iframe; the core knows none of them.
 import { PNG } from 'pngjs';
 import { webgpuCaptureScript } from '../browser/webgpu-capture.js';
+import { drawBatchScript } from '../browser/draw-batch.js';
 import { instrumentScript } from '../browser/instrument.js';
 import { frameClockScript } from '../browser/clock.js';
 import { serveSubmission } from './serve-submission.js';
@@ -32,6 +33,7 @@ export function partOpener(browser, host) {
     const context = await browser.newContext({ viewport: { width: 1000, height: 1000 }, deviceScaleFactor: 1 });
     await serveSubmission(context, site);
     await context.addInitScript(webgpuCaptureScript);
+    await context.addInitScript(drawBatchScript);
     await context.addInitScript(instrumentScript);
     await context.addInitScript(frameClockScript, FROZEN.getTime());
     const page = await context.newPage();
