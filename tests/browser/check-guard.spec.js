@@ -1,9 +1,9 @@
 // The check page against a script that never returns, in each form a hand-in writes it: inline in
-// the HTML, in a .js file, in an inline module, in a .mjs and in a .js that a module imports, and
-// in a WebGPU part's JavaScript. A part's frame shares the check page's thread, so only the loop
-// guard (check/guard.js, served by check/serve.js) stops such a loop: without it, the check page
-// freezes and the test times out. Each hand-in's WP04P1 loops forever; its WP04P2, a page with no
-// canvas, shows that the next part is checked. The rubric's time bounds are shortened (the loop
+// the HTML, in a .js file, in an inline module, in a .mjs and in a .js that a module imports (one
+// hand-in, a form a part), and in a WebGPU part's JavaScript (WP04P1; its WP04P2, a page with no
+// canvas, shows that the next part is checked). A part's frame shares the check page's thread, so
+// only the loop guard (check/guard.js, served by check/serve.js) stops such a loop: without it, the
+// check page freezes and the test times out. The rubric's time bounds are shortened (the loop
 // is stopped after loadSeconds) so that a form costs seconds, not the shipped 20 s.
 // Also: pages that begin with their scripts (no <head> or <html>, scripts before <head>) are
 // checked as the grader checks them, and a part gets no verdict where the browser has no WebGPU
@@ -36,10 +36,10 @@ const FORMS = {
   },
 };
 
-/** A hand-in in a new folder from { path: text }, with NEXT. */
-function handIn(files) {
+/** A hand-in in a new folder from { path: text }, with `next` (by default NEXT: a WP04P2 checked after the loop). */
+function handIn(files, next = NEXT) {
   const dir = mkdtempSync(path.join(os.tmpdir(), 'check-loop-'));
-  for (const [rel, text] of Object.entries({ ...files, ...NEXT })) {
+  for (const [rel, text] of Object.entries({ ...files, ...next })) {
     mkdirSync(path.dirname(path.join(dir, rel)), { recursive: true });
     writeFileSync(path.join(dir, rel), text);
   }
@@ -62,11 +62,24 @@ async function expectLoopStopped(page, dir) {
 
 test.describe('a script that never returns', () => {
   test.setTimeout(180_000);
-  for (const [form, files] of Object.entries(FORMS)) {
-    test(`${form}: stopped, said, and the next part is checked`, async ({ page }) => {
-      await expectLoopStopped(page, handIn(files));
+  // one hand-in whose five parts loop in the five forms, one a part: each is stopped and said, and
+  // the next is checked after it (a form whose files the guard misses freezes the page there)
+  test(`each form, one a part (${Object.keys(FORMS).join('; ')}): stopped, said, and the next part is checked`, async ({ page }) => {
+    const files = {};
+    Object.values(FORMS).forEach((form, k) => {
+      for (const [rel, text] of Object.entries(form)) files[rel.replace(/^WP04P1\//, `WP04P${k + 1}/`)] = text;
     });
-  }
+    await routeRubric(page, { loadSeconds: 2, timeoutSeconds: 20 });
+    const { check } = await checkFolder(page, handIn(files, {}), { query: '?reference=0', timeout: 150_000 });
+    expect(check.error).toBeUndefined();
+    expect(check.parts.map((p) => [p.part, p.verdict])).toEqual(Object.keys(FORMS).map((_, k) => [`WP04P${k + 1}`, 'fail']));
+    Object.keys(FORMS).forEach((form, k) => {
+      expect(check.parts[k].reasons[0], form).toMatch(/never returns.*a loop ran for \d+ s without returning \(stopped by the self-check\)/);
+    });
+    await expect(page.locator('#progress')).toHaveText(/^done in \d+ s: 0 of 5 parts pass$/);
+    await expect(page.locator('#card-WP04P5')).toContainText('a loop ran for');
+    await expect(page.getByLabel('Your worksheet folder:')).toBeEnabled();
+  });
 
   test('in a WebGPU part\'s JavaScript, after the adapter and device: stopped, said, and the next part is checked', async ({ baseURL }) => {
     const gpu = 'async function main() {\n' +
