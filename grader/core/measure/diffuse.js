@@ -21,6 +21,7 @@ function flat(pts, use) {
   return { m, nx, ny, nz, y, sy, syy };
 }
 
+/** The line fit ({ a, b, sse }) of the samples F's brightness against max(n·l, 0) (or |n·l|). */
 function fitDirection(F, l, twoSided = false) {
   // brightness ≈ a + b max(n·l, 0) (or a + b |n·l|, lit on both sides): linear in (a, b) for a given l;
   // one pass: at the least-squares (a, b) the residual is Σy² − a Σy − b Σxy
@@ -38,7 +39,7 @@ function fitDirection(F, l, twoSided = false) {
       if (x > 0) { sx += x; sxx += x * x; sxy += x * y[i]; }
     }
   }
-  return solve(F, sx, sxx, sxy, l);
+  return lineFit(F.m, F.sy, F.syy, sx, sxx, sxy);
 }
 
 /**
@@ -55,11 +56,8 @@ function fitTwoSided(Fall, F, use, l) {
     sx += x; sxx += x * x; sxy += x * y[i];
     if (use[i]) { ux += x; uxx += x * x; uxy += x * y[i]; }
   }
-  return [solve(F, ux, uxx, uxy, l), solve(Fall, sx, sxx, sxy, l)];
+  return [lineFit(F.m, F.sy, F.syy, ux, uxx, uxy), lineFit(Fall.m, Fall.sy, Fall.syy, sx, sxx, sxy)];
 }
-
-/** The line fit of the samples F's brightness against x, from the sums, with the light direction l tried. */
-const solve = ({ m, sy, syy }, sx, sxx, sxy, l) => ({ ...lineFit(m, sy, syy, sx, sxx, sxy), l });
 
 /**
  * P3–P5: fit brightness = ambient + diffuse·max(n·w_i, 0) for some light direction w_i, leaving
@@ -83,14 +81,14 @@ export function diffuseFit(pts, T) {
     F = flat(pts, use);
     for (const l of DIRS) {
       const f = fitDirection(F, l);
-      if (f.b >= 0 && (!best || f.sse < best.sse)) best = f;
+      if (f.b >= 0 && (!best || f.sse < best.sse)) best = { ...f, l };
     }
     // refine around the best direction
     for (let step = 0.1; step > 0.005; step /= 2) {
       for (const d of [[1, 0, 0], [-1, 0, 0], [0, 1, 0], [0, -1, 0], [0, 0, 1], [0, 0, -1]]) {
-        const l = best.l.map((v, k) => v + step * d[k]), len = Math.hypot(...l);
-        const f = fitDirection(F, l.map((v) => v / len));
-        if (f.b >= 0 && f.sse < best.sse) best = f;
+        const l = best.l.map((v, k) => v + step * d[k]), len = Math.hypot(...l), u = l.map((v) => v / len);
+        const f = fitDirection(F, u);
+        if (f.b >= 0 && f.sse < best.sse) best = { ...f, l: u };
       }
     }
     if (pass === 0) {
@@ -112,8 +110,8 @@ export function diffuseFit(pts, T) {
   const Fall = flat(pts, null); // (F: the second pass's pixels, the highlight left out)
   for (const l of DIRS) {
     const [f, g] = fitTwoSided(Fall, F, use, l);
-    if (f.b >= 0 && (!twoSided || f.sse < twoSided.sse)) twoSided = f;
-    if (g.b >= 0 && (!twoSidedAll || g.sse < twoSidedAll.sse)) twoSidedAll = g;
+    if (f.b >= 0 && (!twoSided || f.sse < twoSided.sse)) twoSided = { ...f, l };
+    if (g.b >= 0 && (!twoSidedAll || g.sse < twoSidedAll.sse)) twoSidedAll = { ...g, l };
   }
   // ... and both models over all pixels, none left out as a highlight
   const r2All = sst > 1e-9 ? 1 - sseAll / sst : 0, r2TwoSidedAll = sst > 1e-9 ? 1 - twoSidedAll.sse / sst : 0;

@@ -39,22 +39,33 @@ export function pointLightFit(pts, T) {
   // each model's sums are added up in the order fit() adds them (the same numbers to the last bit)
   const grid = (use, dirs) => {
     let none = null, inv = null;
+    // the samples used, in order, and their brightness sums (the same for every light tried)
+    let n = 0, sy = 0, syy = 0;
+    const at = new Int32Array(m);
+    for (let i = 0; i < m; i++) {
+      if (!use[i]) continue;
+      at[n++] = i;
+      sy += ys[i]; syy += ys[i] * ys[i];
+    }
     for (const d of DIST) {
       const g = (d - 1) * (d - 1);
       for (const l of dirs) {
-        let n = 0, sy = 0, syy = 0, sx = 0, sxx = 0, sxy = 0, ux = 0, uxx = 0, uxy = 0;
-        for (let i = 0; i < m; i++) {
-          if (!use[i]) continue;
-          const cos = pointLightTerm(nx[i], ny[i], nz[i], l, d, false);
-          const x = cos * g / distance2(nx[i], ny[i], nz[i], l, d);
+        const px = d * l[0], py = d * l[1], pz = d * l[2];
+        let sx = 0, sxx = 0, sxy = 0, ux = 0, uxx = 0, uxy = 0;
+        for (let k = 0; k < n; k++) {
+          const i = at[k], n0 = nx[i], n1 = ny[i], n2 = nz[i];
+          // (pointLightTerm's w_i and ‖p_ℓ − x‖², computed once for both models)
+          const wx = px - n0, wy = py - n1, wz = pz - n2;
+          const r2 = wx * wx + wy * wy + wz * wz;
+          const cos = Math.max(0, (n0 * wx + n1 * wy + n2 * wz) / Math.sqrt(r2));
+          const x = cos * g / r2;
           const y = ys[i];
-          n++; sy += y; syy += y * y;
           sx += cos; sxx += cos * cos; sxy += cos * y;
           ux += x; uxx += x * x; uxy += x * y;
         }
-        const f = solve(n, sy, syy, sx, sxx, sxy, l, d, false), h = solve(n, sy, syy, ux, uxx, uxy, l, d, true);
-        if (f.b > 0 && (!none || f.sse < none.sse)) none = f;
-        if (h.b > 0 && (!inv || h.sse < inv.sse)) inv = h;
+        const f = lineFit(n, sy, syy, sx, sxx, sxy), h = lineFit(n, sy, syy, ux, uxx, uxy);
+        if (f.b > 0 && (!none || f.sse < none.sse)) none = { ...f, l, d, falloff: false };
+        if (h.b > 0 && (!inv || h.sse < inv.sse)) inv = { ...h, l, d, falloff: true };
       }
     }
     return { none, inv };
@@ -114,12 +125,6 @@ function pointLightTerm(n0, n1, n2, l, d, falloff) {
   const r2 = wx * wx + wy * wy + wz * wz;
   const cos = Math.max(0, (n0 * wx + n1 * wy + n2 * wz) / Math.sqrt(r2));
   return falloff ? cos * ((d - 1) * (d - 1)) / r2 : cos;
-}
-
-/** ‖p_ℓ − x‖² for the light at p_ℓ = d·l and the unit sphere's point x = (n0, n1, n2). */
-function distance2(n0, n1, n2, l, d) {
-  const wx = d * l[0] - n0, wy = d * l[1] - n1, wz = d * l[2] - n2;
-  return wx * wx + wy * wy + wz * wz;
 }
 
 /** The line fit over n samples from the sums, with the light tried (d·l, with or without fall-off). */
