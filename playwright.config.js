@@ -1,7 +1,7 @@
 // Browser tests: Debian's Chromium and Firefox ESR (never a downloaded browser), small canvases,
 // one server. Every Chromium spec runs under WebGL 2 (the page's ?api= is set from the project),
-// what a WebGL 1 context can change under WebGL 1, and what the API changes in the page specs
-// again under WebGPU, whose screenshots must match the WebGL 2 baselines. The project "firefox" runs firefox.spec.js, which
+// and what the API changes in the page specs again under WebGPU, whose screenshots must match the
+// WebGL 2 baselines. The project "firefox" runs firefox.spec.js, which
 // launches Firefox itself (puppeteer-core over WebDriver BiDi: tests/browser/firefox-fixtures.js).
 import { defineConfig } from '@playwright/test';
 import { CHROMIUM, CHROMIUM_ARGS } from './tools/browser.js';
@@ -30,7 +30,7 @@ export default defineConfig({
     { name: 'handins', testMatch: /grader\.spec\.js/, grep: /real hand-ins/ },
     // Firefox (WebGL 2 and WebGL 1 inside the spec); Playwright's own browser is not used here.
     // Projects are queued in this order: the long tests early (Firefox's grader run is 16 s), the
-    // short ones of WebGL 1 last, so that neither worker waits on the other at the end
+    // short ones of WebGPU's page specs last, so that neither worker waits on the other at the end
     { name: 'firefox', testMatch: /firefox\.spec\.js/ },
     { name: 'webgl2', use: { api: 'webgl2' }, testIgnore: /firefox\.spec\.js/, grepInvert: /real hand-ins/ },
     {
@@ -41,13 +41,12 @@ export default defineConfig({
       // the same pictures: a WebGPU page is held to the WebGL 2 baselines
       snapshotPathTemplate: 'tests/screenshots/webgl2/{arg}{ext}',
     },
-    // WebGL 1 runs the same GLSL and the same JavaScript as WebGL 2 (only getContext differs), so
-    // here it runs what the context can change: the unlit steps' pictures against the sphere,
-    // buffers and state (foundation). The lit steps under WebGL 1 are held by the Firefox suite (another engine, the
-    // same exact reference). Tests tagged @any-api run once, under WebGL 2: the same JavaScript
-    // whichever API (the controls, the URL, fuzzed values), or a picture whose WebGPU twin
-    // webgpu.spec.js holds equal to WebGL 2's in the same views.
-    { name: 'webgl1', use: { api: 'webgl' }, testMatch: /foundation\.spec\.js/, grepInvert: /@any-api/ },
+    // WebGL 1 runs the same GLSL and the same JavaScript as WebGL 2 (only getContext differs): it
+    // has no project of its own. Firefox's suite runs every step under WebGL 1 (firefox.spec.js),
+    // and foundation.spec.js's fallback test holds Chromium's WebGL 1 to the exact sphere. Tests
+    // tagged @any-api run once, under WebGL 2: the same JavaScript whichever API (the controls, the
+    // URL, fuzzed values), or a picture whose WebGPU twin webgpu.spec.js holds equal to WebGL 2's
+    // in the same views.
   ],
   webServer: {
     command: `node tools/serve.js --port ${PORT}`,

@@ -1,5 +1,5 @@
 // Shared browser-test fixtures. Every test:
-// - runs with the project's API (webgl2 / webgl1 / webgpu): open() adds ?api= to the page's URL;
+// - runs with the project's API (webgl2 / webgpu; WebGL 1 in Firefox's suite): open() adds ?api= to the page's URL;
 // - counts WebGL calls (createBuffer, bufferData, createProgram, ...) through wrappers installed
 //   on the context prototypes before any page script runs; under WebGPU the same names count the
 //   calls that do the same job (a vertex buffer made or written, a render pipeline, a WGSL module);
