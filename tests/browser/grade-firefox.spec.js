@@ -2,8 +2,9 @@
 // firefox-page.js), on two hand-written fixture hand-ins: carla's WP04P1 (WebGL, drawn in a
 // requestAnimationFrame loop, so it shows only if the driver runs frames) gets its label, pass;
 // jonas's WP04P1 (WebGPU, which this Firefox does not have) is "not graded here", with the reason,
-// never a fail, and the labels' agreement leaves it out. --audit-only says the same again from the
-// artifacts. Project "firefox" only.
+// never a fail, and the labels' agreement leaves it out. One Firefox grades both, one after the
+// other (--workers 1), as each of a class's Firefoxes grades its share. --audit-only says the same
+// again from the artifacts. Project "firefox" only.
 import { spawnSync } from 'node:child_process';
 import { cpSync, mkdtempSync, readFileSync, writeFileSync } from 'node:fs';
 import os from 'node:os';
@@ -22,7 +23,7 @@ test('--browser firefox: a WebGL part gets its label; a WebGPU part is not grade
   const out = path.join(dir, 'out');
   const grade = (...args) => spawnSync(process.execPath, ['grader/node/grade.js', ...args, '--rubric', 'tests/fixtures/test-rubric.json', '--labels', labels],
     { encoding: 'utf8', timeout: 170_000 });
-  const run = grade('--batch', path.join(dir, 'class'), '--browser', 'firefox', '--out', out);
+  const run = grade('--batch', path.join(dir, 'class'), '--browser', 'firefox', '--workers', '1', '--out', out);
   expect(run.status, run.stderr + run.stdout.slice(-3000)).toBe(0);
   const parts = (report) => Object.fromEntries(report.submissions.flatMap((s) => s.parts.filter((p) => p.status !== 'missing').map((p) => [`${s.name} ${p.part}`, p])));
   const report = JSON.parse(readFileSync(path.join(out, 'report.json'), 'utf8'));
