@@ -20,12 +20,25 @@ export function sphereView(img, T) {
   return { an, circleArc };
 }
 
+const shadings = new WeakMap(); // picture → [{ an, T, shading }]: shadingOf's readings
+
 /**
  * The shading of a picture (its analysis `an`): the diffuse fit over all samples, a point-light
  * fit where the picture is lit, and `nearModel`, the near point light with 1/r² fall-off where it
  * fits clearly better (then the highlight is what rises above it, in `fit`'s highlight fields).
  */
 export function shadingOf(img, an, T) {
+  // read once for the same picture, analysis and thresholds: gathering acts on it, the audit judges it
+  if (!img || typeof img !== 'object') return shadingOnce(img, an, T);
+  const seen = shadings.get(img) || [];
+  const known = seen.find((s) => s.an === an && s.T === T);
+  if (known) return known.shading;
+  const shading = shadingOnce(img, an, T);
+  shadings.set(img, [...seen, { an, T, shading }]);
+  return shading;
+}
+
+function shadingOnce(img, an, T) {
   const fit = shadeFit(samples(img, an), T);
   let pointLight = null;
   if (fit && fit.spread >= T.litSpread) {
