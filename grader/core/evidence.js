@@ -4,6 +4,7 @@
 // raise ks, or look farther along the orbit) and the audit that judges it read the same numbers.
 import { analyse, samples, shadeFit, pointLightFit, perspectiveSamples, highlightSeen, clearlyNearFalloff } from './measure.js';
 import { fullFit, lightAngle } from './views.js';
+import { memo } from './memo.js';
 
 /**
  * The judged picture's analysis: `an`, with a dark unlit side on a dark background read as the
@@ -20,25 +21,13 @@ export function sphereView(img, T) {
   return { an, circleArc };
 }
 
-const shadings = new WeakMap(); // picture → [{ an, T, shading }]: shadingOf's readings
-
 /**
  * The shading of a picture (its analysis `an`): the diffuse fit over all samples, a point-light
  * fit where the picture is lit, and `nearModel`, the near point light with 1/r² fall-off where it
  * fits clearly better (then the highlight is what rises above it, in `fit`'s highlight fields).
+ * Read once for the same picture, analysis and thresholds: gathering acts on it, the audit judges it.
  */
-export function shadingOf(img, an, T) {
-  // read once for the same picture, analysis and thresholds: gathering acts on it, the audit judges it
-  if (!img || typeof img !== 'object') return shadingOnce(img, an, T);
-  const seen = shadings.get(img) || [];
-  const known = seen.find((s) => s.an === an && s.T === T);
-  if (known) return known.shading;
-  const shading = shadingOnce(img, an, T);
-  shadings.set(img, [...seen, { an, T, shading }]);
-  return shading;
-}
-
-function shadingOnce(img, an, T) {
+export const shadingOf = memo((img, an, T) => {
   const fit = shadeFit(samples(img, an), T);
   let pointLight = null;
   if (fit && fit.spread >= T.litSpread) {
@@ -47,7 +36,7 @@ function shadingOnce(img, an, T) {
   const nearModel = clearlyNearFalloff(pointLight, T) ? pointLight.falloff.model : null;
   const judgedFit = fit && nearModel ? { ...fit, highlightPeak: pointLight.falloff.highlightPeak, highlightRise: pointLight.falloff.highlightRise } : fit;
   return { fit, judgedFit, pointLight, nearModel };
-}
+});
 
 /** The kept views' full fits (the lit views along the orbit), in the order kept. */
 export function viewFits(views, T) {

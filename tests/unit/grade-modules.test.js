@@ -10,6 +10,7 @@ import { effectOf, nameRole, trialOrder } from '../../grader/core/controls.js';
 import { normalAngle } from '../../grader/core/measure/perspective.js';
 import { checkList, verdictOf, reasonsOf } from '../../grader/core/verdict.js';
 import { parseLabels, agreement, agreementText } from '../../grader/node/labels.js';
+import { memo } from '../../grader/core/memo.js';
 import { readFileSync } from 'node:fs';
 
 const rubric = JSON.parse(readFileSync(new URL('../../grader/core/rubric.json', import.meta.url), 'utf8'));
@@ -277,4 +278,21 @@ test('drive: the level on the arrow keys when no control changes it; no level co
   const none = await gradePart(fakePart({ controls: [] }).page, { part: 'WP04P1', rubric });
   assert.equal(verdictOf(none.checks, none.fail), 'review');
   assert.ok(none.checks.some((c) => /nothing found that makes the sphere finer: .*keys pressed/.test(c.reason)));
+});
+
+test('memo: a reading remembered by each object it reads (picture, analysis, thresholds), computed afresh for another or for a non-object', () => {
+  let calls = 0;
+  const read = memo((img, an, T) => ({ n: ++calls, img, an, T }));
+  const img = {}, an = {}, other = {}, T2 = {};
+  const first = read(img, an, T2);
+  assert.equal(read(img, an, T2), first);
+  assert.equal(calls, 1);
+  assert.notEqual(read(img, other, T2), first); // (the same picture read with another analysis)
+  assert.notEqual(read(img, an, {}), first);
+  assert.equal(calls, 3);
+  read(img, null, T2);
+  read(img, null, T2);
+  assert.equal(calls, 5);
+  const two = memo((a, b) => [a, b]);
+  assert.equal(two(img, T2), two(img, T2));
 });
