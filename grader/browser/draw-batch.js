@@ -19,7 +19,7 @@
 export function drawBatchScript() {
   if (window.__drawBatch) return;
   const TRIANGLES = 4, NO_ERROR = 0;
-  let held = null; // { gl, send, first, count, n, each: the common count, or null and counts[] }
+  let held = null; // { gl, send, first, count, counts: each draw's count }
   const errors = new WeakMap(); // context → the errors the check took, given back to the page first
   const protos = [window.WebGLRenderingContext, window.WebGL2RenderingContext].filter(Boolean).map((c) => c.prototype);
   const realGetError = new Map(protos.map((p) => [p, p.getError]));
@@ -31,14 +31,14 @@ export function drawBatchScript() {
     held = null;
     const { gl, send } = h;
     try {
-      if (h.n === 1) return void send(gl, [TRIANGLES, h.first, h.count]);
+      if (h.counts.length === 1) return void send(gl, [TRIANGLES, h.first, h.count]);
       const taken = errors.get(gl) || [];
       for (let e = getError(gl), k = 0; e !== NO_ERROR && k < 8; e = getError(gl), k++) taken.push(e);
       if (taken.length) errors.set(gl, taken);
       send(gl, [TRIANGLES, h.first, h.count]);
       if (getError(gl) === NO_ERROR) return;
-      for (let k = 0, first = h.first; k < h.n; k++) {
-        const count = h.each || h.counts[k];
+      let first = h.first;
+      for (const count of h.counts) {
         send(gl, [TRIANGLES, first, count]);
         first += count;
       }
@@ -97,14 +97,12 @@ export function drawBatchScript() {
         }
         const h = held;
         if (h && h.gl === gl && h.send === send && first === h.first + h.count) {
-          if (h.each && count !== h.each) { h.counts = Array(h.n).fill(h.each); h.each = 0; }
-          if (!h.each) h.counts.push(count);
+          h.counts.push(count);
           h.count += count;
-          h.n++;
           return undefined;
         }
         if (h) flush();
-        held = { gl, send, first, count, n: 1, each: count, counts: null };
+        held = { gl, send, first, count, counts: [count] };
         queueMicrotask(flush);
         return undefined;
       },

@@ -16,6 +16,7 @@ const SCENES = {
   blend: [N, 1],
   pairs: [(2 * N) / 3, 1], // (one triangle, then two, ...)
   pastTheEnd: [N + 20, undefined],
+  pairsPastTheEnd: [214, undefined], // (one triangle, then two, ... past the end: drawn again draw by draw, each its own size)
   uniformBetween: [N, null],
   meshBetween: [2 * N, 2],
   resizeBetween: [2 * N, 2],
