@@ -12,9 +12,12 @@ const PATTERNS = [
   /w0?4p0?([1-5])(?![0-9])/i,
   /part[-_ ]?0?([1-5])(?![0-9])/i,
   /(?:^|[^a-z])del[-_ ]?0?([1-5])(?![0-9])/i, // Danish: Del1, del_3 (not model1)
+  /(?:^|[^a-z])(?:opgave|opg|exercise|ex|task|assignment)[-_ ]?0?([1-5])(?![0-9])/i, // opgave1, exercise_2, task3
   // the worksheet's number, a separator, the part's: W4-1, wks4_1, ws04.2, uge4-1, sheet4_1
   /(?:^|[^a-z0-9])(?:w|ws|wk|wks|week|worksheet|sheet|lab|uge|ex|exercise)?0?4[-_.]0?([1-5])(?![0-9])/i,
   /(?:^|[^a-z0-9])p0?([1-5])(?![0-9])/i,
+  // a folder (or page) named by the part's number alone, the loosest: week-4/01/index.html … 05/
+  /^0?([1-5])$/,
 ];
 export function partNumber(name) {
   const m = partName(name);

@@ -3,6 +3,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { partNumber } from '../../grader/node/parts.js';
+import { partsOf } from '../../grader/core/part-names.js';
 import { findStandIn, typeOf } from '../../grader/core/standin.js';
 import { serveSubmission } from '../../grader/node/serve-submission.js';
 import { analyse, diffuseFit, samples, highlightSeen, highlightOffset, openMask } from '../../grader/core/measure.js';
@@ -44,6 +45,17 @@ const shotOf = (img) => ({ img, an: analyse(img, T) });
 test('parts are found by the worksheet and part numbers students write', () => {
   for (const [name, n] of [['W4-1', 1], ['wks4_3', 3], ['ws4_part2', 2], ['02561_W04P5', 5], ['uge4-4', 4], ['sheet4_2', 2]]) assert.equal(partNumber(name), n, name);
   for (const name of ['W4-6', 'wks4', 'Worksheet_4', 'Lab 4', 'model1', 'p12']) assert.equal(partNumber(name), null, name);
+  for (const [name, n] of [['01', 1], ['5', 5], ['opgave3', 3], ['Opg_2', 2], ['exercise-4', 4], ['task1', 1]]) assert.equal(partNumber(name), n, name);
+  for (const name of ['06', '10', '2024', 'v1.2', 'complex1']) assert.equal(partNumber(name), null, name);
+});
+
+test('parts in numbered folders under a week folder, beside common/, are found (week-4/01 … 05)', () => {
+  const pages = ['week-4/01/index.html', 'week-4/02/index.html', 'week-4/03/index.html', 'week-4/04/index.html', 'week-4/05/index.html', 'week-4/common/test.html'];
+  const found = partsOf(pages.map((p) => p.split('/')), (s) => s.join('/'));
+  assert.deepEqual(found, { WP04P1: 'week-4/01/index.html', WP04P2: 'week-4/02/index.html', WP04P3: 'week-4/03/index.html', WP04P4: 'week-4/04/index.html', WP04P5: 'week-4/05/index.html' });
+  // a part's own name still wins over a bare number elsewhere
+  const both = partsOf([['1', 'index.html'], ['part1', 'index.html']], (s) => s.join('/'));
+  assert.equal(both.WP04P1, 'part1/index.html');
 });
 
 test('a file asked for in other letter case or one folder too far up is found inside the submission, once', () => {
