@@ -69,6 +69,11 @@ export function framePage(frame, log) {
     async setNoCull(on) {
       g().noCull = on;
     },
+    /** The geometry of the last frame drawn, summed up (grader/browser/geometry.js). */
+    async geometry(limits) {
+      const r = win().__geometry;
+      return r ? plain(r.read(limits)) : { why: 'the geometry was not recorded' };
+    },
     async sources() {
       return { glsl: [...g().glsl], wgsl: [...g().wgsl] };
     },

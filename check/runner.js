@@ -11,6 +11,7 @@ import { frameWatchScript } from './frame-watch.js';
 import { frameClockScript } from '../grader/browser/clock.js';
 import { drawBatchScript } from '../grader/browser/draw-batch.js';
 import { instrumentScript } from '../grader/browser/instrument.js';
+import { geometryInit } from '../grader/browser/geometry.js';
 import { webgpuCaptureScript } from '../grader/browser/webgpu-capture.js';
 import { gradePart } from '../grader/core/grade-part.js';
 import { verdictOf, reasonsOf } from '../grader/core/verdict.js';
@@ -28,6 +29,7 @@ export function frameScript(rubric) {
     `(${webgpuCaptureScript})();`,
     `(${drawBatchScript})();`,
     `(${instrumentScript})();`,
+    geometryInit,
     `(${frameClockScript})(${FROZEN});`,
   ].join('\n');
 }

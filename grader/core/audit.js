@@ -7,7 +7,7 @@ import { analyse } from './measure.js';
 import { checkList } from './verdict.js';
 import { litView } from './views.js';
 import { sphereView, shadingOf, viewFits } from './evidence.js';
-import { auditFirstFrame, notGradedHere } from './audits/first-frame.js';
+import { auditFirstFrame, notGradedHere, STOP } from './audits/first-frame.js';
 import { auditLevelControls, auditHeavyLevel, auditSphere } from './audits/sphere.js';
 import { auditNormals, auditPerspective, auditNormalsNotLight, auditDepthCulling } from './audits/normals.js';
 import { auditDiffuse, auditPointLight, auditUnclipped, auditBrightened } from './audits/diffuse.js';
@@ -15,6 +15,7 @@ import { auditOrbitStopsAgain, auditOrbit, auditNotStopped } from './audits/orbi
 import { auditHighlight, auditPlaceFarther } from './audits/highlight.js';
 import { auditSliders } from './audits/sliders.js';
 import { auditLeastShininess, auditPerFragment } from './audits/shading.js';
+import { auditWinding, auditClosed, auditPerFace, auditGrowth } from './audits/geometry.js';
 
 /**
  * { fail, checks, numbers, shown, notGraded } for one part's artifact: `fail` (a reason) when the
@@ -40,6 +41,7 @@ export function auditPart({ facts, images }, rubric) {
     return result(null);
   }
   const fail = auditFirstFrame(C);
+  if (fail === STOP) return result(null);
   if (fail) return result(fail);
   if (!facts.ladder) return result('the grader stopped before the level ladder');
   auditHeavyLevel(C);
@@ -53,8 +55,12 @@ export function auditPart({ facts, images }, rubric) {
   const { an, circleArc } = sphereView(img, T);
   const judged = { img, an, raw, circleArc };
   auditSphere(C, judged, facts.ladder.map((l) => l.roundness), analyse(images.first, T).roundness);
+  auditClosed(C);
+  auditGrowth(C);
   auditPerspective(C, auditNormals(C, judged));
+  auditPerFace(C);
   auditDepthCulling(C);
+  auditWinding(C);
   // a lit step that shows WP04P1's colours has no shading to judge: its colours are not lighting
   const shaded = (must.has('diffuse') || must.has('highlight')) && !auditNormalsNotLight(C, judged);
   // a picture that clipped to white was read again with the page's own sliders lowered, one too

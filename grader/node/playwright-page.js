@@ -7,6 +7,7 @@ import { PNG } from 'pngjs';
 import { webgpuCaptureScript } from '../browser/webgpu-capture.js';
 import { drawBatchScript } from '../browser/draw-batch.js';
 import { instrumentScript } from '../browser/instrument.js';
+import { geometryInit } from '../browser/geometry.js';
 import { frameClockScript } from '../browser/clock.js';
 import { serveSubmission } from './serve-submission.js';
 
@@ -35,6 +36,7 @@ export function partOpener(browser, host) {
     await context.addInitScript(webgpuCaptureScript);
     await context.addInitScript(drawBatchScript);
     await context.addInitScript(instrumentScript);
+    await context.addInitScript(geometryInit);
     await context.addInitScript(frameClockScript, FROZEN.getTime());
     const page = await context.newPage();
     page.on('popup', (popup) => {
@@ -133,6 +135,8 @@ export function pageDriver(page, log) {
     /** The grader's experiment: WebGL draws with back-face culling off (true) or as the page set it (false). */
     setNoCull: (on) => page.evaluate((v) => { window.__grade.noCull = v; }, on),
     sources: () => page.evaluate(() => ({ glsl: window.__grade.glsl, wgsl: window.__grade.wgsl })),
+    /** The geometry of the last frame drawn, summed up (grader/browser/geometry.js): triangles, winding, closed, per-face attributes. */
+    geometry: (limits) => page.evaluate((l) => (window.__geometry ? window.__geometry.read(l) : { why: 'the geometry was not recorded' }), limits),
     errors: () => log.errors,
   };
   return driver;

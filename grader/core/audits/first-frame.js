@@ -4,7 +4,10 @@
 import { analyse } from '../measure.js';
 import { NOT_GRADED } from '../verdict.js';
 
-/** Says the shader and adapter failures; returns the reason the part cannot be judged, or null. */
+/** auditFirstFrame's answer where it has said why nothing more is judged, and the part is not broken. */
+export const STOP = Symbol('nothing more to judge');
+
+/** Says the shader and adapter failures; returns the reason the part cannot be judged (it fails), STOP, or null. */
 export function auditFirstFrame({ facts, images, T, say }) {
   const g = facts.first;
   if (!g) return 'the page never finished its first frame';
@@ -15,7 +18,14 @@ export function auditFirstFrame({ facts, images, T, say }) {
   const why = g.shaderErrors[0] || g.gpuErrors[0] || facts.errors.find((e) => /page error|dialog/.test(e));
   if (!g.api) return `drew nothing: the page never got a WebGL or WebGPU context${why ? ` (${why})` : ''}`;
   if (!g.draws) return `drew nothing: the canvas is one colour, no draw call${why ? ` (${why})` : ''}`;
-  return `drew nothing visible: the canvas is one colour${why ? ` (${why})` : ''}`;
+  const waited = g.waited ? ` after ${g.waited} frames more` : '';
+  // triangles that reach the canvas draw something, even where it cannot be seen: not broken
+  const geo = g.blankGeometry;
+  if (geo && !geo.why && geo.analysed > 0 && geo.degenerate < 1 && !why) {
+    say('mistake', `nothing can be seen: the page draws ${geo.triangles} triangles (${g.draws} draw calls), but the canvas stays one colour${waited} (a sphere the colour of the background, or drawn outside the view?); nothing else was judged`);
+    return STOP;
+  }
+  return `drew nothing visible: the canvas is one colour${waited}${why ? ` (${why})` : ''}`;
 }
 
 /**

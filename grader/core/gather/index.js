@@ -13,6 +13,7 @@ import { findOrbit, sampleOrbit, look } from './orbit.js';
 import { findLevel, climb } from './level.js';
 import { probeFaces, probeDepthCulling, raiseHighlight, trySliders, leastShininess, placeFarther } from './probes.js';
 import { unclip, brighten } from './visible.js';
+import { readGeometry } from './geometry.js';
 import { sphereView, shadingOf, viewFits, highlightEvidence } from '../evidence.js';
 
 /** Gathers one opened part: { facts, images }. `timing` ({ method: { ms, calls } }) hears where the time went. */
@@ -45,8 +46,18 @@ async function gather(S) {
   facts.api = g.api;
   facts.first = { api: g.api, adapter: g.adapter, draws: g.draws, shaderErrors: g.shaderErrors, gpuErrors: g.gpuErrors,
     ...(g.webgpuMissing ? { webgpuMissing: true } : {}) }; // it asked for WebGPU where the browser has none (Firefox ESR)
-  const firstShot = await S.shot();
+  let firstShot = await S.shot();
   if (!firstShot) return;
+  // a page that drew without an error and shows one colour (its unlit side on a background of the
+  // same colour, say) has its chance: a counted number of frames more, then the picture it shows then is its first
+  if (firstShot.an.blank && g.draws > 0 && !g.shaderErrors.length && !g.gpuErrors.length) {
+    S.step('waiting for a visible frame');
+    await S.tick(T.blankWaitFrames * 16, T.blankWaitFrames);
+    const later = await S.shot();
+    facts.first.waited = T.blankWaitFrames;
+    if (later) firstShot = later;
+    facts.first.blankGeometry = firstShot.an.blank ? await readGeometry(S) : null;
+  }
   facts.canvas = { width: firstShot.img.width, height: firstShot.img.height };
   S.keep('first', firstShot.img);
   if (firstShot.an.blank) return;
@@ -92,6 +103,7 @@ async function gather(S) {
   facts.ladder = ladder.map((s, k) => ({ roundness: s.an.roundness, blank: !!s.an.blank,
     ...(k === j || must.has('perFragment') ? { image: S.keep(`level-${k}`, s.img) } : {}) }));
   facts.judgedLevel = j;
+  facts.geometry = await readGeometry(S);
   facts.judged = facts.ladder[j].image;
   if (ladder[j].an.blank) return;
 

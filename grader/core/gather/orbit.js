@@ -5,6 +5,7 @@
 import { analyse } from '../measure.js';
 import { describe, named, trialOrder, isClickable } from '../controls.js';
 import { litView } from '../views.js';
+import { readGeometry } from './geometry.js';
 
 const fmt = (x, d) => Number(x).toFixed(d);
 
@@ -63,6 +64,9 @@ export async function findOrbit(S, controls) {
   const shaded = S.must.has('diffuse');
   await S.watch();
   orbit.movedAtFirst = S.moving;
+  // the frames drawn so far, no control touched yet (their vertices: a page that draws more every
+  // frame), and the geometry of the level the page starts at
+  facts.geometryAtFirst = await readGeometry(S);
   if (shaded) look(S, S.images.first, { orbiting: false });
   if (S.moving) {
     S.act('the picture moves by itself (an orbit or animation)');

@@ -1,0 +1,194 @@
+// What a graded page sends to WebGL as geometry, as an init script added after instrument.js (so
+// its wrappers see the page's own calls): the bytes of each buffer (bufferData, bufferSubData),
+// the attribute layout (vertexAttribPointer, vertex array objects), the program, the culling state
+// and each draw's range, grouped into frames (a frame starts at a clear of the colour buffer, or
+// at a task's first draw on a page that never clears; in WebGPU, a queue's submit ends it:
+// grader/browser/geometry-webgpu.js). Nothing is changed; nothing is analysed
+// until the grader asks: window.__geometry.read() sums up the last frame's triangles (analyseMesh,
+// grader/browser/mesh.js, a pure function also run by the unit tests).
+import { meshAnalysis } from './mesh.js';
+import { webgpuGeometry } from './geometry-webgpu.js';
+
+/** The init script as text: the recorder with the analysis in it (a graded page gets both). */
+export const geometryInit = `(${geometryScript})((${meshAnalysis})(), ${webgpuGeometry});`;
+
+function geometryScript(analyseMesh, recordWebGPU) {
+  if (window.__geometry || !window.WebGLRenderingContext) return;
+  const TRIANGLES = 4, FLOAT = 0x1406, COLOR_BUFFER_BIT = 0x4000;
+  const MAX_DRAWS = 512, HISTORY = 32;
+  const bytesOf = new WeakMap(); // WebGLBuffer → Uint8Array: what the page uploaded last
+  const ctxState = new WeakMap(); // context → { array, vao, program, cull }
+  const vaoState = new WeakMap(); // vertex array object → { attribs, elements, version }
+  const programInfo = new WeakMap(); // program → { position, attributes } (from its vertex shader)
+  const rec = { cur: null, last: null, history: [], clears: 0, task: false };
+  Object.defineProperty(window, '__geometry', { value: rec, enumerable: false });
+
+  const newVao = () => ({ attribs: [], elements: null, version: 0, snap: null });
+  const stateOf = (gl) => {
+    let st = ctxState.get(gl);
+    if (!st) ctxState.set(gl, st = { array: null, vao: newVao(), defaultVao: null, program: null, cull: { on: false, mode: 'back', front: 'ccw' } });
+    if (!st.defaultVao) st.defaultVao = st.vao;
+    return st;
+  };
+  const copy = (src, offset, length) => {
+    if (typeof src === 'number') return src > 0 && src < 2 ** 28 ? new Uint8Array(src) : null;
+    if (!src) return null;
+    if (src instanceof ArrayBuffer) return new Uint8Array(src.slice(0));
+    if (!ArrayBuffer.isView(src)) return null;
+    const per = src.BYTES_PER_ELEMENT || 1;
+    const start = src.byteOffset + (offset ? offset * per : 0);
+    const len = length ? length * per : src.byteLength - (offset ? offset * per : 0);
+    return new Uint8Array(src.buffer.slice(start, start + Math.max(0, len)));
+  };
+  const closeFrame = () => {
+    if (!rec.cur) return;
+    rec.history.push({ vertices: rec.cur.vertices, draws: rec.cur.calls });
+    if (rec.history.length > HISTORY) rec.history.shift();
+    rec.last = rec.cur;
+    rec.cur = null;
+  };
+  /** The frame a draw of `count` vertices goes into (the current one, or a new one). */
+  const frameOf = (count) => {
+    if (!rec.task) {
+      rec.task = true;
+      queueMicrotask(() => { rec.task = false; if (!rec.clears) closeFrame(); });
+    }
+    const f = rec.cur || (rec.cur = { draws: [], vertices: 0, calls: 0, over: 0 });
+    f.vertices += count;
+    f.calls++;
+    return f;
+  };
+  const draw = (gl, d) => {
+    const f = frameOf(d.count);
+    const st = stateOf(gl), vao = st.vao;
+    if (!vao.snap) vao.snap = vao.attribs.map((a) => a && { ...a });
+    const cull = st.cull.on ? `${st.cull.mode}/${st.cull.front}` : 'off';
+    const prev = f.draws[f.draws.length - 1];
+    if (prev && !d.indexed && !prev.indexed && d.mode === TRIANGLES && prev.mode === TRIANGLES && prev.gl === gl && prev.program === st.program
+      && prev.attribs === vao.snap && prev.cull === cull && prev.first + prev.count === d.first) {
+      prev.count += d.count; // separate triangles drawn one after another: one range
+      return;
+    }
+    if (f.draws.length >= MAX_DRAWS) { f.over++; return; }
+    f.draws.push({ ...d, gl, program: st.program, attribs: vao.snap, elements: d.indexed ? vao.elements : null, cull });
+  };
+  const changed = (vao) => { vao.version++; vao.snap = null; };
+
+  const wrap = (proto, name, after) => {
+    const real = proto[name];
+    if (typeof real !== 'function') return;
+    proto[name] = function (...a) {
+      const out = real.apply(this, a);
+      try { after(this, a); } catch { /* the record never breaks the page */ }
+      return out;
+    };
+  };
+  const bindVao = (gl, vao) => {
+    const st = stateOf(gl);
+    if (!vao) st.vao = st.defaultVao;
+    else {
+      if (!vaoState.has(vao)) vaoState.set(vao, newVao());
+      st.vao = vaoState.get(vao);
+    }
+  };
+  for (const proto of [window.WebGLRenderingContext, window.WebGL2RenderingContext].filter(Boolean).map((c) => c.prototype)) {
+    wrap(proto, 'bindBuffer', (gl, [target, buffer]) => {
+      const st = stateOf(gl);
+      if (target === gl.ARRAY_BUFFER) st.array = buffer;
+      else if (target === gl.ELEMENT_ARRAY_BUFFER) { st.vao.elements = buffer; }
+    });
+    const bound = (gl, target) => {
+      const st = stateOf(gl);
+      return target === gl.ARRAY_BUFFER ? st.array : target === gl.ELEMENT_ARRAY_BUFFER ? st.vao.elements : null;
+    };
+    wrap(proto, 'bufferData', (gl, [target, src, , offset, length]) => {
+      const buffer = bound(gl, target);
+      if (!buffer) return;
+      const bytes = copy(src, offset, length);
+      if (bytes) bytesOf.set(buffer, bytes);
+      else bytesOf.delete(buffer);
+    });
+    wrap(proto, 'bufferSubData', (gl, [target, at, src, offset, length]) => {
+      const buffer = bound(gl, target), bytes = buffer && bytesOf.get(buffer);
+      const part = bytes && copy(src, offset, length);
+      if (part && at >= 0 && at + part.length <= bytes.length) bytes.set(part, at);
+    });
+    wrap(proto, 'vertexAttribPointer', (gl, [index, size, type, normalized, stride, offset]) => {
+      const st = stateOf(gl), a = st.vao.attribs[index] || {};
+      st.vao.attribs[index] = { ...a, buffer: st.array, size, type, normalized: !!normalized, stride, offset };
+      changed(st.vao);
+    });
+    wrap(proto, 'enableVertexAttribArray', (gl, [index]) => {
+      const st = stateOf(gl);
+      st.vao.attribs[index] = { ...(st.vao.attribs[index] || {}), enabled: true };
+      changed(st.vao);
+    });
+    wrap(proto, 'disableVertexAttribArray', (gl, [index]) => {
+      const st = stateOf(gl);
+      if (st.vao.attribs[index]) { st.vao.attribs[index] = { ...st.vao.attribs[index], enabled: false }; changed(st.vao); }
+    });
+    wrap(proto, 'bindVertexArray', (gl, [vao]) => bindVao(gl, vao));
+    wrap(proto, 'useProgram', (gl, [program]) => { stateOf(gl).program = program; });
+    wrap(proto, 'enable', (gl, [cap]) => { if (cap === gl.CULL_FACE) stateOf(gl).cull.on = true; });
+    wrap(proto, 'disable', (gl, [cap]) => { if (cap === gl.CULL_FACE) stateOf(gl).cull.on = false; });
+    wrap(proto, 'cullFace', (gl, [mode]) => { stateOf(gl).cull.mode = mode === gl.FRONT ? 'front' : mode === gl.BACK ? 'back' : 'both'; });
+    wrap(proto, 'frontFace', (gl, [mode]) => { if (mode === gl.CW || mode === gl.CCW) stateOf(gl).cull.front = mode === gl.CW ? 'cw' : 'ccw'; });
+    wrap(proto, 'clear', (gl, [mask]) => {
+      if (!(mask & COLOR_BUFFER_BIT) || gl.getParameter(gl.FRAMEBUFFER_BINDING)) return;
+      rec.clears++;
+      closeFrame();
+    });
+    wrap(proto, 'drawArrays', (gl, [mode, first, count]) => draw(gl, { mode, first: first | 0, count: Math.max(0, count | 0), indexed: false }));
+    wrap(proto, 'drawElements', (gl, [mode, count, type, offset]) => draw(gl, { mode, count: Math.max(0, count | 0), type, offset: offset | 0, indexed: true }));
+    // (WebGL 1's vertex array objects come from an extension)
+    const getExtension = proto.getExtension;
+    proto.getExtension = function (name) {
+      const ext = getExtension.call(this, name);
+      if (ext && /vertex_array_object/i.test(String(name)) && !ext.__geometryWrapped) {
+        const gl = this, bindVertexArrayOES = ext.bindVertexArrayOES;
+        Object.defineProperty(ext, '__geometryWrapped', { value: true });
+        ext.bindVertexArrayOES = function (vao) {
+          const out = bindVertexArrayOES.call(this, vao);
+          bindVao(gl, vao);
+          return out;
+        };
+      }
+      return ext;
+    };
+  }
+
+  // the attributes of a program's vertex shader, and which one gl_Position is computed from
+  const infoOf = (gl, program) => {
+    if (!program) return null;
+    let info = programInfo.get(program);
+    if (info) return info;
+    const shaders = gl.getAttachedShaders(program) || [];
+    const vs = shaders.find((s) => gl.getShaderParameter(s, gl.SHADER_TYPE) === gl.VERTEX_SHADER);
+    info = analyseMesh.vertexShader(vs ? gl.getShaderSource(vs) || '' : '');
+    for (const a of info.attributes) a.location = gl.getAttribLocation(program, a.name);
+    programInfo.set(program, info);
+    return info;
+  };
+
+  recordWebGPU({ frameOf, closeFrame, vertexInputs: analyseMesh.vertexInputs, MAX_DRAWS, FLOAT, TRIANGLES });
+
+  /** The last frame's geometry, summed up (analyseMesh.summary): small, plain data. */
+  rec.read = (limits) => {
+    const frame = rec.cur && rec.cur.draws.length ? rec.cur : rec.last;
+    const frames = [...rec.history.map((h) => h.vertices), ...(rec.cur ? [rec.cur.vertices] : [])];
+    if (!frame) return { frames, why: 'no draw call was seen' };
+    const draws = frame.draws.map((d) => {
+      if (d.resolve) return d.resolve(); // (a WebGPU draw)
+      const info = infoOf(d.gl, d.program);
+      const attrib = (loc) => {
+        const a = d.attribs[loc];
+        if (!a || !a.enabled || !a.buffer) return null;
+        return { ...a, bytes: bytesOf.get(a.buffer) || null };
+      };
+      return { mode: d.mode, first: d.first, count: d.count, indexed: d.indexed, type: d.type, offset: d.offset, cull: d.cull,
+        indices: d.indexed && d.elements ? bytesOf.get(d.elements) || null : null,
+        attributes: info ? info.attributes.map((a) => ({ name: a.name, type: a.type, position: a.name === info.position, ...(a.location >= 0 ? { data: attrib(a.location) } : {}) })) : [] };
+    });
+    return { frames, calls: frame.calls, over: frame.over, ...analyseMesh.summary(draws, { FLOAT, TRIANGLES, ...limits }) };
+  };
+}

@@ -1,0 +1,71 @@
+// What the page sent to WebGL, judged where the record is exact (gather/geometry.js reads it):
+// the triangles' winding against the culling the page set (the textbook's tetrahedron winds its
+// faces clockwise seen from outside, so with back faces culled the near side goes: DESIGN.md, "A
+// trap"), a mesh with holes, a colour or normal per face where the slides ask n = p per vertex
+// (WP04P1/P2), and a page that draws more every frame while nothing is touched.
+
+const pct = (x) => `${Math.round(100 * x)}%`;
+
+/** The geometry judged: the judged level's, else the first level's (where the page went blank later). */
+const judgedGeometry = (facts) => [facts.geometry, facts.geometryAtFirst].find((g) => g && !g.why && g.analysed > 0) || null;
+
+/** The share of the triangles, wound as read, that the culling the page set takes away seen from outside. */
+function culledOutward(cull, cw) {
+  const [mode, front] = cull.split('/');
+  if (mode === 'both') return 1;
+  const outwardIsFront = front === 'cw' ? cw : 1 - cw; // (seen from outside, a face is front where its winding is the front one)
+  return mode === 'front' ? outwardIsFront : 1 - outwardIsFront;
+}
+
+/** Every step that culls: the triangles wound against the culling show the inside of the far side, or a hole. */
+export function auditWinding({ facts, T, must, say, numbers }) {
+  const g = judgedGeometry(facts);
+  const any = facts.geometry || facts.geometryAtFirst;
+  if (!g) {
+    if (any && any.why && facts.faces && facts.faces.culling) say('pass', `note: which way the triangles are wound was not read from what the page sent to WebGL (${any.why}); the faces are judged from the pictures`);
+    return;
+  }
+  numbers.geometry = { triangles: g.triangles, analysed: g.analysed, cw: g.cw, cull: g.cull, closed: g.closed };
+  if (!g.cull || g.cull === 'off') return;
+  const webgpu = facts.api === 'webgpu';
+  const [mode, front] = g.cull.split('/');
+  const setting = webgpu ? `cullMode '${mode}' with frontFace '${front}'` : `gl.enable(gl.CULL_FACE) with gl.cullFace(gl.${mode === 'both' ? 'FRONT_AND_BACK' : mode.toUpperCase()}) and ${front === 'cw' ? 'gl.frontFace(gl.CW)' : 'the default gl.frontFace(gl.CCW)'}`;
+  const share = culledOutward(g.cull, g.cw);
+  const read = `read from the ${g.analysed} triangles the page sent`;
+  if (share >= T.windingCulledShare) {
+    // (P2: clockwise front faces over a counter-clockwise mesh is the slide's own experiment, said by the normals' audit)
+    if (must.has('frontFaces') && mode === 'back' && front === 'cw' && g.cw <= 1 - T.windingCulledShare) return;
+    say('mistake', `the near side of the sphere is culled and the inside of the far side shows: ${pct(g.cw)} of its triangles are wound clockwise seen from outside (${read}; the textbook's tetrahedron winds its faces so), and ${setting} culls the faces that point toward the viewer`);
+  } else if (share >= T.windingHoleShare) {
+    say('mistake', `a hole shows from some side: ${pct(share)} of the triangles are wound the other way from the rest (${read}), and ${setting} takes them away where they face the viewer`);
+  } else say('pass', `the triangles are wound so that the culling keeps the near side: ${pct(1 - g.cw)} of them counter-clockwise seen from outside (${read})`);
+}
+
+/** A sphere is closed: every edge of its mesh belongs to two triangles. */
+export function auditClosed({ facts, T, say }) {
+  const g = judgedGeometry(facts);
+  if (!g || !g.closed || !g.closed.edges) return;
+  const { open, edges } = g.closed;
+  if (open / edges > T.openEdgeShare) say('mistake', `the sphere is not closed: ${open} of its ${edges} edges belong to one triangle only (read from the triangles the page sent), so it has holes`);
+}
+
+/** WP04P1/P2: n = p at each vertex, not a colour or normal per face. */
+export function auditPerFace({ facts, T, must, say }) {
+  if (!must.has('normalColours')) return;
+  const g = judgedGeometry(facts);
+  if (!g || !g.perFace) return;
+  const face = g.perFace.find((a) => /norm|col/i.test(a.name) && a.share >= T.perFaceShare && a.distinct >= T.perFaceDistinct);
+  if (face) say('mistake', `a colour per face, not per vertex: the attribute ${face.name} is the same at the three corners of ${pct(face.share)} of the triangles (a face's normal or colour; the slide: "vertex positions p are also vertex normals n: n = p")`);
+}
+
+/** A page whose vertices a frame grow while no control is touched builds its mesh again and appends it. */
+export function auditGrowth({ facts, T, say, numbers }) {
+  const g = facts.geometryAtFirst;
+  const f = g && g.frames;
+  if (!f || f.length < T.growthFrames) return;
+  const last = f.slice(-T.growthFrames);
+  const grows = last.every((v, k) => k === 0 || v > last[k - 1]) && last[last.length - 1] >= T.growthRatio * last[0];
+  if (!grows) return;
+  numbers.growth = f;
+  say('mistake', `the page draws more every frame (${f[0]} → ${f[f.length - 1]} vertices over ${f.length} frames, no control touched): the mesh is built again and appended to its arrays, and the page slows until it stalls`);
+}
