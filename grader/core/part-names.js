@@ -12,7 +12,7 @@ const PATTERNS = [
   /w0?4p0?([1-5])(?![0-9])/i,
   /part[-_ ]?0?([1-5])(?![0-9])/i,
   /(?:^|[^a-z])del[-_ ]?0?([1-5])(?![0-9])/i, // Danish: Del1, del_3 (not model1)
-  /(?:^|[^a-z])(?:opgave|opg|exercise|ex|task|assignment)[-_ ]?0?([1-5])(?![0-9])/i, // opgave1, exercise_2, task3
+  /(?:^|[^a-z])(?:opgave|opg)[-_ ]?0?([1-5])(?![0-9])/i, // Danish: opgave1, opg_2 (the exercise's parts in a week folder)
   // the worksheet's number, a separator, the part's: W4-1, wks4_1, ws04.2, uge4-1, sheet4_1
   /(?:^|[^a-z0-9])(?:w|ws|wk|wks|week|worksheet|sheet|lab|uge|ex|exercise)?0?4[-_.]0?([1-5])(?![0-9])/i,
   /(?:^|[^a-z0-9])p0?([1-5])(?![0-9])/i,

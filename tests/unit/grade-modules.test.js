@@ -45,8 +45,8 @@ const shotOf = (img) => ({ img, an: analyse(img, T) });
 test('parts are found by the worksheet and part numbers students write', () => {
   for (const [name, n] of [['W4-1', 1], ['wks4_3', 3], ['ws4_part2', 2], ['02561_W04P5', 5], ['uge4-4', 4], ['sheet4_2', 2]]) assert.equal(partNumber(name), n, name);
   for (const name of ['W4-6', 'wks4', 'Worksheet_4', 'Lab 4', 'model1', 'p12']) assert.equal(partNumber(name), null, name);
-  for (const [name, n] of [['01', 1], ['5', 5], ['opgave3', 3], ['Opg_2', 2], ['exercise-4', 4], ['task1', 1]]) assert.equal(partNumber(name), n, name);
-  for (const name of ['06', '10', '2024', 'v1.2', 'complex1']) assert.equal(partNumber(name), null, name);
+  for (const [name, n] of [['01', 1], ['5', 5], ['opgave3', 3], ['Opg_2', 2]]) assert.equal(partNumber(name), n, name);
+  for (const name of ['06', '10', '2024', 'v1.2', 'complex1', 'exercise5']) assert.equal(partNumber(name), null, name);
 });
 
 test('parts in numbered folders under a week folder, beside common/, are found (week-4/01 … 05)', () => {
