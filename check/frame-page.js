@@ -69,6 +69,11 @@ export function framePage(frame, log) {
     async setNoCull(on) {
       g().noCull = on;
     },
+    /** What the page last sent for its shaders (grader/browser/sent.js). */
+    async sent() {
+      const r = win().__sent;
+      return r ? plain(r.read()) : null;
+    },
     /** The geometry of the last frame drawn, summed up (grader/browser/geometry.js). */
     async geometry(limits) {
       const r = win().__geometry;

@@ -12,6 +12,7 @@ import { frameClockScript } from '../grader/browser/clock.js';
 import { drawBatchScript } from '../grader/browser/draw-batch.js';
 import { instrumentScript } from '../grader/browser/instrument.js';
 import { geometryInit } from '../grader/browser/geometry.js';
+import { sentScript } from '../grader/browser/sent.js';
 import { webgpuCaptureScript } from '../grader/browser/webgpu-capture.js';
 import { gradePart } from '../grader/core/grade-part.js';
 import { verdictOf, reasonsOf } from '../grader/core/verdict.js';
@@ -30,6 +31,7 @@ export function frameScript(rubric) {
     `(${drawBatchScript})();`,
     `(${instrumentScript})();`,
     geometryInit,
+    `(${sentScript})();`,
     `(${frameClockScript})(${FROZEN});`,
   ].join('\n');
 }

@@ -146,3 +146,22 @@ export function parameterGroups(controls, patterns) {
 export function describeGroup(g) {
   return g.controls.length === 1 ? describe(g.controls[0]) : `the ${g.controls.length} "${g.stem}" sliders (${g.channels}: ${g.controls.map((c) => (c.id ? `#${c.id}` : describe(c))).join(', ')}) together`;
 }
+
+/**
+ * The keys of what the page sends for its shaders (grader/browser/sent.js: uniforms, constant
+ * attributes, vertex buffers) whose digest differs between two reads, leaving out `animated` (the
+ * keys that change with no control touched: an orbit's view matrix). null where nothing was recorded.
+ */
+export function sentChanges(before, after, animated = []) {
+  if (!before || !after) return null;
+  const skip = new Set(animated);
+  return Object.keys(after).filter((k) => !skip.has(k) && before[k] !== after[k]).sort();
+}
+
+/**
+ * Did an event on a slider change what the page shows? Where the picture moves by itself (an orbit
+ * that cannot be stopped), a changed picture is no evidence: what the page sent is (`sent`, the keys
+ * it changed; null where not recorded, and then the picture decides). Where it stands still, the
+ * picture decides, as before.
+ */
+export const sliderActed = ({ moving, picture, sent }) => (moving && sent ? sent.length > 0 : picture);

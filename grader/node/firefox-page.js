@@ -7,6 +7,7 @@
 import { drawBatchScript } from '../browser/draw-batch.js';
 import { instrumentScript } from '../browser/instrument.js';
 import { geometryInit } from '../browser/geometry.js';
+import { sentScript } from '../browser/sent.js';
 import { frameClockScript } from '../browser/clock.js';
 import { submissionAnswers } from './serve-submission.js';
 import { FROZEN, pageDriver } from './playwright-page.js';
@@ -63,6 +64,7 @@ export function firefoxOpener(browser, host) {
       await page.evaluateOnNewDocument(drawBatchScript);
       await page.evaluateOnNewDocument(instrumentScript);
       await page.evaluateOnNewDocument(geometryInit);
+      await page.evaluateOnNewDocument(sentScript);
       await page.evaluateOnNewDocument(frameClockScript, FROZEN.getTime());
       const url = `${site.origin}/${rel.split(/[\\/]/).map(encodeURIComponent).join('/')}${query ? `?${query}` : ''}`;
       let response;

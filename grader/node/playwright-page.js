@@ -8,6 +8,7 @@ import { webgpuCaptureScript } from '../browser/webgpu-capture.js';
 import { drawBatchScript } from '../browser/draw-batch.js';
 import { instrumentScript } from '../browser/instrument.js';
 import { geometryInit } from '../browser/geometry.js';
+import { sentScript } from '../browser/sent.js';
 import { frameClockScript } from '../browser/clock.js';
 import { serveSubmission } from './serve-submission.js';
 
@@ -37,6 +38,7 @@ export function partOpener(browser, host) {
     await context.addInitScript(drawBatchScript);
     await context.addInitScript(instrumentScript);
     await context.addInitScript(geometryInit);
+    await context.addInitScript(sentScript);
     await context.addInitScript(frameClockScript, FROZEN.getTime());
     const page = await context.newPage();
     page.on('popup', (popup) => {
@@ -136,6 +138,8 @@ export function pageDriver(page, log) {
     setNoCull: (on) => page.evaluate((v) => { window.__grade.noCull = v; }, on),
     sources: () => page.evaluate(() => ({ glsl: window.__grade.glsl, wgsl: window.__grade.wgsl })),
     /** The geometry of the last frame drawn, summed up (grader/browser/geometry.js): triangles, winding, closed, per-face attributes. */
+    /** What the page last sent for its shaders, a digest a key (grader/browser/sent.js): uniforms, constant attributes, vertex buffers. */
+    sent: () => page.evaluate(() => (window.__sent ? window.__sent.read() : null)),
     geometry: (limits) => page.evaluate((l) => (window.__geometry ? window.__geometry.read(l) : { why: 'the geometry was not recorded' }), limits),
     errors: () => log.errors,
   };

@@ -1,9 +1,20 @@
 // WP04P4: "sliders for the material and light parameters" that act on the input event (while
 // sliding), and ks used in the specular term.
 import { analyse, samples, shadeFit, perspectiveSamples, highlightAbove } from '../measure.js';
+import { sliderActed } from '../controls.js';
 
 const fmt = (x, d = 2) => (x === null || x === undefined || Number.isNaN(x) ? '–' : Number(x).toFixed(d));
 const SLIDERS = ['kd', 'ks', 's', 'Le', 'La'];
+
+/**
+ * The event a slider acted on: where the picture moved by itself while it was tried, what the page
+ * sent differently on each event (s.sent) decides; elsewhere the pictures did, while gathering (s.how).
+ */
+function eventOf(s) {
+  if (!s.moving || !s.sent) return s.how;
+  if (sliderActed({ moving: true, sent: s.sent.input })) return 'input';
+  return s.sent.change && sliderActed({ moving: true, sent: s.sent.change }) ? 'change' : 'none';
+}
 
 /** The sliders tried (facts.sliders), against the judged view (`judged`: { an }) and its shading. */
 export function auditSliders({ facts, images, T, must, say, rubric, part }, judged, shading) {
@@ -16,7 +27,8 @@ export function auditSliders({ facts, images, T, must, say, rubric, part }, judg
   const found = {};
   const together = {}; // role → how its sliders moved together (ks r, g, b: one parameter)
   for (const s of facts.sliders) {
-    const { how, role, target } = s;
+    const { role, target } = s;
+    const how = eventOf(s);
     if (how !== 'none' && !s.levelSlider) {
       if (role && !found[role]) found[role] = true;
       if (role && s.controls) together[role] = `${s.controls.length} sliders (${s.channels}) moved together`;

@@ -9,3 +9,10 @@ export async function readGeometry(S) {
   S.outOfTime();
   return S.page.geometry({ maxTriangles: S.T.geometrySampleTriangles, maxEdgeTriangles: S.T.geometryEdgeTriangles });
 }
+
+/** What the page last sent for its shaders ({ key: digest }: grader/browser/sent.js); null where not recorded. */
+export async function readSent(S) {
+  if (!S.page.sent) return null;
+  S.outOfTime();
+  return S.page.sent();
+}

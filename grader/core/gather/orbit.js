@@ -3,9 +3,9 @@
 // one that starts it. Samples are at fixed virtual times, orbitSampleSeconds apart, with a number of
 // frames each that depends only on the sample's index and the page's own work a frame.
 import { analyse } from '../measure.js';
-import { describe, named, trialOrder, isClickable } from '../controls.js';
+import { describe, named, trialOrder, isClickable, sentChanges } from '../controls.js';
 import { litView } from '../views.js';
-import { readGeometry } from './geometry.js';
+import { readGeometry, readSent } from './geometry.js';
 
 const fmt = (x, d) => Number(x).toFixed(d);
 
@@ -62,11 +62,14 @@ export async function findOrbit(S, controls) {
   const orbit = S.orbit = { movedAtFirst: false, toggles: false, start: null, stop: null, later: false };
   const clickables = controls.filter(isClickable);
   const shaded = S.must.has('diffuse');
+  const sent = await readSent(S);
   await S.watch();
   orbit.movedAtFirst = S.moving;
   // the frames drawn so far, no control touched yet (their vertices: a page that draws more every
-  // frame), and the geometry of the level the page starts at
+  // frame), and the geometry of the level the page starts at; what the page sends differently
+  // with no control touched (an orbit's view matrix: not a slider's doing)
   facts.geometryAtFirst = await readGeometry(S);
+  if (S.moving) facts.sentAnimated = sentChanges(sent, await readSent(S));
   if (shaded) look(S, S.images.first, { orbiting: false });
   if (S.moving) {
     S.act('the picture moves by itself (an orbit or animation)');

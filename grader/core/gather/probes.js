@@ -3,7 +3,8 @@
 // s sliders, and a view farther along the orbit), the sliders, s at its least. Each records the
 // pictures it took for the audits; the decisions read the same evidence the audits do.
 import { samples, normalColours, shadeFit, highlightSeen, pictureChange } from '../measure.js';
-import { nameRole, parameterGroups, describeGroup } from '../controls.js';
+import { nameRole, parameterGroups, describeGroup, sentChanges, sliderActed } from '../controls.js';
+import { readSent } from './geometry.js';
 import { lightAngle } from '../views.js';
 import { searchOrbit } from './orbit.js';
 
@@ -119,6 +120,7 @@ export async function trySliders(S, controls) {
   const base = S.images[facts.shadingImage || facts.judged];
   const groups = groupsOf(S, controls);
   facts.slidersFound = groups.length;
+  const animated = facts.sentAnimated, sentBefore = S.moving && animated ? await readSent(S) : null;
   for (const g of groups.slice(0, T.maxSliderTrials)) {
     const k = g.role;
     const target = (c) => {
@@ -129,17 +131,20 @@ export async function trySliders(S, controls) {
     const vs = await setGroup(S, g, target, ['input']);
     await S.tick(100);
     let after = await S.page.snap();
+    // what the page sent differently (sentChanges) decides where the picture moves by itself
+    const sent = { input: sentChanges(sentBefore, await readSent(S), animated), change: null };
     let how = 'input';
-    if (pictureChange(base, after) <= T.sliderChange) {
+    if (!sliderActed({ moving: S.moving, picture: pictureChange(base, after) > T.sliderChange, sent: sent.input })) {
       await setGroup(S, g, target, ['change']);
       await S.tick(100);
       after = await S.page.snap();
-      how = pictureChange(base, after) > T.sliderChange ? 'change' : 'none';
+      sent.change = sentChanges(sentBefore, await readSent(S), animated);
+      how = sliderActed({ moving: S.moving, picture: pictureChange(base, after) > T.sliderChange, sent: sent.change }) ? 'change' : 'none';
     }
     const r = k && k !== 'levelSlider' ? k : null;
     S.act(`set ${describeGroup(g)} to ${vs[0]} (${how === 'none' ? 'no visible change' : `the picture changed on the ${how} event`})`);
     if (how !== 'none' && k !== 'levelSlider') facts.roles[r || `slider ${Object.keys(facts.roles).length}`] = `${describeGroup(g)}: changes the shading on ${how}`;
-    facts.sliders.push({ ...groupFacts(g, vs), role: r, levelSlider: k === 'levelSlider', target: vs[0], how, image: S.keep(`slider-${facts.sliders.length}`, after) });
+    facts.sliders.push({ ...groupFacts(g, vs), role: r, levelSlider: k === 'levelSlider', target: vs[0], how, ...(S.moving && sent.input ? { moving: true, sent } : {}), image: S.keep(`slider-${facts.sliders.length}`, after) });
     // back to where it was (drawn with the next slider's frame, or the last one below)
     await setGroup(S, g, (c) => S.now(c));
   }
