@@ -6,6 +6,15 @@
 export function sentScript() {
   if (window.__sent) return;
   const values = new Map(); // key → digest (a string)
+  const buffers = []; // the buffer keys, oldest first: a page that makes a buffer a frame keeps the last MAX_BUFFERS
+  const MAX_BUFFERS = 256;
+  const setBuffer = (key, digest) => {
+    if (!values.has(key)) {
+      buffers.push(key);
+      if (buffers.length > MAX_BUFFERS) values.delete(buffers.shift());
+    }
+    values.set(key, digest);
+  };
   const names = new WeakMap(); // WebGLUniformLocation → its name
   const ids = new WeakMap(); // a buffer (WebGL or WebGPU) → a number
   let nextId = 0;
@@ -52,11 +61,11 @@ export function sentScript() {
     after(proto, 'bindBuffer', (gl, [target, buffer]) => { if (target === gl.ARRAY_BUFFER) bound.set(gl, buffer); });
     after(proto, 'bufferData', (gl, [target, src]) => {
       const b = target === gl.ARRAY_BUFFER && bound.get(gl);
-      if (b && typeof src !== 'number') values.set(`buffer ${idOf(b)}`, sampleOf(src));
+      if (b && typeof src !== 'number') setBuffer(`buffer ${idOf(b)}`, sampleOf(src));
     });
     after(proto, 'bufferSubData', (gl, [target, at, src]) => {
       const b = target === gl.ARRAY_BUFFER && bound.get(gl);
-      if (b) values.set(`buffer ${idOf(b)} at ${at}`, sampleOf(src));
+      if (b) setBuffer(`buffer ${idOf(b)} at ${at}`, sampleOf(src));
     });
   }
 
@@ -74,7 +83,7 @@ export function sentScript() {
       const whole = ArrayBuffer.isView(data) ? data.buffer : data, base = ArrayBuffer.isView(data) ? data.byteOffset : 0;
       const start = base + dataOffset * per, length = size !== undefined ? size * per : (ArrayBuffer.isView(data) ? data.byteLength : data.byteLength) - dataOffset * per;
       const bytes = new Uint8Array(whole, start, Math.max(0, length));
-      if (kind === 'vertex') { values.set(`buffer ${idOf(buffer)} at ${at}`, sampleOf(bytes)); return; }
+      if (kind === 'vertex') { setBuffer(`buffer ${idOf(buffer)} at ${at}`, sampleOf(bytes)); return; }
       // a uniform buffer, 16 bytes at a time (a vec4, or a matrix's column)
       const id = idOf(buffer);
       for (let k = 0; k < bytes.length; k += 16) values.set(`uniform buffer ${id} at ${at + k}`, bytes.subarray(k, k + 16).join(','));

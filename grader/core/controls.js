@@ -150,12 +150,13 @@ export function describeGroup(g) {
 /**
  * The keys of what the page sends for its shaders (grader/browser/sent.js: uniforms, constant
  * attributes, vertex buffers) whose digest differs between two reads, leaving out `animated` (the
- * keys that change with no control touched: an orbit's view matrix). null where nothing was recorded.
+ * keys that change with no control touched: an orbit's view matrix) and keys new in the second read
+ * (a buffer made anew each frame says nothing). null where nothing was recorded.
  */
 export function sentChanges(before, after, animated = []) {
   if (!before || !after) return null;
   const skip = new Set(animated);
-  return Object.keys(after).filter((k) => !skip.has(k) && before[k] !== after[k]).sort();
+  return Object.keys(after).filter((k) => !skip.has(k) && k in before && before[k] !== after[k]).sort();
 }
 
 /**

@@ -8,6 +8,7 @@ import { readFileSync } from 'node:fs';
 import { meshAnalysis } from '../../grader/browser/mesh.js';
 import { auditWinding, auditClosed, auditPerFace, auditGrowth } from '../../grader/core/audits/geometry.js';
 import { checkList } from '../../grader/core/verdict.js';
+import { sentChanges, sliderActed } from '../../grader/core/controls.js';
 import { tetrahedronSphere, vertexCount } from '../../common/sphere.js';
 
 const rubric = JSON.parse(readFileSync(new URL('../../grader/core/rubric.json', import.meta.url), 'utf8'));
@@ -170,4 +171,17 @@ test('the audits: a page that draws more every frame while nothing is touched', 
   assert.equal(judge([768, 768, 768, 768, 768]), '');
   assert.equal(judge([12, 768, 768, 768]), '', 'a first frame at another level is not growth');
   assert.equal(judge([192, 384]), '', 'too few frames to tell');
+});
+
+test('what the page sent: the keys a slider changed, the animated ones and buffers made anew left out', () => {
+  const before = { 'uniform kd': '0.8', 'uniform view': '1,0,0', 'buffer 3': '12,0,1' };
+  const after = { 'uniform kd': '0', 'uniform view': '0,1,0', 'buffer 3': '12,0,1', 'buffer 9': '12,0,1' };
+  assert.deepEqual(sentChanges(before, after, ['uniform view']), ['uniform kd']);
+  assert.deepEqual(sentChanges(before, { ...before, 'uniform view': '0,0,1' }, ['uniform view']), []);
+  assert.equal(sentChanges(null, after), null);
+  // moving: what was sent decides; standing still (or nothing recorded): the picture
+  assert.equal(sliderActed({ moving: true, picture: true, sent: [] }), false);
+  assert.equal(sliderActed({ moving: true, picture: false, sent: ['uniform kd'] }), true);
+  assert.equal(sliderActed({ moving: false, picture: true, sent: [] }), true);
+  assert.equal(sliderActed({ moving: true, picture: true, sent: null }), true);
 });
