@@ -4,7 +4,7 @@
 // reasons come from the findings only (verdict.js). No browser: `npm run grade -- --audit-only`
 // re-judges a class from its saved artifacts.
 import { analyse } from './measure.js';
-import { checkList } from './verdict.js';
+import { checkList, NOT_GRADED, tooSlowWords } from './verdict.js';
 import { litView } from './views.js';
 import { sphereView, shadingOf, viewFits } from './evidence.js';
 import { auditFirstFrame, notGradedHere, STOP } from './audits/first-frame.js';
@@ -33,11 +33,14 @@ export function auditPart({ facts, images }, rubric) {
   const shown = {};
   if (images.first) shown.first = 'first';
   const C = { facts, images, T, rubric, part, must, say, numbers, imagesShown: shown };
-  const notGraded = notGradedHere(C);
+  let notGraded = notGradedHere(C);
   const result = (fail) => ({ fail, checks, numbers, shown, tooSlow: facts.tooSlow || null, ...(notGraded ? { notGraded } : {}) });
   if (facts.tooSlow) {
-    // nothing judged: where the bound ran out depends on the machine, the verdict must not
-    say(rubric.tooSlowVerdict, `too slow to judge here: the rubric's bound of ${rubric.timeoutSeconds} s ran out while ${facts.tooSlow}; nothing was judged (what was done is listed under what the grader did)`);
+    // nothing judged: where the bound ran out depends on the machine, the verdict must not; a page
+    // that draws is not broken for being slow: not graded here (the rubric's tooSlowVerdict)
+    const why = tooSlowWords(rubric, facts.tooSlow);
+    if (rubric.tooSlowVerdict === NOT_GRADED) notGraded = `${NOT_GRADED}: ${why}`;
+    else say(rubric.tooSlowVerdict, why);
     return result(null);
   }
   const fail = auditFirstFrame(C);

@@ -1,8 +1,15 @@
 // Verdicts and reasons: the checks a part's judging said (each { level, reason }) become one
 // verdict (pass, review, fail) and the reasons a teacher reads, worst first. Plain data.
 
-/** The verdict of a part the browser it was graded in could not run (WebGPU in Firefox ESR): neither pass, review nor fail. */
+/**
+ * The verdict of a part the browser it was graded in could not run (WebGPU in Firefox ESR), or that
+ * ran past the rubric's bound on the wall clock while it drew (too slow on this machine): neither
+ * pass, review nor fail.
+ */
 export const NOT_GRADED = 'not graded here';
+
+/** Why a part past the rubric's wall-clock bound while `doing` was not judged. */
+export const tooSlowWords = (rubric, doing) => `too slow on this machine: the rubric's bound of ${rubric.timeoutSeconds} s ran out while ${doing}; nothing was judged (what was done is listed under what the grader did; grade it again on a faster machine, or with a larger timeoutSeconds)`;
 
 /**
  * A list of checks with the rubric's cost of a mistake: say('pass' | 'review' | 'fail' |

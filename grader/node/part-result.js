@@ -17,7 +17,8 @@ export function applyAudit(result, judged, files = {}) {
   result.status = judged.fail ? 'failed' : judged.tooSlow ? 'too slow' : 'ok';
   if (judged.notGraded) {
     // the browser could not run it (WebGPU in Firefox ESR): no verdict; what was seen stays below
-    result.verdict = result.status = NOT_GRADED;
+    result.verdict = NOT_GRADED;
+    result.status = judged.tooSlow ? 'too slow' : NOT_GRADED;
     result.reasons = [judged.notGraded, ...result.reasons.map((r) => `(seen here: ${r})`)];
   }
   result.pass = result.verdict === 'pass';

@@ -10,6 +10,8 @@ import { PNG } from 'pngjs';
 import { compareImages } from './compare.js';
 import { writeArtifact, pngOf } from './artifacts.js';
 import { applyAudit } from './part-result.js';
+import { NOT_GRADED, tooSlowWords } from '../core/verdict.js';
+import { FIRST_FRAME } from '../core/gather/index.js';
 import { gradePart, addTime } from '../core/grade-part.js';
 import { referenceQuery, referenceStateOf } from '../core/reference-state.js';
 
@@ -55,7 +57,14 @@ export async function runPart({ item, plan, openers, more = () => {}, over = () 
       // the outer bound: past 85% of it a part is too slow to judge here (time is left to write what was seen)
       const deadline = started + 0.85 * rubric.timeoutSeconds * 1000;
       graded = await gradePart(opened.driver, { part: item.part, rubric, deadline, timing, progress: (what) => {
-        result.reasons = [`the page did not finish within the rubric's bound of ${rubric.timeoutSeconds} s: stopped while ${what} (a click or frame that never returns?)`];
+        // what stays if the time bound stops the part now: past its first frame the page draws, and
+        // a page that draws is too slow here, not broken (the rubric's tooSlowVerdict)
+        if (what === FIRST_FRAME) result.reasons = [`the page did not finish within the rubric's bound of ${rubric.timeoutSeconds} s: stopped while ${what} (a frame that never returns?)`];
+        else {
+          const why = tooSlowWords(rubric, what);
+          Object.assign(result, rubric.tooSlowVerdict === NOT_GRADED ? { verdict: NOT_GRADED, status: 'too slow', reasons: [`${NOT_GRADED}: ${why}`] }
+            : { verdict: rubric.tooSlowVerdict, status: 'too slow', reasons: [why] });
+        }
         save(result);
       } });
       const t0 = Date.now();

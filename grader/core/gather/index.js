@@ -16,6 +16,9 @@ import { unclip, brighten } from './visible.js';
 import { readGeometry } from './geometry.js';
 import { sphereView, shadingOf, viewFits, highlightEvidence } from '../evidence.js';
 
+/** What the gathering is doing until the page's first frame is seen (past it, the page draws). */
+export const FIRST_FRAME = 'waiting for the first frame';
+
 /** Gathers one opened part: { facts, images }. `timing` ({ method: { ms, calls } }) hears where the time went. */
 export async function gatherPart(page, { part, rubric, progress = () => {}, deadline = Infinity, timing = {} }) {
   const S = session(timed(page, timing), { part, rubric, progress, deadline });
@@ -32,7 +35,7 @@ export async function gatherPart(page, { part, rubric, progress = () => {}, dead
 async function gather(S) {
   const { page, T, facts, must } = S;
   // ---- the first frame: frames run only once nothing the page awaits in real time is pending ----
-  S.step('waiting for the first frame');
+  S.step(FIRST_FRAME);
   await S.settle();
   await S.tick(1000, 1);
   for (let k = 0; k < T.firstFrameTicks; k++) {
