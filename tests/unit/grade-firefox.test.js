@@ -85,5 +85,6 @@ test('--browser: chromium or firefox (2 on anything else); Firefox missing says 
   const out = mkdtempSync(path.join(os.tmpdir(), 'no-firefox-'));
   const missing = grade(['--browser', 'firefox', 'tests/fixtures/handins/anna', '--out', out], { FIREFOX_PATH: '/nonexistent/firefox-esr' });
   assert.equal(missing.status, 1);
-  assert.match(missing.stderr, /Firefox ESR is missing at \/nonexistent\/firefox-esr: run "sudo apt-get install -y firefox-esr"/);
+  assert.match(missing.stderr, /Firefox is not at \/nonexistent\/firefox-esr \(FIREFOX_PATH\): set FIREFOX_PATH to a browser's executable, or unset it and install one: sudo apt-get update && sudo apt-get install -y firefox-esr/);
+  assert.match(missing.stderr, /or grade in Chromium/);
 });
