@@ -20,9 +20,9 @@ const CLOSED = /Test ended|Target page, context or browser has been closed/;
  * Grades `item` of `plan` with `openers` ({ student, reference }): writes item.resultFile (first
  * as a timeout, which stays if the part's time bound stops it) and item.artifactDir. `more(seconds)`
  * asks for more time for our reference; `over()` says the time bound has stopped the part (nothing
- * is written after that).
+ * is written after that). `browserVersion` ("Chromium 156.0.8078.108") names the browser that grades it.
  */
-export async function runPart({ item, plan, openers, more = () => {}, over = () => false }) {
+export async function runPart({ item, plan, openers, browserVersion = null, more = () => {}, over = () => false }) {
   const rubric = plan.rubric;
   const save = (result) => {
     if (over()) return;
@@ -32,7 +32,7 @@ export async function runPart({ item, plan, openers, more = () => {}, over = () 
   const result = { name: item.name, part: item.part, file: item.page, status: 'timeout', verdict: 'fail', api: null,
     reasons: [`the page did not finish within the rubric's bound of ${rubric.timeoutSeconds} s (it never returns, or is far too slow)`], actions: [], controls: {},
     numbers: {}, mismatch: null, rmse: null, pass: false, comparison: null, notes: [], errors: [], blocked: [], images: null,
-    ...(plan.browser && plan.browser !== 'chromium' ? { browser: plan.browser } : {}) };
+    ...(plan.browser && plan.browser !== 'chromium' ? { browser: plan.browser } : {}), ...(browserVersion ? { browserVersion } : {}) };
   save(result); // what stays if the page never lets go: a timeout
   if (!item.page) {
     Object.assign(result, { status: 'missing', reasons: [`no page for ${item.part} was found in the submission`] });
