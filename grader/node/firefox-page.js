@@ -7,7 +7,7 @@
 import { drawBatchScript } from '../browser/draw-batch.js';
 import { instrumentScript } from '../browser/instrument.js';
 import { frameClockScript } from '../browser/clock.js';
-import { submissionAnswers } from './serve-submission.js';
+import { submissionAnswers, urlOf } from './serve-submission.js';
 import { FROZEN, pageDriver } from './playwright-page.js';
 
 /**
@@ -62,7 +62,7 @@ export function firefoxOpener(browser, host) {
       await page.evaluateOnNewDocument(drawBatchScript);
       await page.evaluateOnNewDocument(instrumentScript);
       await page.evaluateOnNewDocument(frameClockScript, FROZEN.getTime());
-      const url = `${site.origin}/${rel.split(/[\\/]/).map(encodeURIComponent).join('/')}${query ? `?${query}` : ''}`;
+      const url = urlOf(site.origin, root, rel, query).href;
       let response;
       try {
         response = await page.goto(url, { waitUntil: 'load', timeout: loadSeconds * 1000 });

@@ -7,7 +7,8 @@ import path from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { PARTS, findParts } from './parts.js';
 import { readLabels, agreementText } from './labels.js';
-import { writeReport, safeName } from './report.js';
+import { writeReport } from './report.js';
+import { partFiles } from './layout.js';
 import { mergeRubric } from '../core/rubric.js';
 import { CHROMIUM, CHROMIUM_HOW, CHROMIUM_INSTALL, CHROMIUM_MISSING } from '../../tools/browser.js';
 import { FIREFOX, FIREFOX_INSTALL, FIREFOX_MISSING } from '../../tools/firefox.js';
@@ -155,8 +156,7 @@ async function main() {
       for (const part of PARTS) {
         const cfg = rubric.parts[part] || {};
         const page = parts[part] && existsSync(path.join(s.root, parts[part])) ? parts[part] : null;
-        items.push({ name: s.name, part, root: s.root, page, referenceQuery: cfg.referenceQuery || {}, resultFile: path.join(out, 'parts', safeName(s.name), `${part}.json`),
-          artifactDir: path.join(out, 'artifacts', safeName(s.name), part) });
+        items.push({ name: s.name, part, root: s.root, page, referenceQuery: cfg.referenceQuery || {}, ...partFiles(out, s.name, part) });
       }
     }
     // the parts that try the most first (the sliders, then the orbit's), so that the workers end

@@ -8,7 +8,7 @@ import { webgpuCaptureScript } from '../browser/webgpu-capture.js';
 import { drawBatchScript } from '../browser/draw-batch.js';
 import { instrumentScript } from '../browser/instrument.js';
 import { frameClockScript } from '../browser/clock.js';
-import { serveSubmission } from './serve-submission.js';
+import { serveSubmission, urlOf } from './serve-submission.js';
 
 // the time the page sees: frozen, moving only when the grader lets frames run
 export const FROZEN = new Date('2026-01-05T09:00:00Z');
@@ -73,7 +73,7 @@ export function partOpener(browser, host) {
       kept ??= await keep();
       const { page, site } = kept;
       serve(site, root, log);
-      const url = `${site.origin}/${rel.split(/[\\/]/).map(encodeURIComponent).join('/')}${query ? `?${query}` : ''}`;
+      const url = urlOf(site.origin, root, rel, query).href;
       let response;
       try {
         response = await page.goto(url, { waitUntil: 'load', timeout: loadSeconds * 1000 });

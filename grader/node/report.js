@@ -4,13 +4,12 @@
 import { writeFileSync } from 'node:fs';
 import path from 'node:path';
 import { PARTS } from './parts.js';
+import { safeName } from './layout.js';
 import { agreement, agreementHtml } from './labels.js';
 import { NOT_GRADED } from '../core/verdict.js';
 import { similarityJson, similarityBadges, similarityHtml, SIMILARITY_CSS } from '../similarity/run.js';
 
 const esc = (s) => String(s).replace(/[&<>"']/g, (c) => ({ '&': '&amp;', '<': '&lt;', '>': '&gt;', '"': '&quot;', "'": '&#39;' })[c]);
-/** A submission's name as a file or folder name (its parts' pictures are in parts/<safeName>/). */
-export const safeName = (s) => s.replace(/[^A-Za-z0-9._-]+/g, '_');
 
 const VERDICTS = ['pass', 'review', 'fail'];
 /** The passes of a submission, then its reviews (a count a reader can read: more is better). */

@@ -9,6 +9,7 @@ import path from 'node:path';
 import { PNG } from 'pngjs';
 import { compareImages } from './compare.js';
 import { writeArtifact, pngOf } from './artifacts.js';
+import { hrefOf } from './layout.js';
 import { applyAudit } from './part-result.js';
 import { gradePart, addTime } from '../core/grade-part.js';
 import { referenceQuery, referenceStateOf } from '../core/reference-state.js';
@@ -62,8 +63,7 @@ export async function runPart({ item, plan, openers, browserVersion = null, more
       const { facts, images } = graded.artifact;
       if (over()) return;
       const saved = writeArtifact(item.artifactDir, { facts: { ...facts, blocked: result.blocked, notes: result.notes }, images });
-      const rel = path.relative(plan.out, item.artifactDir).split(path.sep).join('/');
-      for (const [name, file] of Object.entries(saved)) files[name] = `${rel}/${file}`;
+      for (const [name, file] of Object.entries(saved)) files[name] = hrefOf(plan.out, path.join(item.artifactDir, file));
       phase('write', t0);
     }
     clean = true;
@@ -91,7 +91,6 @@ export async function runPart({ item, plan, openers, browserVersion = null, more
 async function drawReference({ item, plan, openers, result, graded }) {
   const dir = path.dirname(item.resultFile);
   const stem = path.basename(item.resultFile, '.json');
-  const relDir = path.relative(plan.out, dir).split(path.sep).join('/');
   const refLog = { errors: [], blocked: [], notes: [] };
   const query = referenceQuery(graded.images.judged, result.numbers, plan.rubric.thresholds, item.referenceQuery);
   let ref = null;
@@ -115,6 +114,6 @@ async function drawReference({ item, plan, openers, result, graded }) {
     result.notes.push(...cmp.notes, `the reference is our page at the same canvas size${result.referenceState && result.referenceState.light ? ', lit from the fitted light' : ''}; the difference is evidence, the verdict comes from the checks`);
     writeFileSync(path.join(dir, `${stem}-reference.png`), PNG.sync.write(cmp.reference));
     writeFileSync(path.join(dir, `${stem}-diff.png`), PNG.sync.write(cmp.diff));
-    Object.assign(result.images, { reference: `${relDir}/${stem}-reference.png`, diff: `${relDir}/${stem}-diff.png` });
+    Object.assign(result.images, { reference: hrefOf(plan.out, path.join(dir, `${stem}-reference.png`)), diff: hrefOf(plan.out, path.join(dir, `${stem}-diff.png`)) });
   } else if (ref) result.notes.push(`our reference drew ${ref.width}×${ref.height}, not ${width}×${height}: not compared`);
 }
