@@ -73,7 +73,8 @@ const INSTALL = {
  */
 export function installCommand(kind, { platform, osRelease = '' }) {
   if (platform === 'darwin') return { line: kind === 'firefox' ? 'brew install --cask firefox' : 'brew install --cask google-chrome', root: null };
-  if (platform === 'win32') return { line: kind === 'firefox' ? 'winget install Mozilla.Firefox' : 'winget install Google.Chrome', root: null };
+  // (-e --id: winget matches a bare name by substring, and may find more than one package)
+  if (platform === 'win32') return { line: `winget install -e --id ${kind === 'firefox' ? 'Mozilla.Firefox' : 'Google.Chrome'}`, root: null };
   const family = linuxFamily(osRelease);
   const pkg = kind === 'firefox' ? 'firefox' : 'chromium';
   if (family === 'fedora') return { line: `sudo dnf install -y ${pkg}`, root: null };

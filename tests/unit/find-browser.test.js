@@ -121,7 +121,7 @@ test('nothing found: the one install command of that OS, and the variable to set
     arch: ['linux', ARCH, 'sudo pacman -S --needed chromium'],
     unknown: ['linux', '', 'sudo apt-get update && sudo apt-get install -y chromium'],
     macOS: ['darwin', '', 'brew install --cask google-chrome'],
-    Windows: ['win32', '', 'winget install Google.Chrome'],
+    Windows: ['win32', '', 'winget install -e --id Google.Chrome'],
   };
   for (const [name, [platform, osRelease, line]] of Object.entries(lines)) {
     const r = none(platform, osRelease);
@@ -134,7 +134,7 @@ test('nothing found: the one install command of that OS, and the variable to set
   assert.equal(firefox('linux', DEBIAN), 'sudo apt-get update && sudo apt-get install -y firefox-esr');
   assert.equal(firefox('linux', FEDORA), 'sudo dnf install -y firefox');
   assert.equal(firefox('darwin', ''), 'brew install --cask firefox');
-  assert.equal(firefox('win32', ''), 'winget install Mozilla.Firefox');
+  assert.equal(firefox('win32', ''), 'winget install -e --id Mozilla.Firefox');
   assert.equal(installCommand('chromium', { platform: 'linux', osRelease: DEBIAN }).root, 'apt-get update && apt-get install -y chromium');
   assert.equal(installCommand('chromium', { platform: 'linux', osRelease: FEDORA }).root, null);
   assert.deepEqual([DEBIAN, UBUNTU, FEDORA, ARCH, MINT, 'ID=rocky\nID_LIKE="rhel centos fedora"', 'ID=gentoo'].map(linuxFamily), ['debian', 'ubuntu', 'fedora', 'arch', 'ubuntu', 'fedora', null]);
