@@ -1,12 +1,22 @@
-// Shared by the command-line tools: Debian's Chromium with the flags this machine needs, and the
-// site's static server on a free loopback port.
+// Shared by the command-line tools: the machine's Chromium (grader/node/find-browser.js: Debian's
+// on this one) with the flags a machine without a GPU needs, and the site's static server on a free
+// loopback port.
 import { spawn } from 'node:child_process';
-import { existsSync, readFileSync } from 'node:fs';
+import { readFileSync } from 'node:fs';
 import net from 'node:net';
 import { fileURLToPath } from 'node:url';
 import { chromium } from '@playwright/test';
+import { findHere } from '../grader/node/find-browser.js';
 
-export const CHROMIUM = process.env.CHROMIUM_PATH || '/usr/bin/chromium';
+const FOUND = findHere('chromium');
+/** The Chromium (or Chrome, or Edge) to drive, or null when the machine has none (CHROMIUM_MISSING says what to run). */
+export const CHROMIUM = FOUND.found ? FOUND.path : null;
+/** Why there is no CHROMIUM, with the one command that installs one on this OS (null when there is one). */
+export const CHROMIUM_MISSING = FOUND.found ? null : FOUND.message;
+/** The one command that installs a Chromium (or Chrome) on this OS. */
+export const CHROMIUM_INSTALL = FOUND.install.line;
+/** Which rule found CHROMIUM (CHROMIUM_PATH, PATH, the usual install, Playwright's cache). */
+export const CHROMIUM_HOW = FOUND.found ? FOUND.how : null;
 // (--disable-gpu-compositing: the page is composited on the CPU, not through SwiftShader's GL; the
 // canvases still draw with SwiftShader, the screenshots and captures are the same pixels, and each
 // frame costs less: foundation and lighting specs 3m11 → 2m34, a class graded 2m57 → 2m35)
@@ -28,9 +38,7 @@ export async function canvasScreenshot(page) {
 
 /** Launches Chromium, or throws an Error saying how to install it. */
 export async function launchChromium(options = {}) {
-  if (!existsSync(CHROMIUM)) {
-    throw new Error(`Chromium is missing at ${CHROMIUM}: run "sudo apt-get update && sudo apt-get install -y chromium" (or set CHROMIUM_PATH)`);
-  }
+  if (!CHROMIUM) throw new Error(CHROMIUM_MISSING);
   return chromium.launch({ executablePath: CHROMIUM, args: CHROMIUM_ARGS, ...options });
 }
 

@@ -1,14 +1,17 @@
-// Debian's Firefox ESR, driven by puppeteer-core over WebDriver BiDi (Playwright cannot drive
-// Debian's Firefox): where it is, the one line that installs it, and how to launch it so that
-// headless WebGL works on a machine without a GPU (Mesa's llvmpipe through EGL, in the content
+// The machine's Firefox (grader/node/find-browser.js: Debian's Firefox ESR on this one), driven by
+// puppeteer-core over WebDriver BiDi (Playwright cannot drive a stock Firefox): how to launch it so
+// that headless WebGL works on a machine without a GPU (Mesa's llvmpipe through EGL, in the content
 // process). Never downloads a browser.
-import { existsSync } from 'node:fs';
 import puppeteer from 'puppeteer-core';
+import { findHere } from '../grader/node/find-browser.js';
 
-export const FIREFOX = process.env.FIREFOX_PATH || '/usr/bin/firefox-esr';
-
-/** The line that installs Debian's Firefox ESR (tools/setup.js runs it as root, or prints it). */
-export const FIREFOX_INSTALL = 'apt-get update && apt-get install -y firefox-esr';
+const FOUND = findHere('firefox');
+/** The Firefox to drive, or null when the machine has none (FIREFOX_MISSING says what to run). */
+export const FIREFOX = FOUND.found ? FOUND.path : null;
+/** Why there is no FIREFOX, with the one command that installs it on this OS (null when there is one). */
+export const FIREFOX_MISSING = FOUND.found ? null : FOUND.message;
+/** The one command that installs Firefox on this OS. */
+export const FIREFOX_INSTALL = FOUND.install.line;
 
 // Headless Firefox has no compositor GPU: EGL on Mesa's software rasteriser gives it WebGL 1 and 2
 const FIREFOX_ENV = { MOZ_WEBGL_FORCE_EGL: '1', LIBGL_ALWAYS_SOFTWARE: '1' };
@@ -27,9 +30,7 @@ const FIREFOX_PREFS = {
  * @returns {Promise<import('puppeteer-core').Browser>}
  */
 export async function launchFirefox(options = {}) {
-  if (!existsSync(FIREFOX)) {
-    throw new Error(`Firefox is missing at ${FIREFOX}: run "sudo ${FIREFOX_INSTALL}" (or set FIREFOX_PATH)`);
-  }
+  if (!FIREFOX) throw new Error(FIREFOX_MISSING);
   const { env, extraPrefsFirefox, ...rest } = options;
   return puppeteer.launch({
     browser: 'firefox',

@@ -1,12 +1,14 @@
 #!/usr/bin/env node
 // Makes a fresh machine ready for `npm start`, `npm test`, `npm run grade` and `npm run bench`: installs the npm packages if they are
-// missing, and checks for Debian's Chromium, and with --firefox Firefox ESR too (installing them with
-// apt-get when we are root, else printing the one line to run).
+// missing, and checks for a Chromium (or Chrome, or Edge), and with --firefox a Firefox too, as
+// grader/node/find-browser.js finds them (installing Debian's with apt-get when we are root on Debian
+// or Ubuntu, else printing the one line to run for this OS).
 // Runs before each of them (npm's pre-scripts); uses only Node's own modules.
 import { existsSync } from 'node:fs';
 import { spawnSync } from 'node:child_process';
 import { fileURLToPath } from 'node:url';
 import path from 'node:path';
+import { ENV_VAR, findHere } from '../grader/node/find-browser.js';
 
 const root = path.dirname(path.dirname(fileURLToPath(import.meta.url)));
 const args = process.argv.slice(2);
@@ -14,9 +16,11 @@ if (args.includes('--help')) {
   console.log(`usage: node tools/setup.js [--no-browser | --firefox]
 Installs what npm start / test / run grade / run bench need on a fresh machine:
   - the npm packages (npm ci) when node_modules is missing or stale
-  - Debian's chromium (apt-get) when /usr/bin/chromium is missing, and with --firefox Debian's
-    firefox-esr when /usr/bin/firefox-esr is missing: as root it installs them, otherwise it
-    prints the one line to run
+  - a browser: Chromium, Google Chrome or Microsoft Edge, and with --firefox Firefox too, found
+    in this order: CHROMIUM_PATH / FIREFOX_PATH, PATH and the usual installs of this OS (Debian's
+    /usr/bin/chromium and /usr/bin/firefox-esr here), Playwright's browser cache. None found: as
+    root on Debian or Ubuntu it installs one with apt-get, otherwise it prints the one command
+    for this OS (apt-get, dnf, pacman, brew, winget). It never downloads a browser itself.
 --no-browser   skip the browser check (npm start only needs the packages)
 --firefox      check for Firefox too (npm test drives both browsers)
 exit codes: 0 ready, 1 something is missing that this script could not install`);
@@ -37,30 +41,29 @@ if (!existsSync(marker)) {
   }
 }
 
-// The browsers npm test drives, each a Debian package: Chromium (Playwright) and Firefox ESR
-// (puppeteer-core, tools/firefox.js)
-const BROWSERS = [
-  { name: 'Chromium', path: process.env.CHROMIUM_PATH || '/usr/bin/chromium', pkg: 'chromium', env: 'CHROMIUM_PATH' },
-  { name: 'Firefox', path: process.env.FIREFOX_PATH || '/usr/bin/firefox-esr', pkg: 'firefox-esr', env: 'FIREFOX_PATH' },
-];
-const wanted = args.includes('--no-browser') ? [] : args.includes('--firefox') ? BROWSERS : BROWSERS.slice(0, 1);
-const missing = wanted.filter((b) => !existsSync(b.path));
-if (missing.length > 0) {
-  const packages = missing.map((b) => b.pkg).join(' ');
-  const install = `apt-get update && apt-get install -y ${packages}`;
-  const sudoInstall = `sudo apt-get update && sudo apt-get install -y ${packages}`;
-  const names = missing.map((b) => b.name).join(' and ');
+// The browsers npm test drives, found as grader/node/find-browser.js finds them (CHROMIUM_PATH,
+// FIREFOX_PATH, the usual installs of this OS, Playwright's cache): Chromium (Playwright) and
+// Firefox (puppeteer-core, tools/firefox.js)
+const wanted = args.includes('--no-browser') ? [] : args.includes('--firefox') ? ['chromium', 'firefox'] : ['chromium'];
+const missing = () => wanted.map((kind) => ({ kind, ...findHere(kind) })).filter((b) => !b.found);
+const lacking = missing();
+if (lacking.length > 0) {
   const isRoot = typeof process.getuid === 'function' && process.getuid() === 0;
-  if (isRoot && existsSync('/usr/bin/apt-get')) {
-    console.log(`setup: ${names} ${missing.length > 1 ? 'are' : 'is'} missing: installing Debian's ${packages} (${install}) ...`);
-    if (!run('sh', ['-c', `DEBIAN_FRONTEND=noninteractive ${install}`]) || !missing.every((b) => existsSync(b.path))) {
-      console.error(`setup: installing ${packages} failed; run: ${sudoInstall}`);
-      process.exit(1);
+  // as root on Debian or Ubuntu, apt installs them (not when the finder is told to look elsewhere:
+  // BROWSER_FINDER_ROOT, for tests, hides what apt would install)
+  const canInstall = isRoot && !process.env.BROWSER_FINDER_ROOT && lacking.every((b) => b.install.root && !process.env[ENV_VAR[b.kind]]);
+  if (canInstall) {
+    for (const b of lacking) {
+      console.log(`setup: no ${b.kind} found: installing it (${b.install.root}) ...`);
+      if (!run('sh', ['-c', `DEBIAN_FRONTEND=noninteractive ${b.install.root}`])) {
+        console.error(`setup: installing ${b.kind} failed; run: ${b.install.line}`);
+        process.exit(1);
+      }
     }
-  } else {
-    const where = missing.map((b) => `${b.name} at ${b.path}`).join(' and ');
-    const vars = missing.map((b) => b.env).join(' or ');
-    console.error(`setup: the browser tests need Debian's ${where}. Run first:\n  ${sudoInstall}\n(or set ${vars} to another build)`);
+  }
+  const still = canInstall ? missing() : lacking;
+  if (still.length > 0) {
+    for (const b of still) console.error(`setup: ${b.message}`);
     process.exit(1);
   }
 }

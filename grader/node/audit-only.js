@@ -7,6 +7,7 @@ import path from 'node:path';
 import { auditDirs } from './audit-pool.js';
 import { applyAudit } from './part-result.js';
 import { PARTS } from './parts.js';
+import { hrefOf } from './layout.js';
 
 /** Re-judges every part under `out` that has an artifact; `progress(done, total)`. Returns { audited, without }. */
 export async function auditAgain(out, rubric, progress = () => {}) {
@@ -24,8 +25,7 @@ export async function auditAgain(out, rubric, progress = () => {}) {
       if (result.status !== 'missing') without.push(`${result.name} ${x.part}`);
       continue;
     }
-    const rel = path.relative(out, artifactDir(x)).split(path.sep).join('/');
-    applyAudit(result, j, Object.fromEntries(Object.entries(j.files).map(([name, f]) => [name, `${rel}/${f}`])));
+    applyAudit(result, j, Object.fromEntries(Object.entries(j.files).map(([name, f]) => [name, hrefOf(out, path.join(artifactDir(x), f))])));
     writeFileSync(x.file, JSON.stringify(result, null, 1));
     audited++;
   }

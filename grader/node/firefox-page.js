@@ -9,7 +9,7 @@ import { instrumentScript } from '../browser/instrument.js';
 import { geometryInit } from '../browser/geometry.js';
 import { sentScript } from '../browser/sent.js';
 import { frameClockScript } from '../browser/clock.js';
-import { submissionAnswers } from './serve-submission.js';
+import { submissionAnswers, urlOf } from './serve-submission.js';
 import { FROZEN, pageDriver } from './playwright-page.js';
 
 /**
@@ -66,7 +66,7 @@ export function firefoxOpener(browser, host) {
       await page.evaluateOnNewDocument(geometryInit);
       await page.evaluateOnNewDocument(sentScript);
       await page.evaluateOnNewDocument(frameClockScript, FROZEN.getTime());
-      const url = `${site.origin}/${rel.split(/[\\/]/).map(encodeURIComponent).join('/')}${query ? `?${query}` : ''}`;
+      const url = urlOf(site.origin, root, rel, query).href;
       let response;
       try {
         response = await page.goto(url, { waitUntil: 'load', timeout: loadSeconds * 1000 });

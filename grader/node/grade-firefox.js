@@ -9,6 +9,7 @@ import { fileURLToPath } from 'node:url';
 import { launchFirefox } from '../../tools/firefox.js';
 import { firefoxOpener } from './firefox-page.js';
 import { runPart } from './run-part.js';
+import { browserLabel } from './browser-version.js';
 
 // nothing leaves the page but through the grader's serving (firefox-page.js): a request it does not
 // see (a popup's, a worker's) goes to a proxy that is not there; and no favicon is asked for (Chromium's
@@ -33,7 +34,7 @@ export async function gradeInFirefox(plan, { workers = 2, say = console.log } = 
   const total = queue.length;
   let graded = 0, timedOut = 0;
   const worker = async () => {
-    let browser = null, openers = null;
+    let browser = null, openers = null, browserVersion = null;
     const end = async () => {
       const b = browser;
       browser = openers = null;
@@ -47,10 +48,11 @@ export async function gradeInFirefox(plan, { workers = 2, say = console.log } = 
         if (!browser && item.page) {
           browser = await launchFirefox({ extraPrefsFirefox: NO_NETWORK, protocolTimeout: 1000 * (plan.timeoutSeconds + plan.referenceSeconds + 60) });
           openers = { student: firefoxOpener(browser, 'submission.localhost'), reference: firefoxOpener(browser, 'reference.localhost') };
+          browserVersion = browserLabel(plan.browserName || 'Firefox', await browser.version().catch(() => ''));
         }
         const started = Date.now();
         let limit = plan.timeoutSeconds * 1000, over = false;
-        const running = runPart({ item, plan, openers, more: (seconds) => { limit += seconds * 1000; }, over: () => over })
+        const running = runPart({ item, plan, openers, browserVersion: item.page ? browserVersion : null, more: (seconds) => { limit += seconds * 1000; }, over: () => over })
           .then(() => 'done', (err) => err);
         let how;
         while (!(how = await Promise.race([running, sleep(250).then(() => null)]))) {

@@ -7,10 +7,12 @@ import path from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { PARTS, findParts } from './parts.js';
 import { readLabels, agreementText } from './labels.js';
-import { writeReport, safeName } from './report.js';
+import { writeReport } from './report.js';
+import { partFiles } from './layout.js';
 import { mergeRubric } from '../core/rubric.js';
-import { CHROMIUM } from '../../tools/browser.js';
-import { FIREFOX } from '../../tools/firefox.js';
+import { CHROMIUM, CHROMIUM_HOW, CHROMIUM_INSTALL, CHROMIUM_MISSING } from '../../tools/browser.js';
+import { FIREFOX, FIREFOX_INSTALL, FIREFOX_MISSING } from '../../tools/firefox.js';
+import { versionOfExecutable, nameOfVersionLine } from './browser-version.js';
 import { gradeInFirefox } from './grade-firefox.js';
 import { auditAgain } from './audit-only.js';
 import { runSimilarity, writeSimilarityReport, SIMILARITY_HELP, parseBound } from '../similarity/run.js';
@@ -22,11 +24,13 @@ const REFERENCE_SECONDS = 30;
 const HELP = `usage: npm run grade -- <submission-folder> [--part WP04P1=<path to html>]... [--rubric <file>] [--out <dir>]
        npm run grade -- --batch <folder with one submission per subfolder> [--rubric <file>] [--out <dir>]
 Opens each part (WP04P1 ... WP04P5, found by folder or file name: WP04P1, Part1, p01, w4p1,
-week04p01, ...) in Chromium (WebGL or WebGPU) with time frozen, finds its controls, stops the
+week04p01, ...) in Chromium, Chrome or Edge (WebGL or WebGPU) with time frozen, finds its controls, stops the
 orbit, subdivides until the silhouette settles, and gives each part a verdict (pass, review,
 fail) with reasons, from what the slide's step asks for. Our reference part is drawn beside it.
-  --browser B       chromium (the default: WebGL and WebGPU) or firefox (Debian's Firefox ESR,
-                    ${FIREFOX}: WebGL only; a WebGPU part is "not graded here", never failed)
+  --browser B       chromium (the default: WebGL and WebGPU) or firefox (WebGL only; a WebGPU part
+                    is "not graded here", never failed): the machine's own browser, never a
+                    downloaded one (CHROMIUM_PATH, FIREFOX_PATH choose another; the browsers here
+                    are named below, and the report names the one that graded, with its version)
   --part P=FILE     use FILE (relative to the submission) for part P
   --rubric FILE     a rubric in place of grader/core/rubric.json (copy that file and edit it: time bounds,
                     thresholds, control patterns, what each part must show)
@@ -44,7 +48,17 @@ fail) with reasons, from what the slide's step asks for. Our reference part is d
                     every disagreement with both sides' reasons (correct → pass, partial → review,
                     broken → fail)
 ${SIMILARITY_HELP}
-exit codes: 0 it ran (whatever the verdicts), 1 it could not run, 2 bad usage`;
+exit codes: 0 it ran (whatever the verdicts), 1 it could not run (no browser: it says the command that
+installs one), 2 bad usage`;
+
+/** The browsers this machine would grade in, for --help: name, version and where, or how to install one. */
+function browsersHere() {
+  const line = (title, file, install) => {
+    if (!file) return `  ${title}: none found; install one with: ${install}`;
+    return `  ${title}: ${versionOfExecutable(file) || '(its --version says nothing)'} at ${file}`;
+  };
+  return `browsers on this machine (the report names the one that graded):\n${line('chromium', CHROMIUM, CHROMIUM_INSTALL)}\n${line('firefox', FIREFOX, FIREFOX_INSTALL)}`;
+}
 
 function fail(message, code = 1) {
   console.error(`grade: ${message}`);
@@ -56,7 +70,7 @@ function parseArgs(argv) {
   for (let k = 0; k < argv.length; k++) {
     const a = argv[k];
     const next = () => (k + 1 < argv.length ? argv[++k] : fail(`${a} needs a value\n\n${HELP}`, 2));
-    if (a === '--help' || a === '-h') { console.log(HELP); process.exit(0); }
+    if (a === '--help' || a === '-h') { console.log(`${HELP}\n${browsersHere()}`); process.exit(0); }
     else if (a === '--batch') o.batch = next();
     else if (a === '--rubric') o.rubric = next();
     else if (a === '--out') o.out = next();
@@ -131,16 +145,18 @@ async function main() {
     console.log(`\rgrade: audited ${audited} parts from their artifacts in ${((Date.now() - t0) / 1000).toFixed(1)} s${without.length ? `; ${without.length} without an artifact kept their verdict (${without.join(', ')})` : ''}`);
   } else if (!o.reportOnly && !o.similarityOnly) {
     const browser = o.browser || 'chromium';
-    if (browser === 'firefox' && !existsSync(FIREFOX)) fail(`Firefox ESR is missing at ${FIREFOX}: run "sudo apt-get install -y firefox-esr" (or set FIREFOX_PATH), or grade in Chromium without --browser firefox`);
-    if (browser === 'chromium' && !existsSync(CHROMIUM)) fail(`Chromium is missing at ${CHROMIUM}: run "sudo apt-get update && sudo apt-get install -y chromium"`);
+    if (browser === 'firefox' && !FIREFOX) fail(`${FIREFOX_MISSING}\n(or grade in Chromium: leave out --browser firefox)`);
+    if (browser === 'chromium' && !CHROMIUM) fail(CHROMIUM_MISSING);
+    const executable = browser === 'firefox' ? FIREFOX : CHROMIUM;
+    // the browser's own name ("Chromium", "Google Chrome", "Mozilla Firefox"): the report adds the version that ran
+    const browserName = nameOfVersionLine(versionOfExecutable(executable), browser === 'firefox' ? 'Firefox' : 'Chromium');
     const items = [];
     for (const s of submissions) {
       const parts = findParts(s.root, o.batch ? {} : o.parts);
       for (const part of PARTS) {
         const cfg = rubric.parts[part] || {};
         const page = parts[part] && existsSync(path.join(s.root, parts[part])) ? parts[part] : null;
-        items.push({ name: s.name, part, root: s.root, page, referenceQuery: cfg.referenceQuery || {}, resultFile: path.join(out, 'parts', safeName(s.name), `${part}.json`),
-          artifactDir: path.join(out, 'artifacts', safeName(s.name), part) });
+        items.push({ name: s.name, part, root: s.root, page, referenceQuery: cfg.referenceQuery || {}, ...partFiles(out, s.name, part) });
       }
     }
     // the parts that try the most first (the sliders, then the orbit's), so that the workers end
@@ -148,9 +164,9 @@ async function main() {
     const FIRST = ['WP04P4', 'WP04P3', 'WP04P5', 'WP04P2', 'WP04P1'];
     items.sort((a, b) => FIRST.indexOf(a.part) - FIRST.indexOf(b.part));
     const planFile = path.join(out, 'plan.json');
-    const plan = { repo, out, browser, rubric, timeoutSeconds: rubric.timeoutSeconds, referenceSeconds: REFERENCE_SECONDS, items };
+    const plan = { repo, out, browser, browserName, browserPath: executable, rubric, timeoutSeconds: rubric.timeoutSeconds, referenceSeconds: REFERENCE_SECONDS, items };
     writeFileSync(planFile, JSON.stringify(plan, null, 1));
-    console.log(`grade: ${submissions.length} submission(s), ${items.length} parts in ${browser === 'firefox' ? 'Firefox ESR' : 'Chromium'}; ${o.workers || 2} at a time, at most ${rubric.timeoutSeconds} s for each student page, and ${REFERENCE_SECONDS} s more for our reference`);
+    console.log(`grade: ${submissions.length} submission(s), ${items.length} parts in ${browserName} (${executable}${browser === 'chromium' ? `, found by ${CHROMIUM_HOW}` : ''}); ${o.workers || 2} at a time, at most ${rubric.timeoutSeconds} s for each student page, and ${REFERENCE_SECONDS} s more for our reference`);
     if (browser === 'firefox') {
       // (--shard I/N: every N-th part from the I-th, as a class is split over machines)
       const [i, n] = (o.shard || '1/1').split('/').map(Number);
@@ -207,6 +223,8 @@ async function main() {
     console.log(`${s.name}: ${s.passes} of ${PARTS.length} pass · ` + s.parts.map((p) => `${p.part} ${p.verdict}${p.api ? ` (${p.api})` : ''}`).join(', '));
   }
   if (agreed) for (const line of agreementText(agreed)) console.log(line);
+  const browsers = [...new Set(rows.flatMap((s) => s.parts.map((p) => p.browserVersion).filter(Boolean)))];
+  if (browsers.length) console.log(`grade: graded in ${browsers.join(' and ')}`);
   console.log(`grade: report at ${path.join(out, 'report.html')}`);
 }
 

@@ -6,6 +6,7 @@ import { test } from '@playwright/test';
 import { readFileSync } from 'node:fs';
 import { partOpener } from './playwright-page.js';
 import { runPart } from './run-part.js';
+import { browserLabel } from './browser-version.js';
 
 const plan = JSON.parse(readFileSync(process.env.GRADE_PLAN, 'utf8'));
 
@@ -15,6 +16,6 @@ let openers = null;
 for (const item of plan.items) {
   test(`${item.name} ${item.part}`, async ({ browser }, testInfo) => {
     openers ??= { student: partOpener(browser, 'submission.localhost'), reference: partOpener(browser, 'reference.localhost') };
-    await runPart({ item, plan, openers, more: (seconds) => testInfo.setTimeout(testInfo.timeout + seconds * 1000) });
+    await runPart({ item, plan, openers, browserVersion: item.page ? browserLabel(plan.browserName || 'Chromium', browser.version()) : null, more: (seconds) => testInfo.setTimeout(testInfo.timeout + seconds * 1000) });
   });
 }

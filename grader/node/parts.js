@@ -1,35 +1,49 @@
 // Finding a submission's parts on disk: its HTML pages, walked in sorted order, named as
 // grader/core/part-names.js reads them (the check page reads a dropped folder the same way).
+// A page's path is kept as its folder and file names and written with `path.join` alone (never
+// split or joined on a separator), so that Windows' paths work as POSIX's do: `fs` and `path`
+// may be given (a made-up file system, path.win32) to test that on any machine.
 import { readdirSync, statSync } from 'node:fs';
 import path from 'node:path';
 import { PARTS, partNumber, partsOf } from '../core/part-names.js';
 
 export { PARTS, partNumber };
 
-function htmlFiles(root, dir = '', out = [], depth = 0) {
-  if (depth > 6) return out;
-  let entries;
-  try {
-    entries = readdirSync(path.join(root, dir));
-  } catch {
-    return out;
-  }
-  for (const name of entries.sort()) {
-    if (name.startsWith('.') || name === 'node_modules') continue;
-    const rel = path.join(dir, name);
-    const st = statSync(path.join(root, rel), { throwIfNoEntry: false });
-    if (!st) continue;
-    if (st.isDirectory()) htmlFiles(root, rel, out, depth + 1);
-    else if (/\.html?$/i.test(name)) out.push(rel);
-  }
+const NODE_FS = { readdir: (dir) => readdirSync(dir), isDirectory: (file) => statSync(file, { throwIfNoEntry: false })?.isDirectory() ?? null };
+
+/**
+ * The HTML pages under `root`, each as its names from `root` down ([folder, ..., file]), in the
+ * order a walk of the sorted folders meets them. `fs`: { readdir(dir) → names, isDirectory(file) →
+ * true | false | null (not there) }.
+ */
+export function htmlPages(root, { fs = NODE_FS, pathImpl = path } = {}) {
+  const out = [];
+  const walk = (segments) => {
+    if (segments.length > 6) return; // (folders six deep at most)
+    let names;
+    try {
+      names = fs.readdir(pathImpl.join(root, ...segments));
+    } catch {
+      return;
+    }
+    for (const name of [...names].sort()) {
+      if (name.startsWith('.') || name === 'node_modules') continue;
+      const here = [...segments, name];
+      const dir = fs.isDirectory(pathImpl.join(root, ...here));
+      if (dir === null) continue;
+      if (dir) walk(here);
+      else if (/\.html?$/i.test(name)) out.push(here);
+    }
+  };
+  walk([]);
   return out;
 }
 
 /**
- * The parts of one submission: { WP04P1: 'relative/path.html' | null, ... }.
- * A file's own name decides first (week04p01.html, part1.html); an index.html takes its folder's.
- * `overrides` ({ WP04P1: 'path' }) win.
+ * The parts of one submission: { WP04P1: 'relative/path.html' | null, ... } (relative to `root`,
+ * written with `pathImpl`: Windows' separators there). A file's own name decides first
+ * (week04p01.html, part1.html); an index.html takes its folder's. `overrides` ({ WP04P1: 'path' }) win.
  */
-export function findParts(root, overrides = {}) {
-  return partsOf(htmlFiles(root).map((rel) => rel.split(path.sep)), (segments) => segments.join(path.sep), overrides);
+export function findParts(root, overrides = {}, { fs = NODE_FS, pathImpl = path } = {}) {
+  return partsOf(htmlPages(root, { fs, pathImpl }), (segments) => pathImpl.join(...segments), overrides);
 }

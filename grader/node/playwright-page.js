@@ -10,7 +10,7 @@ import { instrumentScript } from '../browser/instrument.js';
 import { geometryInit } from '../browser/geometry.js';
 import { sentScript } from '../browser/sent.js';
 import { frameClockScript } from '../browser/clock.js';
-import { serveSubmission } from './serve-submission.js';
+import { serveSubmission, urlOf } from './serve-submission.js';
 
 // the time the page sees: frozen, moving only when the grader lets frames run
 export const FROZEN = new Date('2026-01-05T09:00:00Z');
@@ -77,7 +77,7 @@ export function partOpener(browser, host) {
       kept ??= await keep();
       const { page, site } = kept;
       serve(site, root, log);
-      const url = `${site.origin}/${rel.split(/[\\/]/).map(encodeURIComponent).join('/')}${query ? `?${query}` : ''}`;
+      const url = urlOf(site.origin, root, rel, query).href;
       let response;
       try {
         response = await page.goto(url, { waitUntil: 'load', timeout: loadSeconds * 1000 });

@@ -1,6 +1,7 @@
 // The grader's own Playwright Test run: one test per part (grader/node/grade.spec.js), its workers,
 // its --shard for splitting a class over machines, its reporters (blob for merge-reports, list).
-// Chromium gets a SwiftShader WebGPU adapter too: hand-ins come in both APIs.
+// Chromium gets a SwiftShader WebGPU adapter too: hand-ins come in both APIs. The browser is the
+// one grade.js found (the plan's browserPath: grader/node/find-browser.js).
 import { defineConfig } from '@playwright/test';
 import { CHROMIUM, CHROMIUM_ARGS } from '../../tools/browser.js';
 import { WEBGPU_ARGS } from '../browser/webgpu-capture.js';
@@ -19,6 +20,6 @@ export default defineConfig({
   use: {
     deviceScaleFactor: 1,
     viewport: { width: 900, height: 900 },
-    launchOptions: { executablePath: CHROMIUM, args: [...CHROMIUM_ARGS, ...WEBGPU_ARGS] },
+    launchOptions: { executablePath: plan.browserPath || CHROMIUM, args: [...CHROMIUM_ARGS, ...WEBGPU_ARGS] },
   },
 });

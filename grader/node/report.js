@@ -4,13 +4,12 @@
 import { writeFileSync } from 'node:fs';
 import path from 'node:path';
 import { PARTS } from './parts.js';
+import { safeName } from './layout.js';
 import { agreement, agreementHtml } from './labels.js';
 import { NOT_GRADED } from '../core/verdict.js';
 import { similarityJson, similarityBadges, similarityHtml, SIMILARITY_CSS } from '../similarity/run.js';
 
 const esc = (s) => String(s).replace(/[&<>"']/g, (c) => ({ '&': '&amp;', '<': '&lt;', '>': '&gt;', '"': '&quot;', "'": '&#39;' })[c]);
-/** A submission's name as a file or folder name (its parts' pictures are in parts/<safeName>/). */
-export const safeName = (s) => s.replace(/[^A-Za-z0-9._-]+/g, '_');
 
 const VERDICTS = ['pass', 'review', 'fail'];
 /** The passes of a submission, then its reviews (a count a reader can read: more is better). */
@@ -30,7 +29,9 @@ export function writeReport(out, submissions, labels = null, similar = null) {
   const rows = submissions.map((s) => ({ ...s, passes: passes(s.parts), reviews: s.parts.filter((p) => p.verdict === 'review').length }))
     .sort((a, b) => b.passes - a.passes || b.reviews - a.reviews || a.name.localeCompare(b.name));
   const agreed = labels ? agreement(labels, rows) : null;
-  writeFileSync(path.join(out, 'report.json'), JSON.stringify({ generated: new Date().toISOString(), submissions: rows,
+  // the browsers that graded, with their versions (a class graded on two machines may name two)
+  const browsers = [...new Set(rows.flatMap((s) => s.parts.map((p) => p.browserVersion).filter(Boolean)))].sort();
+  writeFileSync(path.join(out, 'report.json'), JSON.stringify({ generated: new Date().toISOString(), browsers, submissions: rows,
     ...(similar ? { similarity: similarityJson(similar) } : {}),
     ...(agreed ? { labels: { ...agreed, rows: agreed.rows.map(({ reasons, ...r }) => ({ ...r, reasons: reasons.filter((x) => /^(FAIL|REVIEW)/.test(x)) })) } } : {}) }, null, 1));
   // (a picture's path is relative to the report: the artifact's files, our reference in parts/)
@@ -44,7 +45,7 @@ export function writeReport(out, submissions, labels = null, similar = null) {
     }).join('') + '</tr>').join('\n');
   const list = (title, items, cls) => (items && items.length ? `<p>${title}</p><ul class="${cls}">${items.map((e) => `<li>${esc(e)}</li>`).join('')}</ul>` : '');
   const details = rows.map((s) => `<section id="${esc(safeName(s.name))}"><h2>${esc(s.name)} · ${s.passes} of ${PARTS.length} pass</h2>` +
-    s.parts.map((r) => `<div class="part" id="${esc(anchor(s, r))}"><h3>${r.part} ${badge(r.verdict)} <small>${esc(r.api || 'no API')}${r.browser ? ` in ${esc(r.browser)}` : ''} · ${esc(r.status)}${r.seconds ? ` · ${r.seconds.toFixed(0)} s` : ''}</small></h3>` +
+    s.parts.map((r) => `<div class="part" id="${esc(anchor(s, r))}"><h3>${r.part} ${badge(r.verdict)} <small>${esc(r.api || 'no API')}${r.browserVersion || r.browser ? ` in ${esc(r.browserVersion || r.browser)}` : ''} · ${esc(r.status)}${r.seconds ? ` · ${r.seconds.toFixed(0)} s` : ''}</small></h3>` +
       `<p class="file">${r.file ? esc(r.file) : 'no file'}</p>` +
       list('Reasons:', r.reasons, 'reasons') +
       (r.images ? `<div class="images">${['first', 'coarse', 'highlightPlace', 'leastS', 'unclipped', 'brightened', 'judged', 'reference', 'diff'].filter((k) => r.images[k]).map((k) => `<figure>${img(s, r, k)}<figcaption>${{ first: 'first frame', coarse: 'a coarse level', highlightPlace: 'the highlight, the light away from the viewer', leastS: 's at its least', unclipped: 'its own sliders lowered (it clipped to white)', brightened: 'its own light raised (it was too dim)', judged: 'judged (submission)', reference: 'our reference', diff: 'difference' }[k]}</figcaption></figure>`).join('')}</div>` : '') +
@@ -79,6 +80,7 @@ th[data-sort]{cursor:pointer;text-decoration:underline dotted}.num{text-align:ri
 changing, and judged the picture by what the slide's step asks for (a round sphere; normals as colours; diffuse shading for a
 fitted light; a highlight; sliders on the input event; shading per fragment). Verdicts: pass, review (a teacher should look),
 fail. Click a cell for its reasons and pictures; click a column head to sort.</p>
+<p class="browsers">Graded in ${browsers.length ? browsers.map(esc).join(' and ') : 'a browser that did not say its version (graded before the report named it)'}.</p>
 <table id="grid"><thead><tr><th data-sort="name">submission</th><th data-sort="passes">passes</th>${PARTS.map((p, i) => `<th data-sort="${i + 2}">${p}</th>`).join('')}</tr></thead>
 <tbody>
 ${grid}

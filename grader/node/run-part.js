@@ -9,6 +9,7 @@ import path from 'node:path';
 import { PNG } from 'pngjs';
 import { compareImages } from './compare.js';
 import { writeArtifact, pngOf } from './artifacts.js';
+import { hrefOf } from './layout.js';
 import { applyAudit } from './part-result.js';
 import { NOT_GRADED, tooSlowWords } from '../core/verdict.js';
 import { FIRST_FRAME } from '../core/gather/index.js';
@@ -22,9 +23,9 @@ const CLOSED = /Test ended|Target page, context or browser has been closed/;
  * Grades `item` of `plan` with `openers` ({ student, reference }): writes item.resultFile (first
  * as a timeout, which stays if the part's time bound stops it) and item.artifactDir. `more(seconds)`
  * asks for more time for our reference; `over()` says the time bound has stopped the part (nothing
- * is written after that).
+ * is written after that). `browserVersion` ("Chromium 156.0.8078.108") names the browser that grades it.
  */
-export async function runPart({ item, plan, openers, more = () => {}, over = () => false }) {
+export async function runPart({ item, plan, openers, browserVersion = null, more = () => {}, over = () => false }) {
   const rubric = plan.rubric;
   const save = (result) => {
     if (over()) return;
@@ -34,7 +35,7 @@ export async function runPart({ item, plan, openers, more = () => {}, over = () 
   const result = { name: item.name, part: item.part, file: item.page, status: 'timeout', verdict: 'fail', api: null,
     reasons: [`the page did not finish within the rubric's bound of ${rubric.timeoutSeconds} s (it never returns, or is far too slow)`], actions: [], controls: {},
     numbers: {}, mismatch: null, rmse: null, pass: false, comparison: null, notes: [], errors: [], blocked: [], images: null,
-    ...(plan.browser && plan.browser !== 'chromium' ? { browser: plan.browser } : {}) };
+    ...(plan.browser && plan.browser !== 'chromium' ? { browser: plan.browser } : {}), ...(browserVersion ? { browserVersion } : {}) };
   save(result); // what stays if the page never lets go: a timeout
   if (!item.page) {
     Object.assign(result, { status: 'missing', reasons: [`no page for ${item.part} was found in the submission`] });
@@ -71,8 +72,7 @@ export async function runPart({ item, plan, openers, more = () => {}, over = () 
       const { facts, images } = graded.artifact;
       if (over()) return;
       const saved = writeArtifact(item.artifactDir, { facts: { ...facts, blocked: result.blocked, notes: result.notes }, images });
-      const rel = path.relative(plan.out, item.artifactDir).split(path.sep).join('/');
-      for (const [name, file] of Object.entries(saved)) files[name] = `${rel}/${file}`;
+      for (const [name, file] of Object.entries(saved)) files[name] = hrefOf(plan.out, path.join(item.artifactDir, file));
       phase('write', t0);
     }
     clean = true;
@@ -100,7 +100,6 @@ export async function runPart({ item, plan, openers, more = () => {}, over = () 
 async function drawReference({ item, plan, openers, result, graded }) {
   const dir = path.dirname(item.resultFile);
   const stem = path.basename(item.resultFile, '.json');
-  const relDir = path.relative(plan.out, dir).split(path.sep).join('/');
   const refLog = { errors: [], blocked: [], notes: [] };
   const query = referenceQuery(graded.images.judged, result.numbers, plan.rubric.thresholds, item.referenceQuery);
   let ref = null;
@@ -124,6 +123,6 @@ async function drawReference({ item, plan, openers, result, graded }) {
     result.notes.push(...cmp.notes, `the reference is our page at the same canvas size${result.referenceState && result.referenceState.light ? ', lit from the fitted light' : ''}; the difference is evidence, the verdict comes from the checks`);
     writeFileSync(path.join(dir, `${stem}-reference.png`), PNG.sync.write(cmp.reference));
     writeFileSync(path.join(dir, `${stem}-diff.png`), PNG.sync.write(cmp.diff));
-    Object.assign(result.images, { reference: `${relDir}/${stem}-reference.png`, diff: `${relDir}/${stem}-diff.png` });
+    Object.assign(result.images, { reference: hrefOf(plan.out, path.join(dir, `${stem}-reference.png`)), diff: hrefOf(plan.out, path.join(dir, `${stem}-diff.png`)) });
   } else if (ref) result.notes.push(`our reference drew ${ref.width}×${ref.height}, not ${width}×${height}: not compared`);
 }

@@ -4,22 +4,61 @@
 // listed; a file not where the page asks is looked for by findStandIn (standin.js) and said.
 import { readFileSync, readdirSync, statSync } from 'node:fs';
 import path from 'node:path';
+import { fileURLToPath, pathToFileURL } from 'node:url';
 import { findStandIn, typeOf } from '../core/standin.js';
 
-/** Every file under `root` (relative paths, '/'-separated), up to a depth and a count. */
-export function filesUnder(root, dir = '', out = [], depth = 0) {
-  if (depth > 8 || out.length > 5000) return out;
+// Between a submission's files and the URLs its pages ask for, paths are turned into URLs and back
+// by Node's url module (file: URLs of the root and the file), never by splitting or joining strings
+// on a separator: the same on Windows (path.win32, C:\\...) as on POSIX. `pathImpl` is Node's
+// path of this machine, or the other one's in tests.
+const fileUrl = (file, pathImpl) => pathToFileURL(file, { windows: pathImpl === path.win32 });
+const rootUrl = (root, pathImpl) => fileUrl(pathImpl.join(root, pathImpl.sep), pathImpl);
+
+/**
+ * The URL of `rel` (a path relative to `root`, as findParts gives it) on a submission's `origin`,
+ * with `query` ('a=1&b=2') if given.
+ */
+export function urlOf(origin, root, rel, query = '', pathImpl = path) {
+  const base = rootUrl(root, pathImpl);
+  const file = fileUrl(pathImpl.join(root, rel), pathImpl);
+  // (the file's URL below its root's: the same percent-encoding for spaces, æøå, # and ?)
+  const url = new URL(`.${file.pathname.slice(base.pathname.length - 1)}`, new URL('/', origin));
+  url.search = query;
+  return url;
+}
+
+/**
+ * The file under `root` that a request for `href` stands for, or null when it is outside the
+ * submission or no file name (an encoded separator: %2F, or %5C on Windows).
+ */
+export function fileOf(root, href, pathImpl = path) {
+  let file;
+  try {
+    file = fileURLToPath(new URL(`.${new URL(href).pathname}`, rootUrl(root, pathImpl)), { windows: pathImpl === path.win32 });
+  } catch {
+    return null;
+  }
+  const inside = pathImpl.relative(pathImpl.resolve(root), file);
+  if (inside === '..' || inside.startsWith(`..${pathImpl.sep}`) || pathImpl.isAbsolute(inside)) return null;
+  return file;
+}
+
+/**
+ * Every file under `root`, each as its names from `root` down ([folder, ..., file]), up to a
+ * depth and a count.
+ */
+export function filesUnder(root, segments = [], out = [], pathImpl = path) {
+  if (segments.length > 8 || out.length > 5000) return out;
   let names;
   try {
-    names = readdirSync(path.join(root, dir), { withFileTypes: true });
+    names = readdirSync(pathImpl.join(root, ...segments), { withFileTypes: true });
   } catch {
     return out;
   }
   for (const d of names) {
     if (d.name.startsWith('.') || d.name === 'node_modules') continue;
-    const rel = dir ? `${dir}/${d.name}` : d.name;
-    if (d.isDirectory()) filesUnder(root, rel, out, depth + 1);
-    else out.push(rel);
+    if (d.isDirectory()) filesUnder(root, [...segments, d.name], out, pathImpl);
+    else out.push([...segments, d.name]);
   }
   return out;
 }
@@ -53,8 +92,8 @@ export function submissionAnswers(site) {
     } catch {
       return { status: 400, body: 'bad path' };
     }
-    let file = path.resolve(root, `.${rel}`);
-    if (file !== root && !file.startsWith(root + path.sep)) {
+    let file = fileOf(root, url.href);
+    if (!file) {
       log.blocked.push(`outside the submission: ${rel}`);
       return { status: 403, body: 'outside the submission' };
     }
@@ -64,12 +103,14 @@ export function submissionAnswers(site) {
     try {
       body = readFileSync(file);
     } catch {
-      const standIn = findStandIn(rel, () => (files ??= filesUnder(root)));
+      // (findStandIn compares paths as the page asks for them: names joined by '/', a URL's path)
+      files ??= new Map(filesUnder(root).map((names) => [names.join('/'), names]));
+      const standIn = findStandIn(rel, () => [...files.keys()]);
       if (!standIn) {
         log.errors.push(`missing file: ${rel}`);
         return { status: 404, body: 'not found' };
       }
-      file = path.join(root, standIn);
+      file = path.join(root, ...files.get(standIn));
       body = readFileSync(file);
       log.notes.push(`served ${standIn} for ${rel}, which is not in the submission as written (letter case, or a folder above the submission)`);
     }

@@ -5,12 +5,11 @@ import { createHash } from 'node:crypto';
 import { existsSync, readFileSync } from 'node:fs';
 import path from 'node:path';
 import { PNG } from 'pngjs';
-
-const safeName = (s) => s.replace(/[^A-Za-z0-9._-]+/g, '_');
+import { partFiles } from '../node/layout.js';
 
 /** The judged picture of a hand-in's part in a grading out folder (its artifact: grader/node/artifacts.js), or null. */
 export function judgedPicture(out, name, part) {
-  const dir = path.join(out, 'artifacts', safeName(name), part);
+  const dir = partFiles(out, name, part).artifactDir;
   try {
     const facts = JSON.parse(readFileSync(path.join(dir, 'facts.json'), 'utf8'));
     const file = facts.files && facts.files[facts.facesImage || facts.judged];

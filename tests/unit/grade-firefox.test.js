@@ -3,6 +3,7 @@
 // that --audit-only says it again; the labels' agreement and the report count it as not graded,
 // not as a disagreement; the command's --browser option. (tests/browser/grade-firefox.spec.js
 // grades in Firefox itself.)
+import { fileURLToPath } from 'node:url';
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { spawnSync } from 'node:child_process';
@@ -17,7 +18,7 @@ import { parseLabels, agreement, agreementText } from '../../grader/node/labels.
 import { writeReport } from '../../grader/node/report.js';
 
 const rubric = JSON.parse(readFileSync(new URL('../../grader/core/rubric.json', import.meta.url), 'utf8'));
-const RECORDED = new URL('../fixtures/artifacts/', import.meta.url).pathname;
+const RECORDED = fileURLToPath(new URL('../fixtures/artifacts/', import.meta.url));
 
 /** The artifact of a WebGPU page in a browser without WebGPU: it asked, got no context, threw, drew nothing. */
 function webgpuInFirefox(webgpuMissing = true) {
@@ -85,5 +86,6 @@ test('--browser: chromium or firefox (2 on anything else); Firefox missing says 
   const out = mkdtempSync(path.join(os.tmpdir(), 'no-firefox-'));
   const missing = grade(['--browser', 'firefox', 'tests/fixtures/handins/anna', '--out', out], { FIREFOX_PATH: '/nonexistent/firefox-esr' });
   assert.equal(missing.status, 1);
-  assert.match(missing.stderr, /Firefox ESR is missing at \/nonexistent\/firefox-esr: run "sudo apt-get install -y firefox-esr"/);
+  assert.match(missing.stderr, /Firefox is not at \/nonexistent\/firefox-esr \(FIREFOX_PATH\): set FIREFOX_PATH to a browser's executable, or unset it and install one: sudo apt-get update && sudo apt-get install -y firefox-esr/);
+  assert.match(missing.stderr, /or grade in Chromium/);
 });

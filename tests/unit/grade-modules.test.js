@@ -1,5 +1,6 @@
 // The grader's modules without a browser: finding parts, stand-in files, sorting a control by its
 // effect on pictures, verdicts and reasons from findings, and a teacher's labels against verdicts.
+import { fileURLToPath } from 'node:url';
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { partNumber } from '../../grader/node/parts.js';
@@ -71,7 +72,7 @@ test('a file asked for in other letter case or one folder too far up is found in
 });
 
 test('a kept context serves the part open now: its folder at its origin, an empty page between parts, the parts before refused silently', async () => {
-  const handins = new URL('../fixtures/handins/', import.meta.url).pathname;
+  const handins = fileURLToPath(new URL('../fixtures/handins/', import.meta.url));
   const site = { root: `${handins}anna`, origin: 'http://p1.submission.localhost', log: { errors: [], blocked: [], notes: [] }, former: new Set() };
   let handler = null;
   await serveSubmission({ route: async (pattern, h) => { handler = h; } }, site);

@@ -1,0 +1,38 @@
+// Where a grading run puts a part's files in its out folder (parts/<safe name>/<part>.json and the
+// pictures beside it, artifacts/<safe name>/<part>/), and how report.html links to them. Paths
+// are built with `path.join` and links with file: URLs (Node's url module), never by splitting or
+// joining on a separator, so that Windows' out folders work as POSIX's; `pathImpl` is Node's path
+// of this machine, or the other one's in tests.
+import path from 'node:path';
+import { pathToFileURL } from 'node:url';
+
+// names Windows keeps for devices, in any letter case and with any extension ("con.txt" too)
+const RESERVED = /^(con|prn|aux|nul|com[0-9¹²³]|lpt[0-9¹²³])(\.|$)/i;
+
+/**
+ * A submission's name as a file or folder name on any OS: its letters (æøå too) and digits, '.',
+ * '-' and '_' kept, every other run of characters '_'; never '.', '..', hidden, ending in '.' or a
+ * Windows device name ("CON").
+ */
+export function safeName(name) {
+  let s = String(name).normalize('NFC').replace(/[^\p{L}\p{N}._-]+/gu, '_').replace(/^\.+/, (dots) => '_'.repeat(dots.length)).replace(/\.+$/, '');
+  if (!s) s = '_';
+  return RESERVED.test(s) ? `_${s}` : s;
+}
+
+/** The files of submission `name`'s `part` in `out`: { resultFile, artifactDir }. */
+export function partFiles(out, name, part, pathImpl = path) {
+  return {
+    resultFile: pathImpl.join(out, 'parts', safeName(name), `${part}.json`),
+    artifactDir: pathImpl.join(out, 'artifacts', safeName(name), part),
+  };
+}
+
+/** The link from a page in `out` (report.html) to `file` under `out`, as an <img src>/<a href> takes it. */
+export function hrefOf(out, file, pathImpl = path) {
+  const windows = pathImpl === path.win32;
+  const base = pathToFileURL(pathImpl.join(out, pathImpl.sep), { windows });
+  const target = pathToFileURL(pathImpl.resolve(out, file), { windows });
+  if (!target.href.startsWith(base.href)) throw new Error(`${file} is not under ${out}`);
+  return target.href.slice(base.href.length);
+}
