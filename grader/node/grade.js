@@ -13,6 +13,7 @@ import { CHROMIUM } from '../../tools/browser.js';
 import { FIREFOX } from '../../tools/firefox.js';
 import { gradeInFirefox } from './grade-firefox.js';
 import { auditAgain } from './audit-only.js';
+import { takeIn } from './intake/batch.js';
 import { runSimilarity, writeSimilarityReport, SIMILARITY_HELP, parseBound } from '../similarity/run.js';
 
 const here = path.dirname(fileURLToPath(import.meta.url));
@@ -20,7 +21,13 @@ const repo = path.resolve(here, '../..');
 // the time our own reference page gets on top of the rubric's bound for the student's page
 const REFERENCE_SECONDS = 30;
 const HELP = `usage: npm run grade -- <submission-folder> [--part WP04P1=<path to html>]... [--rubric <file>] [--out <dir>]
-       npm run grade -- --batch <folder with one submission per subfolder> [--rubric <file>] [--out <dir>]
+       npm run grade -- --batch <download.zip | its folder | a folder a student> [--rubric <file>] [--out <dir>]
+--batch takes a course site's download as it comes (its .zip or the folder it unpacked into) and
+says which it found: Brightspace (a folder a submission, "<id>-<id> - <name> - <date>"), Canvas
+(files "<lastfirst>_<user id>_<submission id>_<name>"), Moodle (folders "<name>_<id>_assignsubmission_file"),
+or a folder a student. Each hand-in is unpacked safely into OUT/handins/ (zips in it too; bounds:
+the rubric's unpack), the latest of a student's hand-ins is graded, and the student's identity goes
+into report.json and the grade files.
 Opens each part (WP04P1 ... WP04P5, found by folder or file name: WP04P1, Part1, p01, w4p1,
 week04p01, ...) in Chromium (WebGL or WebGPU) with time frozen, finds its controls, stops the
 orbit, subdivides until the silhouette settles, and gives each part a verdict (pass, review,
@@ -110,26 +117,30 @@ async function main() {
     }
   }
   let submissions;
+  const out = o.auditOnly ? path.resolve(o.auditOnly) : path.resolve(o.out || path.join(repo, 'out/grade', o.batch ? path.basename(path.resolve(o.batch), '.zip') : path.basename(path.resolve(o.positional[0] || 'report'))));
+  mkdirSync(out, { recursive: true });
   if (o.batch) {
+    // a course site's download (its .zip or its folder), or a folder a student (intake/)
     const root = path.resolve(o.batch);
-    if (!existsSync(root) || !statSync(root).isDirectory()) fail(`no such folder: ${o.batch}`);
-    submissions = readdirSync(root).filter((n) => !n.startsWith('.') && statSync(path.join(root, n)).isDirectory()).sort()
-      .map((n) => ({ name: n, root: path.join(root, n) }));
-    if (!submissions.length) fail(`${o.batch} has no submission folders`);
+    if (!existsSync(root)) fail(`no such file or folder: ${o.batch}`);
+    try {
+      submissions = takeIn(root, out, rubric).submissions;
+    } catch (err) {
+      fail(err.message);
+    }
+    if (!submissions.length && !existsSync(path.join(out, 'parts'))) fail(`${o.batch} has no hand-ins`);
   } else if (!o.reportOnly && !o.auditOnly) {
     const root = path.resolve(o.positional[0]);
     if (!existsSync(root) || !statSync(root).isDirectory()) fail(`no such folder: ${o.positional[0]}`);
     submissions = [{ name: path.basename(root), root }];
   }
-  const out = o.auditOnly ? path.resolve(o.auditOnly) : path.resolve(o.out || path.join(repo, 'out/grade', o.batch ? path.basename(path.resolve(o.batch)) : path.basename(path.resolve(o.positional[0] || 'report'))));
-  mkdirSync(out, { recursive: true });
 
   if (o.auditOnly) {
     if (!existsSync(path.join(out, 'parts'))) fail(`nothing graded in ${out}: --audit-only judges a class graded before (its artifacts/ and parts/)`);
     const t0 = Date.now();
     const { audited, without } = await auditAgain(out, rubric, (k, n) => { if (process.stdout.isTTY) process.stdout.write(`\rgrade: audited ${k} of ${n} parts`); });
     console.log(`\rgrade: audited ${audited} parts from their artifacts in ${((Date.now() - t0) / 1000).toFixed(1)} s${without.length ? `; ${without.length} without an artifact kept their verdict (${without.join(', ')})` : ''}`);
-  } else if (!o.reportOnly && !o.similarityOnly) {
+  } else if (!o.reportOnly && !o.similarityOnly && submissions.length) {
     const browser = o.browser || 'chromium';
     if (browser === 'firefox' && !existsSync(FIREFOX)) fail(`Firefox ESR is missing at ${FIREFOX}: run "sudo apt-get install -y firefox-esr" (or set FIREFOX_PATH), or grade in Chromium without --browser firefox`);
     if (browser === 'chromium' && !existsSync(CHROMIUM)) fail(`Chromium is missing at ${CHROMIUM}: run "sudo apt-get update && sudo apt-get install -y chromium"`);
