@@ -2,7 +2,7 @@
 // npm run grade: a student's submission (or a class of them) against this site's reference parts,
 // in a report a grader can read: reference | submission | difference for every part, with numbers.
 import { spawnSync } from 'node:child_process';
-import { existsSync, mkdirSync, readFileSync, readdirSync, rmSync, statSync, writeFileSync } from 'node:fs';
+import { existsSync, mkdirSync, readFileSync, rmSync, statSync, writeFileSync } from 'node:fs';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { PARTS, findParts } from './parts.js';
@@ -14,6 +14,8 @@ import { FIREFOX } from '../../tools/firefox.js';
 import { gradeInFirefox } from './grade-firefox.js';
 import { auditAgain } from './audit-only.js';
 import { takeIn } from './intake/batch.js';
+import { readClass } from './class-results.js';
+import { prepareClass, writeTeacherFiles } from './teacher-loop.js';
 import { runSimilarity, writeSimilarityReport, SIMILARITY_HELP, parseBound } from '../similarity/run.js';
 
 const here = path.dirname(fileURLToPath(import.meta.url));
@@ -50,6 +52,17 @@ fail) with reasons, from what the slide's step asks for. Our reference part is d
                     the report and stdout add the agreement per part, a label × verdict table and
                     every disagreement with both sides' reasons (correct → pass, partial → review,
                     broken → fail)
+  --overrides FILE  the teacher's verdicts (TSV: student, part, verdict, note to the student; default
+                    OUT/overrides.tsv when it is there): applied by grading, --audit-only and
+                    --report-only alike; the report shows the grader's beside each, the grade files
+                    and the feedback use the teacher's and say so
+  --roster FILE     the course site's class list export (CSV or TSV: OrgDefinedId / Username,
+                    ID number / Email address, names; default OUT/roster.csv), for the ids its grade
+                    import needs and the download does not carry (Brightspace, Moodle)
+Besides report.html, report.json and grades.csv, every run writes grades-points.csv, the course
+site's grade import file (grades-brightspace.csv, grades-canvas.csv or grades-moodle.csv; points:
+the rubric's "points"), OUT/feedback/<student>.html (one self-contained page a student) and
+feedback-<site>.zip, laid out as the course site takes feedback files back.
 ${SIMILARITY_HELP}
 exit codes: 0 it ran (whatever the verdicts), 1 it could not run, 2 bad usage`;
 
@@ -70,6 +83,8 @@ function parseArgs(argv) {
     else if (a === '--shard') o.shard = next();
     else if (a === '--workers') o.workers = next();
     else if (a === '--labels') o.labels = next();
+    else if (a === '--overrides') o.overrides = next();
+    else if (a === '--roster') o.roster = next();
     else if (a === '--browser') {
       o.browser = next().toLowerCase();
       if (!BROWSERS.includes(o.browser)) fail(`--browser takes ${BROWSERS.join(' or ')}, not "${o.browser}"\n\n${HELP}`, 2);
@@ -191,23 +206,14 @@ async function main() {
     return;
   }
   if (!existsSync(partsDir)) fail(`nothing graded in ${out} yet`);
-  const byName = new Map();
-  for (const dir of readdirSync(partsDir).sort()) {
-    for (const part of PARTS) {
-      const f = path.join(partsDir, dir, `${part}.json`);
-      if (!existsSync(f)) continue;
-      const r = JSON.parse(readFileSync(f, 'utf8'));
-      if (!byName.has(r.name)) byName.set(r.name, { name: r.name, parts: [] });
-      byName.get(r.name).parts.push(r);
-    }
+  const graded = readClass(partsDir);
+  let loop;
+  try {
+    loop = prepareClass(out, graded, { overrides: o.overrides, roster: o.roster });
+  } catch (err) {
+    fail(err.message, 2);
   }
-  for (const s of byName.values()) {
-    for (const part of PARTS) {
-      if (!s.parts.some((p) => p.part === part)) s.parts.push({ name: s.name, part, status: 'not graded here', verdict: 'fail', reasons: ['not graded in this run'], api: null, actions: [], mismatch: null, rmse: null, pass: false, errors: [], blocked: [] });
-    }
-    s.parts.sort((a, b) => a.part.localeCompare(b.part));
-  }
-  const { rows, agreed } = writeReport(out, [...byName.values()], labels, similar);
+  const { rows, agreed } = writeReport(out, graded, labels, similar);
   if (o.batch) {
     const csv = ['name,passes,' + PARTS.join(',') + ',' + PARTS.map((p) => `${p}_reasons`).join(',')]
       .concat(rows.map((s) => [JSON.stringify(s.name), s.passes, ...PARTS.map((p) => s.parts.find((x) => x.part === p).verdict),
@@ -218,6 +224,7 @@ async function main() {
     console.log(`${s.name}: ${s.passes} of ${PARTS.length} pass · ` + s.parts.map((p) => `${p.part} ${p.verdict}${p.api ? ` (${p.api})` : ''}`).join(', '));
   }
   if (agreed) for (const line of agreementText(agreed)) console.log(line);
+  for (const line of [...loop.lines, ...writeTeacherFiles(out, rows, rubric, loop.site)]) console.log(`grade: ${line}`);
   console.log(`grade: report at ${path.join(out, 'report.html')}`);
 }
 
