@@ -9,12 +9,14 @@ const esc = (s) => String(s).replace(/[&<>"']/g, (c) => ({ '&': '&amp;', '<': '&
 export function findingOf(reason, r, first) {
   let level = 'pass', text = reason;
   const m = /^(FAIL|REVIEW): (.*)$/s.exec(reason);
-  // (a part that could not be judged has its reason first, without a FAIL:)
+  // (a part that could not be judged has that reason first, without a FAIL:; reasons that passed come
+  // after every FAIL: and REVIEW:, so a failed part's first reason without one is that reason)
   const graderVerdict = r.grader ? r.grader.verdict : r.verdict;
-  if (m) { level = m[1].toLowerCase(); text = m[2]; } else if (first && graderVerdict === 'fail' && !r.reasons.some((x) => /^FAIL: /.test(x))) level = 'fail';
+  if (m) { level = m[1].toLowerCase(); text = m[2]; } else if (first && graderVerdict === 'fail') level = 'fail';
   if (level === 'pass' && /^(note:|the page reported errors)/.test(text)) return null;
-  // the reason's first clause, its numbers as "#": the same check reads alike for every student
-  const key = text.split(/ \(|: /)[0].replace(/[-+]?\d+(\.\d+)?/g, '#').trim();
+  // the reason's first clause (its numbers are in brackets or after a colon), a count it begins
+  // with as "#": the same check reads alike for every student; a formula's numbers stay
+  const key = text.split(/ \(|: /)[0].replace(/^\d+ /, '# ').trim();
   return { level, key };
 }
 
@@ -48,7 +50,7 @@ export function itemAnalysis(rows, parts) {
 export function itemAnalysisHtml(analysis) {
   return `<section id="items"><h2>Item analysis</h2><p>Each part's checks across the class, as the grader made them (the teacher's
 overrides aside): how many students each one failed, asked a teacher to review, or passed, the most frequent first.
-A number in a reason is shown as #; hover for one student's reason in full.</p>` +
+A count a reason begins with is shown as #; hover for one student's reason in full.</p>` +
     analysis.map((a) => `<h3>${esc(a.part)}: ${a.passed} of ${a.students} pass</h3><table class="items"><thead><tr><th>check</th><th>result</th><th>students</th></tr></thead><tbody>` +
       a.checks.map((c) => `<tr class="${esc(c.level)}"><td title="${esc(c.example)}">${esc(c.key)}</td><td>${esc(c.level)}</td><td class="num">${c.count} of ${a.students}</td></tr>`).join('') +
       '</tbody></table>').join('\n') + '</section>';

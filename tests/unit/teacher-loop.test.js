@@ -1,5 +1,5 @@
 // The teacher's loop after grading, on RECORDED results (tests/fixtures/artifacts/, judged without a
-// browser): the identity from intake.json and a roster into the grade import files (each site's
+// browser): the identity from intake.json (with an earlier hand-in) and a roster into the report and the grade import files (each site's
 // documented columns, Brightspace's "#", ids keeping their leading zeros), an override that
 // changes the grade file and the feedback page without grading again, the feedback pages (every
 // part's verdict, pictures inlined, no other student named) and zip (the download's names), and
@@ -42,7 +42,7 @@ before(async () => {
   out = mkdtempSync(path.join(os.tmpdir(), 'teacher-loop-'));
   rubric = await recordedOut(out, NAMES);
   const source = (w) => `${w.submissionId}-${w.userId} - ${w.name} - Oct 10, 2025 1022 AM/`;
-  writeFileSync(path.join(out, 'intake.json'), JSON.stringify({ site: 'brightspace', submissions: NAMES.map((n) => ({ name: n, identity: { site: 'brightspace', name: WHO[n].name, userId: WHO[n].userId, submissionId: WHO[n].submissionId, time: WHO[n].time, late: null, source: [source(WHO[n])] }, earlier: [], notes: [], error: null })) }));
+  writeFileSync(path.join(out, 'intake.json'), JSON.stringify({ site: 'brightspace', submissions: NAMES.map((n) => ({ name: n, identity: { site: 'brightspace', name: WHO[n].name, userId: WHO[n].userId, submissionId: WHO[n].submissionId, time: WHO[n].time, late: null, source: [source(WHO[n])] }, earlier: n === 'ada' ? [{ time: '2025-10-09T21:58', submissionId: '39650', source: ['39650-640601 - Ada Lovelace - Oct 9, 2025 958 PM/'], files: 1 }] : [], notes: [], error: null })) }));
   // Brightspace's grade export as a roster: ids with "#", a name with a comma in a quoted cell
   writeFileSync(path.join(out, 'roster.csv'), ['OrgDefinedId,Username,Last Name,First Name,Email,End-of-Line Indicator',
     ...NAMES.map((n) => { const [first, ...last] = WHO[n].name.split(' '); return `#${WHO[n].org},#${n}1,"${last.join(' ')}",${first},${n}@example.edu,#`; })].join('\r\n'));
@@ -62,6 +62,9 @@ test('Brightspace grade import: OrgDefinedId with "#" (leading zeros kept), "<it
     const expected = s.parts.reduce((a, p) => a + rubric.points[p.verdict] * rubric.points.weights[p.part], 0);
     assert.equal(Number(line[1]), expected, `${n}: ${s.parts.map((p) => p.verdict).join(' ')}`);
   }
+  const html = readFileSync(path.join(out, 'report.html'), 'utf8');
+  assert.match(html, /user id 640601 · submission 39701 · OrgDefinedId 00012345 · handed in 2025-10-10 10:22/, 'the report says who a hand-in is');
+  assert.match(html, /Handed in earlier \(the latest is graded\):<\/p><ul class="earlier"><li>2025-10-09 21:58, submission 39650/, 'and the earlier hand-in with its time');
   const points = parseTable(readFileSync(path.join(out, 'grades-points.csv'), 'utf8'));
   assert.deepEqual(points[0].slice(0, 6), ['name', 'site', 'user id', 'submission id', 'time', 'late']);
   assert.equal(points.find((r) => r[0] === 'gus')[PARTS.length + 6], '', 'no total with a part not graded');
@@ -123,10 +126,18 @@ test('item analysis: each part\'s checks with how many students each failed, rev
     assert.equal(a.students, rows.length);
     assert.equal(a.passed, rows.filter((s) => s.parts.find((p) => p.part === a.part).verdict === 'pass').length);
     assert.ok(a.checks.length > 0, a.part);
-    for (const c of a.checks) assert.ok(c.count >= 1 && c.count <= a.students && !/\d/.test(c.key), `${a.part}: ${c.key}`);
+    for (const c of a.checks) assert.ok(c.count >= 1 && c.count <= a.students && !/^\d/.test(c.key), `${a.part}: ${c.key}`);
+    for (const c of a.checks) assert.ok(!a.checks.some((d) => d !== c && d.key === c.key && d.level === c.level), `${a.part}: ${c.key} once`);
   }
   const p3 = report.itemAnalysis.find((a) => a.part === 'WP04P3');
   assert.ok(p3.checks.some((c) => c.level === 'fail'), 'eve\'s page that never loads is a failed check');
+  // a part that could not be judged: its first reason is a failed check, whatever follows it
+  for (const a of report.itemAnalysis) {
+    for (const s of rows) {
+      const r = s.parts.find((p) => p.part === a.part);
+      if (r.verdict === 'fail' && r.reasons.length && !/^(FAIL|REVIEW): /.test(r.reasons[0])) assert.ok(a.checks.some((c) => c.level === 'fail' && r.reasons[0].startsWith(c.key)), `${s.name} ${a.part}: ${r.reasons[0]}`);
+    }
+  }
   assert.match(readFileSync(path.join(out, 'report.html'), 'utf8'), /<section id="items"><h2>Item analysis<\/h2>/);
 });
 

@@ -51,7 +51,7 @@ function partHtml(r, out, rubric) {
 <h2>${esc(r.part)}${cfg.title ? `: ${esc(cfg.title)}` : ''}</h2>
 <p class="verdict"><strong>${esc(r.verdict)}</strong> · ${esc(IN_WORDS[r.verdict] || r.verdict)}</p>
 ${r.teacher ? `<p class="teacher">Your teacher set this verdict (the grader said ${esc(r.grader.verdict)}).${r.teacher.note ? ` ${esc(r.teacher.note)}` : ''}</p>` : ''}
-${problems.length ? `<h3>What to fix</h3>${list(problems.map((x) => esc(plain(x))))}` : ''}
+${problems.length ? `<h3>${r.teacher && r.verdict === 'pass' ? 'What the grader noted (your teacher passed this part)' : 'What to fix'}</h3>${list(problems.map((x) => esc(plain(x))))}` : ''}
 ${slides.length ? `<h3>What the slides ask</h3>${list(slides.map((x) => `“${esc(x.slide)}”${x.note ? ` (${esc(x.note)})` : ''}`))}<p>${step} does it.</p>` : ''}
 ${pictures.length ? `<div class="pictures">${pictures.map(([src, caption]) => `<figure><img src="${src}" alt="${esc(`${r.part}: ${caption}`)}"><figcaption>${esc(caption)}</figcaption></figure>`).join('')}</div>` : ''}
 ${works.length ? `<h3>What works</h3>${list(works.map((x) => esc(plain(x))))}` : ''}
