@@ -67,6 +67,7 @@ function buildDownload(site, dir) {
     }
   }
   if (site === 'brightspace') files.push({ name: 'index.html', data: '<table>the listing</table>' });
+  files.push({ name: '.git/config', data: '[core]' }, { name: '.DS_Store', data: 'junk' }); // nobody's
   const file = path.join(dir, `${site}-download.zip`);
   writeFileSync(file, makeZip(files.map((f) => ({ ...f, store: true }))));
   return { file, all };

@@ -18,6 +18,7 @@ import { csvCell, studentPoints } from '../../grader/node/grades-export.js';
 import { parseTable } from '../../grader/node/roster.js';
 import { zipEntries, entryData } from '../../grader/node/intake/zip.js';
 import { PARTS } from '../../grader/node/parts.js';
+import { agreement } from '../../grader/node/labels.js';
 
 const NAMES = ['ada', 'cy', 'eve', 'gus'];
 // who they are on the course site (Brightspace): the names and ids the download and the roster give
@@ -36,6 +37,13 @@ function runReport() {
   const { rows } = writeReport(out, graded);
   writeTeacherFiles(out, rows, rubric, loop.site);
   return { rows, report: JSON.parse(readFileSync(path.join(out, 'report.json'), 'utf8')) };
+}
+
+/** The class with identity and overrides, as the report is given it. */
+function readClassWithLoop() {
+  const graded = readClass(path.join(out, 'parts'));
+  prepareClass(out, graded);
+  return graded;
 }
 
 before(async () => {
@@ -90,6 +98,8 @@ test('an override changes the grade file, the report and the feedback page, with
     assert.match(page, /data-part="WP04P2" data-verdict="pass"/);
     const points = parseTable(readFileSync(path.join(out, 'grades-points.csv'), 'utf8'));
     assert.equal(points.find((r) => r[0] === 'cy').at(-1), 'WP04P2', 'grades-points.csv says the teacher set it');
+    const labelled = agreement([{ submission: 'cy', part: 'WP04P2', label: 'partial', reasons: '', unsure: false }], readClassWithLoop());
+    assert.equal(labelled.agree, graderSaid === 'review' ? 1 : 0, 'a teacher\'s labels are held to the grader\'s verdict, not the override');
   } finally {
     rmSync(path.join(out, 'overrides.tsv'));
   }

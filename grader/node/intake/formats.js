@@ -81,12 +81,13 @@ export function detectSite(tops) {
  * earlier ones are listed with their times.
  */
 export function groupBySite(files) {
-  const tops = [...new Map(files.map((f) => [f.segments[0], { top: f.segments[0], isFile: f.segments.length === 1 }])).values()];
+  const tops = [...new Map(files.map((f) => [f.segments[0], { top: f.segments[0], isFile: f.segments.length === 1 }])).values()].filter((t) => !t.top.startsWith('.'));
   const site = detectSite(tops);
   const notes = [];
   const byUser = new Map();
   for (const f of files) {
     const top = f.segments[0], isFile = f.segments.length === 1;
+    if (top.startsWith('.')) continue; // .git/, .vscode/, .gitignore beside the hand-ins: nobody's
     let id;
     if (site === 'folders') {
       if (isFile) { notes.push(`left out "${top}": a file at the top of the download, not a student's folder`); continue; }
