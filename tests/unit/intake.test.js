@@ -41,6 +41,7 @@ const HOSTILE = [
   ['Link Maker', () => makeZip([{ name: 'link', data: '/etc/passwd', symlink: true }, { name: 'a.html', data: '<p>' }]), { note: /symbolic link/, files: ['a.html'] }],
   ['Broken Zip', () => makeZip([{ name: 'a.html', data: 'hello world '.repeat(100) }]).slice(0, 120), { error: /could not be unpacked: .*not a zip file/ }],
   ['Twice Named', () => makeZip([{ name: 'p1/index.html', data: 'first' }, { name: 'p1/index.html', data: 'second' }]), { files: ['p1/index (2).html', 'p1/index.html'] }],
+  ['Deep Path', () => makeZip([{ name: `${'deep/'.repeat(1000)}x.html`, data: '<p>' }]), { error: /could not be written here \(ENAMETOOLONG\)/ }],
   ['Åse Bødker-Ærø', () => makeZip([{ nameBytes: cp850('æble/øl å.html'), data: 'cp850' }, { name: 'utf8/æøå.html', data: 'utf8' }]), { files: ['utf8/æøå.html', 'æble/øl å.html'] }],
 ];
 
@@ -165,6 +166,7 @@ test('names: UTF-8 by the flag, CP850 otherwise; paths that climb out, absolute 
   assert.equal(decodeName(new TextEncoder().encode('æøå.txt'), false), 'æøå.txt', 'macOS writes UTF-8 without the flag');
   for (const bad of ['../x', 'a/../../x', '/etc/passwd', 'C:/x', 'C:\\x', '..\\x', 'a\\..\\..\\x']) assert.ok(safeSegments(bad).unsafe, bad);
   assert.deepEqual(safeSegments('a\\b/./c.html').segments, ['a', 'b', 'c.html']);
+  assert.deepEqual(safeSegments('con.js/a:b?.html').segments, ['_con.js', 'a_b_.html']);
   assert.equal(brightspaceTime('Oct 10, 2025 1022 AM'), '2025-10-10T10:22');
   assert.equal(brightspaceTime('Sep 29, 2015 4:17 PM'), '2015-09-29T16:17');
   assert.equal(brightspaceTime('Jan 1, 2026 1205 AM'), '2026-01-01T00:05');

@@ -55,8 +55,9 @@ export function safeSegments(name) {
   const segments = n.split('/').filter((s) => s && s !== '.');
   if (segments.includes('..')) return { unsafe: 'a ".." that climbs out of the hand-in' };
   if (!segments.length) return { unsafe: 'an empty name' };
+  // (and a name Windows keeps for a device, CON, NUL, COM1, ..., gets a "_" before it)
   // eslint-disable-next-line no-control-regex
-  return { segments: segments.map((s) => s.replace(/[<>:"|?*\u0000-\u001f]/g, '_').replace(/[. ]+$/, (m) => (m.length === s.length ? '_' : ''))) };
+  return { segments: segments.map((s) => s.replace(/[<>:"|?*\u0000-\u001f]/g, '_').replace(/[. ]+$/, (m) => (m.length === s.length ? '_' : '')).replace(/^(con|prn|aux|nul|com\d|lpt\d)(\.|$)/i, '_$1$2')) };
 }
 
 /** `name` (a file name) made distinct from `taken` (a Set): "a.html", "a (2).html", ... */

@@ -111,7 +111,12 @@ function write(state, segments, data, shown) {
   const target = path.join(state.root, ...real);
   const rel = path.relative(state.root, target);
   if (!rel || rel.startsWith('..') || path.isAbsolute(rel)) throw new IntakeError(`"${shown}" would be written outside the hand-in`);
-  mkdirSync(path.dirname(target), { recursive: true });
-  // (wx: never over a file, never through a link; the folder is new and only this code writes it)
-  writeFileSync(target, data, { flag: 'wx' });
+  try {
+    mkdirSync(path.dirname(target), { recursive: true });
+    // (wx: never over a file, never through a link; the folder is new and only this code writes it)
+    writeFileSync(target, data, { flag: 'wx' });
+  } catch (err) {
+    // a path too long or too deep for this file system, a name it refuses: this hand-in's message
+    throw new IntakeError(`"${shown.length > 120 ? `${shown.slice(0, 60)}…${shown.slice(-60)}` : shown}" could not be written here (${err.code || err.message}); nothing of it was graded`, { cause: err });
+  }
 }
