@@ -29,7 +29,7 @@ function crc32(data) {
  * as they are, no flag), data (Uint8Array or string), store, symlink, declared (a size to
  * declare in place of the true one: a bomb that lies) }]).
  */
-export function makeZip(entries) {
+export function makeZip(entries, { zip64 = false } = {}) {
   const locals = [], centrals = [];
   let offset = 0;
   for (const e of entries) {
@@ -53,15 +53,32 @@ export function makeZip(entries) {
     central.writeUInt16LE(nameBytes.length, 28);
     central.writeUInt32LE(e.symlink ? (0o120777 << 16) >>> 0 : 0, 38);
     central.writeUInt32LE(offset, 42);
+    let extra = Buffer.alloc(0);
+    if (zip64) {
+      // every size and the offset in the ZIP64 extra field, 0xFFFFFFFF in their own fields
+      extra = Buffer.alloc(28);
+      extra.writeUInt16LE(1, 0); extra.writeUInt16LE(24, 2);
+      extra.writeBigUInt64LE(BigInt(e.declared ?? data.length), 4); extra.writeBigUInt64LE(BigInt(packed.length), 12); extra.writeBigUInt64LE(BigInt(offset), 20);
+      for (const at of [20, 24, 42]) central.writeUInt32LE(0xffffffff, at);
+      central.writeUInt16LE(28, 30);
+    }
     locals.push(local, nameBytes, packed);
-    centrals.push(central, nameBytes);
+    centrals.push(central, nameBytes, extra);
     offset += 30 + nameBytes.length + packed.length;
   }
   const cd = Buffer.concat(centrals);
   const end = Buffer.alloc(22);
   end.writeUInt32LE(0x06054b50, 0); end.writeUInt16LE(entries.length, 8); end.writeUInt16LE(entries.length, 10);
   end.writeUInt32LE(cd.length, 12); end.writeUInt32LE(offset, 16);
-  return new Uint8Array(Buffer.concat([...locals, cd, end]));
+  if (!zip64) return new Uint8Array(Buffer.concat([...locals, cd, end]));
+  // the ZIP64 end record and its locator, and the old end record saying "see ZIP64"
+  const end64 = Buffer.alloc(56), locator = Buffer.alloc(20);
+  end64.writeUInt32LE(0x06064b50, 0); end64.writeBigUInt64LE(44n, 4); end64.writeUInt16LE(45, 12); end64.writeUInt16LE(45, 14);
+  end64.writeBigUInt64LE(BigInt(entries.length), 24); end64.writeBigUInt64LE(BigInt(entries.length), 32);
+  end64.writeBigUInt64LE(BigInt(cd.length), 40); end64.writeBigUInt64LE(BigInt(offset), 48);
+  locator.writeUInt32LE(0x07064b50, 0); locator.writeBigUInt64LE(BigInt(offset + cd.length), 8); locator.writeUInt32LE(1, 16);
+  end.writeUInt16LE(0xffff, 8); end.writeUInt16LE(0xffff, 10); end.writeUInt32LE(0xffffffff, 16);
+  return new Uint8Array(Buffer.concat([...locals, cd, end64, locator, end]));
 }
 
 /** The files under `root`, by relative path ("a/b.js" → bytes), sorted. */

@@ -41,6 +41,7 @@ const HOSTILE = [
   ['Link Maker', () => makeZip([{ name: 'link', data: '/etc/passwd', symlink: true }, { name: 'a.html', data: '<p>' }]), { note: /symbolic link/, files: ['a.html'] }],
   ['Broken Zip', () => makeZip([{ name: 'a.html', data: 'hello world '.repeat(100) }]).slice(0, 120), { error: /could not be unpacked: .*not a zip file/ }],
   ['Twice Named', () => makeZip([{ name: 'p1/index.html', data: 'first' }, { name: 'p1/index.html', data: 'second' }]), { files: ['p1/index (2).html', 'p1/index.html'] }],
+  ['Zip Sixtyfour', () => makeZip([{ name: 'p1/index.html', data: '<p>64</p>' }, { name: 'zeros.bin', data: new Uint8Array(40 << 20), declared: 10 }], { zip64: true }), { error: /more than 8 MB/ }],
   ['Deep Path', () => makeZip([{ name: `${'deep/'.repeat(1000)}x.html`, data: '<p>' }]), { error: /could not be written here \(ENAMETOOLONG\)/ }],
   ['Åse Bødker-Ærø', () => makeZip([{ nameBytes: cp850('æble/øl å.html'), data: 'cp850' }, { name: 'utf8/æøå.html', data: 'utf8' }]), { files: ['utf8/æøå.html', 'æble/øl å.html'] }],
 ];
@@ -70,7 +71,8 @@ function buildDownload(site, dir) {
   if (site === 'brightspace') files.push({ name: 'index.html', data: '<table>the listing</table>' });
   files.push({ name: '.git/config', data: '[core]' }, { name: '.DS_Store', data: 'junk' }); // nobody's
   const file = path.join(dir, `${site}-download.zip`);
-  writeFileSync(file, makeZip(files.map((f) => ({ ...f, store: true }))));
+  // (Moodle's download written as ZIP64, as a large download is)
+  writeFileSync(file, makeZip(files.map((f) => ({ ...f, store: true })), { zip64: site === 'moodle' }));
   return { file, all };
 }
 

@@ -1,5 +1,5 @@
 // Reading a zip as the grader's intake needs it, and nothing more: its entries from the central
-// directory (every entry, two of the same name too), each name decoded as the zip says (bit 11:
+// directory (every entry, two of the same name too; ZIP64 too, as a large download is written), each name decoded as the zip says (bit 11:
 // UTF-8; otherwise the IBM PC code page, CP850: names.js), and each entry inflated by
 // fflate's streaming Inflate with a cap, so that a zip bomb stops at the bound instead of filling
 // the memory (fflate's unzipSync keys entries by name, decodes other names as Latin-1 and
@@ -12,6 +12,18 @@ export class IntakeError extends Error {}
 
 const u16 = (b, o) => b[o] | (b[o + 1] << 8);
 const u32 = (b, o) => (b[o] | (b[o + 1] << 8) | (b[o + 2] << 16) | (b[o + 3] << 24)) >>> 0;
+
+const u64 = (b, o) => u32(b, o) + u32(b, o + 4) * 2 ** 32;
+
+/** The data of the ZIP64 extra field among the `length` bytes of extra fields at `o`, or null. */
+function zip64Extra(b, o, length) {
+  for (let at = o; at + 4 <= o + length;) {
+    const id = u16(b, at), size = u16(b, at + 2);
+    if (id === 1) return b.subarray(at + 4, at + 4 + size);
+    at += 4 + size;
+  }
+  return null;
+}
 
 /** Where the end-of-central-directory record starts (searched from the end, past a comment). */
 function endRecord(b) {
@@ -28,16 +40,34 @@ function endRecord(b) {
 export function zipEntries(bytes) {
   const b = bytes instanceof Uint8Array ? bytes : new Uint8Array(bytes);
   const end = endRecord(b);
-  const count = u16(b, end + 10), cdOffset = u32(b, end + 16);
-  if (count === 0xffff || cdOffset === 0xffffffff) throw new IntakeError('it is a ZIP64 archive (over 4 GB or 65,535 entries), which the grader does not read');
+  let count = u16(b, end + 10), cdOffset = u32(b, end + 16);
+  if (count === 0xffff || cdOffset === 0xffffffff) {
+    // ZIP64 (a large download): the locator just before the end record points at the ZIP64 end record
+    const loc = end - 20;
+    if (loc < 0 || u32(b, loc) !== 0x07064b50) throw new IntakeError('its ZIP64 end record is missing');
+    const end64 = u64(b, loc + 8);
+    if (end64 + 56 > b.length || u32(b, end64) !== 0x06064b50) throw new IntakeError('its ZIP64 end record is damaged');
+    count = u64(b, end64 + 32);
+    cdOffset = u64(b, end64 + 48);
+  }
   const entries = [];
   let o = cdOffset;
   for (let k = 0; k < count; k++) {
     if (o + 46 > b.length || u32(b, o) !== 0x02014b50) throw new IntakeError(`its central directory is damaged at entry ${k + 1} of ${count}`);
     const flags = u16(b, o + 8), method = u16(b, o + 10);
-    const compressedSize = u32(b, o + 20), size = u32(b, o + 24);
+    let compressedSize = u32(b, o + 20), size = u32(b, o + 24);
     const nameLength = u16(b, o + 28), extraLength = u16(b, o + 30), commentLength = u16(b, o + 32);
-    const madeBy = u16(b, o + 4) >> 8, external = u32(b, o + 38), offset = u32(b, o + 42);
+    const madeBy = u16(b, o + 4) >> 8, external = u32(b, o + 38);
+    let offset = u32(b, o + 42);
+    if (size === 0xffffffff || compressedSize === 0xffffffff || offset === 0xffffffff) {
+      // the ZIP64 extra field (id 1) holds, in this order, each value its 32-bit field could not
+      const z = zip64Extra(b, o + 46 + nameLength, extraLength);
+      if (!z) throw new IntakeError(`its entry ${k + 1} says ZIP64 but has no ZIP64 field`);
+      let at = 0;
+      if (size === 0xffffffff) { size = u64(z, at); at += 8; }
+      if (compressedSize === 0xffffffff) { compressedSize = u64(z, at); at += 8; }
+      if (offset === 0xffffffff) offset = u64(z, at);
+    }
     const name = decodeName(b.subarray(o + 46, o + 46 + nameLength), (flags & 0x800) !== 0);
     // a symbolic link: a Unix mode of S_IFLNK in the high half of the external attributes
     const symlink = madeBy === 3 && ((external >>> 16) & 0o170000) === 0o120000;
