@@ -89,7 +89,7 @@ export function intake(input, out, bounds) {
     const sub = { name, identity: s.identity, earlier: s.earlier, notes: [], error: null };
     if (site === 'folders' && !isZipFile && !s.files.some((f) => /\.zip$/i.test(f.segments[f.segments.length - 1]))) {
       // as before: a plain folder is graded where it lies
-      return { ...sub, root: path.join(input, s.identity.source[0]) };
+      return { ...sub, root: path.resolve(input, s.identity.source[0].replace(/\/$/, '')) };
     }
     sub.root = path.join(handins, safeName(name));
     try {
