@@ -11,7 +11,7 @@ import os from 'node:os';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { intake, readIntake } from '../../grader/node/intake/intake.js';
-import { brightspaceTime, detectSite } from '../../grader/node/intake/formats.js';
+import { brightspaceTime, detectSite, groupBySite } from '../../grader/node/intake/formats.js';
 import { decodeName, safeSegments } from '../../grader/node/intake/names.js';
 import { makeZip, cp850, tree, entriesOf } from './downloads.js';
 
@@ -174,4 +174,23 @@ test('names: UTF-8 by the flag, CP850 otherwise; paths that climb out, absolute 
   assert.equal(brightspaceTime('Jan 1, 2026 1205 AM'), '2026-01-01T00:05');
   assert.equal(detectSite([{ top: 'aiden_1_2_x.zip', isFile: true }, { top: 'bo_late_3_4_y.html', isFile: true }]), 'canvas');
   assert.equal(detectSite([{ top: 'ada', isFile: false }, { top: 'bo', isFile: false }]), 'folders');
+});
+
+test('the sites\' other shapes: Brightspace\'s and Moodle\'s loose files, Canvas\'s several files a student', () => {
+  const f = (...names) => names.map((n) => ({ segments: n.split('/') }));
+  const shape = (g) => g.students.map((s) => [s.identity.name, s.identity.userId, s.files.map((x) => x.segments.join('/')).sort().join(' ')]).sort();
+  const bs = groupBySite(f('39786-640693 - Aiden Rodriguez - Oct 10, 2025 10:22 AM - handin.zip', '39786-640693 - Aiden Rodriguez - Oct 10, 2025 10:22 AM - notes.txt', '39790-640700 - Bo Ek - Sep 1, 2025 1:05 PM - p1.html', 'index.html'));
+  assert.equal(bs.site, 'brightspace');
+  assert.deepEqual(shape(bs), [['Aiden Rodriguez', '640693', 'handin.zip notes.txt'], ['Bo Ek', '640700', 'p1.html']]);
+  const md = groupBySite(f('Aiden Rodriguez_77_assignsubmission_file_handin.zip', 'Bo Ek_78_assignsubmission_file_/w4/p1.html', 'Bo Ek_78_assignsubmission_onlinetext_/onlinetext.html'));
+  assert.equal(md.site, 'moodle');
+  assert.deepEqual(shape(md), [['Aiden Rodriguez', '77', 'handin.zip'], ['Bo Ek', '78', 'w4/p1.html']]);
+  const cv = groupBySite(f('rodriguezaiden_640693_39786_p1.html', 'rodriguezaiden_640693_39786_common.js', 'ekbo_late_640700_39790_ws4-1.zip'));
+  assert.equal(cv.site, 'canvas');
+  assert.deepEqual(shape(cv), [['ekbo', '640700', 'ws4-1.zip'], ['rodriguezaiden', '640693', 'common.js p1.html']]);
+  assert.equal(cv.students.find((s) => s.identity.name === 'ekbo').identity.late, true);
+  // a name of no site beside a site's names is left out, and said
+  const mixed = groupBySite(f('39786-640693 - Aiden Rodriguez - Oct 10, 2025 1022 AM/a.html', 'stray/b.html'));
+  assert.equal(mixed.site, 'brightspace');
+  assert.deepEqual(mixed.notes, ['left out "stray": not named as brightspace names a hand-in']);
 });
