@@ -57,7 +57,7 @@ fail) with reasons, from what the slide's step asks for. Our reference part is d
                     --report-only alike; the report shows the grader's beside each, the grade files
                     and the feedback use the teacher's and say so
   --roster FILE     the course site's class list export (CSV or TSV: OrgDefinedId / Username,
-                    ID number / Email address, names; default OUT/roster.csv), for the ids its grade
+                    ID number / Email address, names; kept as OUT/roster.csv), for the ids its grade
                     import needs and the download does not carry (Brightspace, Moodle)
 Besides report.html, report.json and grades.csv, every run writes grades-points.csv, the course
 site's grade import file (grades-brightspace.csv, grades-canvas.csv or grades-moodle.csv; points:

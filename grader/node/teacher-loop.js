@@ -1,9 +1,9 @@
 // The teacher's loop around the report, in every mode that writes it (grading, --audit-only,
 // --report-only): before, each student gets the identity the intake read (OUT/intake.json), the
-// roster's ids (--roster, or OUT/roster.csv) and the teacher's overrides (--overrides, or
+// roster's ids (--roster, kept as OUT/roster.csv) and the teacher's overrides (--overrides, or
 // OUT/overrides.tsv); after, the grade files in the course site's format, the feedback pages and
 // the feedback zip.
-import { existsSync, readFileSync } from 'node:fs';
+import { copyFileSync, existsSync, readFileSync, rmSync } from 'node:fs';
 import path from 'node:path';
 import { readIntake } from './intake/intake.js';
 import { OVERRIDES_FILE, applyOverrides, readOverrides } from './overrides.js';
@@ -27,7 +27,16 @@ export function prepareClass(out, submissions, { overrides, roster } = {}) {
       if (i) Object.assign(s, { identity: { ...i.identity }, earlier: i.earlier, intakeNotes: i.notes });
     }
   }
-  const rosterFile = fileOr(roster, out, ['roster.csv', 'roster.tsv']);
+  if (roster) {
+    // kept in OUT, so that --report-only and --audit-only find it again without --roster
+    if (!existsSync(roster)) throw new Error(`no such roster file: ${roster}`);
+    const kept = path.join(out, /\.tsv$/i.test(roster) ? 'roster.tsv' : 'roster.csv');
+    if (path.resolve(roster) !== kept) {
+      for (const n of ['roster.csv', 'roster.tsv']) rmSync(path.join(out, n), { force: true });
+      copyFileSync(roster, kept);
+    }
+  }
+  const rosterFile = fileOr(null, out, ['roster.csv', 'roster.tsv']);
   if (rosterFile) {
     let parsed;
     try {

@@ -26,7 +26,10 @@ test('a download of hostile hand-ins only: each student told why, every part fai
       { name: 'aerosoeren_late_000123_39787_ws4.zip', data: broken, store: true },
     ]));
     const out = path.join(dir, 'out');
-    const r = run(['--batch', dl, '--out', out]);
+    // Canvas's gradebook export as the roster: ID (Canvas's user id) and the SIS columns
+    const roster = path.join(dir, 'gradebook.csv');
+    writeFileSync(roster, 'Student,ID,SIS User ID,SIS Login ID,Section,Worksheet 4 (77)\n"Ærø, Søren",000123,s0099,soeren,Hold 2,\n');
+    const r = run(['--batch', dl, '--out', out, '--roster', roster]);
     assert.equal(r.status, 0, r.stderr);
     assert.match(r.stdout, /^grade: found Canvas download: .*2 hand-in\(s\); 2 could not be unpacked/m);
     assert.match(r.stdout, /rodriguezaiden: the hand-in could not be unpacked: .*more than 100 MB/);
@@ -37,7 +40,8 @@ test('a download of hostile hand-ins only: each student told why, every part fai
     assert.ok(aero.parts.every((p) => p.verdict === 'fail' && p.status === 'not unpacked' && /not a zip file/.test(p.reasons[0])));
     const canvas = parseTable(readFileSync(path.join(out, 'grades-canvas.csv'), 'utf8'));
     assert.deepEqual(canvas[0], ['Student', 'ID', 'SIS User ID', 'SIS Login ID', 'Section', 'Worksheet 4']);
-    assert.deepEqual(canvas.find((l) => l[1] === '000123').slice(0, 2), ['aerosoeren', '000123'], 'the id keeps its leading zeros');
+    assert.deepEqual(canvas.find((l) => l[1] === '000123').slice(0, 5), ['Søren Ærø', '000123', 's0099', 'soeren', 'Hold 2'], 'the roster\'s columns, the id with its leading zeros');
+    assert.deepEqual(canvas.find((l) => l[1] === '640693').slice(0, 3), ['rodriguezaiden', '640693', ''], 'a student the roster does not have: the download\'s name and id');
     assert.match(readFileSync(path.join(out, 'feedback', 'aerosoeren.html'), 'utf8'), /it is not a zip file/);
     assert.ok(existsSync(path.join(out, 'feedback-canvas.zip')));
 
@@ -45,8 +49,8 @@ test('a download of hostile hand-ins only: each student told why, every part fai
     const again = run(['--report-only', '--out', out]);
     assert.equal(again.status, 0, again.stderr);
     assert.match(again.stdout, /grade: 1 verdict\(s\) set by the teacher/);
-    const total = parseTable(readFileSync(path.join(out, 'grades-canvas.csv'), 'utf8')).find((l) => l[1] === '000123')[5];
-    assert.equal(total, '0.5');
+    const line = parseTable(readFileSync(path.join(out, 'grades-canvas.csv'), 'utf8')).find((l) => l[1] === '000123');
+    assert.deepEqual([line[2], line[5]], ['s0099', '0.5'], 'the roster kept in OUT from the first run; the override counted');
     assert.match(readFileSync(path.join(out, 'feedback', 'aerosoeren.html'), 'utf8'), /Your teacher set this verdict \(the grader said fail\)\. Send me the zip again by mail\./);
 
     writeFileSync(path.join(out, 'overrides.tsv'), 'student\tpart\tverdict\n000123\tWP04P7\tpass\n');
