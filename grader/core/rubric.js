@@ -12,5 +12,8 @@ export function mergeRubric(base, teacher) {
   if (!teacher) return base;
   const parts = { ...base.parts };
   for (const [k, v] of Object.entries(teacher.parts || {})) parts[k] = { ...(base.parts[k] || {}), ...v };
-  return { ...base, ...teacher, thresholds: { ...base.thresholds, ...(teacher.thresholds || {}) }, controls: { ...base.controls, ...(teacher.controls || {}) }, parts };
+  // (the intake's bounds and the grade files' points are merged key by key too, a part's weight as well)
+  const unpack = { ...base.unpack, ...(teacher.unpack || {}) };
+  const points = { ...base.points, ...(teacher.points || {}), weights: { ...(base.points || {}).weights, ...((teacher.points || {}).weights || {}) } };
+  return { ...base, ...teacher, thresholds: { ...base.thresholds, ...(teacher.thresholds || {}) }, controls: { ...base.controls, ...(teacher.controls || {}) }, parts, unpack, points };
 }

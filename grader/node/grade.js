@@ -2,7 +2,7 @@
 // npm run grade: a student's submission (or a class of them) against this site's reference parts,
 // in a report a grader can read: reference | submission | difference for every part, with numbers.
 import { spawnSync } from 'node:child_process';
-import { existsSync, mkdirSync, readFileSync, readdirSync, rmSync, statSync, writeFileSync } from 'node:fs';
+import { existsSync, mkdirSync, readFileSync, rmSync, statSync, writeFileSync } from 'node:fs';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { PARTS, findParts } from './parts.js';
@@ -15,6 +15,9 @@ import { FIREFOX, FIREFOX_INSTALL, FIREFOX_MISSING } from '../../tools/firefox.j
 import { versionOfExecutable, nameOfVersionLine } from './browser-version.js';
 import { gradeInFirefox } from './grade-firefox.js';
 import { auditAgain } from './audit-only.js';
+import { takeIn } from './intake/batch.js';
+import { readClass } from './class-results.js';
+import { prepareClass, writeTeacherFiles } from './teacher-loop.js';
 import { runSimilarity, writeSimilarityReport, SIMILARITY_HELP, parseBound } from '../similarity/run.js';
 
 const here = path.dirname(fileURLToPath(import.meta.url));
@@ -22,7 +25,13 @@ const repo = path.resolve(here, '../..');
 // the time our own reference page gets on top of the rubric's bound for the student's page
 const REFERENCE_SECONDS = 30;
 const HELP = `usage: npm run grade -- <submission-folder> [--part WP04P1=<path to html>]... [--rubric <file>] [--out <dir>]
-       npm run grade -- --batch <folder with one submission per subfolder> [--rubric <file>] [--out <dir>]
+       npm run grade -- --batch <download.zip | its folder | a folder a student> [--rubric <file>] [--out <dir>]
+--batch takes a course site's download as it comes (its .zip or the folder it unpacked into) and
+says which it found: Brightspace (a folder a submission, "<id>-<id> - <name> - <date>"), Canvas
+(files "<lastfirst>_<user id>_<submission id>_<name>"), Moodle (folders "<name>_<id>_assignsubmission_file"),
+or a folder a student. Each hand-in is unpacked safely into OUT/handins/ (zips in it too; bounds:
+the rubric's unpack), the latest of a student's hand-ins is graded, and the student's identity goes
+into report.json and the grade files.
 Opens each part (WP04P1 ... WP04P5, found by folder or file name: WP04P1, Part1, p01, w4p1,
 week04p01, ...) in Chromium, Chrome or Edge (WebGL or WebGPU) with time frozen, finds its controls, stops the
 orbit, subdivides until the silhouette settles, and gives each part a verdict (pass, review,
@@ -47,6 +56,17 @@ fail) with reasons, from what the slide's step asks for. Our reference part is d
                     the report and stdout add the agreement per part, a label × verdict table and
                     every disagreement with both sides' reasons (correct → pass, partial → review,
                     broken → fail)
+  --overrides FILE  the teacher's verdicts (TSV: student, part, verdict, note to the student; default
+                    OUT/overrides.tsv when it is there): applied by grading, --audit-only and
+                    --report-only alike; the report shows the grader's beside each, the grade files
+                    and the feedback use the teacher's and say so
+  --roster FILE     the course site's class list export (CSV or TSV: OrgDefinedId / Username,
+                    ID number / Email address, names; kept as OUT/roster.csv), for the ids its grade
+                    import needs and the download does not carry (Brightspace, Moodle)
+Besides report.html, report.json and grades.csv, every run writes grades-points.csv, the course
+site's grade import file (grades-brightspace.csv, grades-canvas.csv or grades-moodle.csv; points:
+the rubric's "points"), OUT/feedback/<student>.html (one self-contained page a student) and
+feedback-<site>.zip, laid out as the course site takes feedback files back.
 ${SIMILARITY_HELP}
 exit codes: 0 it ran (whatever the verdicts), 1 it could not run (no browser: it says the command that
 installs one), 2 bad usage`;
@@ -77,6 +97,8 @@ function parseArgs(argv) {
     else if (a === '--shard') o.shard = next();
     else if (a === '--workers') o.workers = next();
     else if (a === '--labels') o.labels = next();
+    else if (a === '--overrides') o.overrides = next();
+    else if (a === '--roster') o.roster = next();
     else if (a === '--browser') {
       o.browser = next().toLowerCase();
       if (!BROWSERS.includes(o.browser)) fail(`--browser takes ${BROWSERS.join(' or ')}, not "${o.browser}"\n\n${HELP}`, 2);
@@ -124,26 +146,30 @@ async function main() {
     }
   }
   let submissions;
+  const out = o.auditOnly ? path.resolve(o.auditOnly) : path.resolve(o.out || path.join(repo, 'out/grade', o.batch ? path.basename(path.resolve(o.batch), '.zip') : path.basename(path.resolve(o.positional[0] || 'report'))));
+  mkdirSync(out, { recursive: true });
   if (o.batch) {
+    // a course site's download (its .zip or its folder), or a folder a student (intake/)
     const root = path.resolve(o.batch);
-    if (!existsSync(root) || !statSync(root).isDirectory()) fail(`no such folder: ${o.batch}`);
-    submissions = readdirSync(root).filter((n) => !n.startsWith('.') && statSync(path.join(root, n)).isDirectory()).sort()
-      .map((n) => ({ name: n, root: path.join(root, n) }));
-    if (!submissions.length) fail(`${o.batch} has no submission folders`);
+    if (!existsSync(root)) fail(`no such file or folder: ${o.batch}`);
+    try {
+      submissions = takeIn(root, out, rubric).submissions;
+    } catch (err) {
+      fail(err.message);
+    }
+    if (!submissions.length && !existsSync(path.join(out, 'parts'))) fail(`${o.batch} has no hand-ins`);
   } else if (!o.reportOnly && !o.auditOnly) {
     const root = path.resolve(o.positional[0]);
     if (!existsSync(root) || !statSync(root).isDirectory()) fail(`no such folder: ${o.positional[0]}`);
     submissions = [{ name: path.basename(root), root }];
   }
-  const out = o.auditOnly ? path.resolve(o.auditOnly) : path.resolve(o.out || path.join(repo, 'out/grade', o.batch ? path.basename(path.resolve(o.batch)) : path.basename(path.resolve(o.positional[0] || 'report'))));
-  mkdirSync(out, { recursive: true });
 
   if (o.auditOnly) {
     if (!existsSync(path.join(out, 'parts'))) fail(`nothing graded in ${out}: --audit-only judges a class graded before (its artifacts/ and parts/)`);
     const t0 = Date.now();
     const { audited, without } = await auditAgain(out, rubric, (k, n) => { if (process.stdout.isTTY) process.stdout.write(`\rgrade: audited ${k} of ${n} parts`); });
     console.log(`\rgrade: audited ${audited} parts from their artifacts in ${((Date.now() - t0) / 1000).toFixed(1)} s${without.length ? `; ${without.length} without an artifact kept their verdict (${without.join(', ')})` : ''}`);
-  } else if (!o.reportOnly && !o.similarityOnly) {
+  } else if (!o.reportOnly && !o.similarityOnly && submissions.length) {
     const browser = o.browser || 'chromium';
     if (browser === 'firefox' && !FIREFOX) fail(`${FIREFOX_MISSING}\n(or grade in Chromium: leave out --browser firefox)`);
     if (browser === 'chromium' && !CHROMIUM) fail(CHROMIUM_MISSING);
@@ -196,23 +222,14 @@ async function main() {
     return;
   }
   if (!existsSync(partsDir)) fail(`nothing graded in ${out} yet`);
-  const byName = new Map();
-  for (const dir of readdirSync(partsDir).sort()) {
-    for (const part of PARTS) {
-      const f = path.join(partsDir, dir, `${part}.json`);
-      if (!existsSync(f)) continue;
-      const r = JSON.parse(readFileSync(f, 'utf8'));
-      if (!byName.has(r.name)) byName.set(r.name, { name: r.name, parts: [] });
-      byName.get(r.name).parts.push(r);
-    }
+  const graded = readClass(partsDir);
+  let loop;
+  try {
+    loop = prepareClass(out, graded, { overrides: o.overrides, roster: o.roster });
+  } catch (err) {
+    fail(err.message, 2);
   }
-  for (const s of byName.values()) {
-    for (const part of PARTS) {
-      if (!s.parts.some((p) => p.part === part)) s.parts.push({ name: s.name, part, status: 'not graded here', verdict: 'fail', reasons: ['not graded in this run'], api: null, actions: [], mismatch: null, rmse: null, pass: false, errors: [], blocked: [] });
-    }
-    s.parts.sort((a, b) => a.part.localeCompare(b.part));
-  }
-  const { rows, agreed } = writeReport(out, [...byName.values()], labels, similar);
+  const { rows, agreed } = writeReport(out, graded, labels, similar);
   if (o.batch) {
     const csv = ['name,passes,' + PARTS.join(',') + ',' + PARTS.map((p) => `${p}_reasons`).join(',')]
       .concat(rows.map((s) => [JSON.stringify(s.name), s.passes, ...PARTS.map((p) => s.parts.find((x) => x.part === p).verdict),
@@ -223,6 +240,7 @@ async function main() {
     console.log(`${s.name}: ${s.passes} of ${PARTS.length} pass · ` + s.parts.map((p) => `${p.part} ${p.verdict}${p.api ? ` (${p.api})` : ''}`).join(', '));
   }
   if (agreed) for (const line of agreementText(agreed)) console.log(line);
+  for (const line of [...loop.lines, ...writeTeacherFiles(out, rows, rubric, loop.site)]) console.log(`grade: ${line}`);
   const browsers = [...new Set(rows.flatMap((s) => s.parts.map((p) => p.browserVersion).filter(Boolean)))];
   if (browsers.length) console.log(`grade: graded in ${browsers.join(' and ')}`);
   console.log(`grade: report at ${path.join(out, 'report.html')}`);

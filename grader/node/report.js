@@ -8,6 +8,8 @@ import { safeName } from './layout.js';
 import { agreement, agreementHtml } from './labels.js';
 import { NOT_GRADED } from '../core/verdict.js';
 import { similarityJson, similarityBadges, similarityHtml, SIMILARITY_CSS } from '../similarity/run.js';
+import { identityHtml, teacherMark, TEACHER_CSS } from './report-teacher.js';
+import { itemAnalysis, itemAnalysisHtml } from './item-analysis.js';
 
 const esc = (s) => String(s).replace(/[&<>"']/g, (c) => ({ '&': '&amp;', '<': '&lt;', '>': '&gt;', '"': '&quot;', "'": '&#39;' })[c]);
 
@@ -31,8 +33,9 @@ export function writeReport(out, submissions, labels = null, similar = null) {
   const agreed = labels ? agreement(labels, rows) : null;
   // the browsers that graded, with their versions (a class graded on two machines may name two)
   const browsers = [...new Set(rows.flatMap((s) => s.parts.map((p) => p.browserVersion).filter(Boolean)))].sort();
+  const items = itemAnalysis(rows, PARTS);
   writeFileSync(path.join(out, 'report.json'), JSON.stringify({ generated: new Date().toISOString(), browsers, submissions: rows,
-    ...(similar ? { similarity: similarityJson(similar) } : {}),
+    ...(similar ? { similarity: similarityJson(similar) } : {}), itemAnalysis: items,
     ...(agreed ? { labels: { ...agreed, rows: agreed.rows.map(({ reasons, ...r }) => ({ ...r, reasons: reasons.filter((x) => /^(FAIL|REVIEW)/.test(x)) })) } } : {}) }, null, 1));
   // (a picture's path is relative to the report: the artifact's files, our reference in parts/)
   const img = (s, r, k) => (r.images && r.images[k] ? `<img src="${esc(r.images[k])}" alt="${esc(`${r.part} ${k}`)}" loading="lazy">` : '');
@@ -40,12 +43,12 @@ export function writeReport(out, submissions, labels = null, similar = null) {
   const grid = rows.map((s) => `<tr data-name="${esc(s.name)}" data-passes="${s.passes}"><th scope="row"><a href="#${esc(safeName(s.name))}">${esc(s.name)}</a>${similar ? similarityBadges(similar, s.name) : ''}</th><td class="num">${s.passes}</td>` +
     PARTS.map((p) => {
       const r = s.parts.find((x) => x.part === p);
-      return `<td class="cell ${esc(cls(r.verdict))}" data-verdict="${r.verdict === NOT_GRADED ? VERDICTS.length : VERDICTS.indexOf(r.verdict)}"><a href="#${esc(anchor(s, r))}">${badge(r.verdict)}` +
+      return `<td class="cell ${esc(cls(r.verdict))}" data-verdict="${r.verdict === NOT_GRADED ? VERDICTS.length : VERDICTS.indexOf(r.verdict)}"><a href="#${esc(anchor(s, r))}">${badge(r.verdict)}${teacherMark(r)}` +
         `<span class="api">${esc(r.api || '')}</span><span class="thumbs">${img(s, r, 'first')}${img(s, r, 'judged')}</span></a></td>`;
     }).join('') + '</tr>').join('\n');
   const list = (title, items, cls) => (items && items.length ? `<p>${title}</p><ul class="${cls}">${items.map((e) => `<li>${esc(e)}</li>`).join('')}</ul>` : '');
-  const details = rows.map((s) => `<section id="${esc(safeName(s.name))}"><h2>${esc(s.name)} · ${s.passes} of ${PARTS.length} pass</h2>` +
-    s.parts.map((r) => `<div class="part" id="${esc(anchor(s, r))}"><h3>${r.part} ${badge(r.verdict)} <small>${esc(r.api || 'no API')}${r.browserVersion || r.browser ? ` in ${esc(r.browserVersion || r.browser)}` : ''} · ${esc(r.status)}${r.seconds ? ` · ${r.seconds.toFixed(0)} s` : ''}</small></h3>` +
+  const details = rows.map((s) => `<section id="${esc(safeName(s.name))}"><h2>${esc(s.name)} · ${s.passes} of ${PARTS.length} pass</h2>${identityHtml(s)}` +
+    s.parts.map((r) => `<div class="part" id="${esc(anchor(s, r))}"><h3>${r.part} ${badge(r.verdict)}${teacherMark(r, true)} <small>${esc(r.api || 'no API')}${r.browserVersion || r.browser ? ` in ${esc(r.browserVersion || r.browser)}` : ''} · ${esc(r.status)}${r.seconds ? ` · ${r.seconds.toFixed(0)} s` : ''}</small></h3>` +
       `<p class="file">${r.file ? esc(r.file) : 'no file'}</p>` +
       list('Reasons:', r.reasons, 'reasons') +
       (r.images ? `<div class="images">${['first', 'coarse', 'highlightPlace', 'leastS', 'unclipped', 'brightened', 'judged', 'reference', 'diff'].filter((k) => r.images[k]).map((k) => `<figure>${img(s, r, k)}<figcaption>${{ first: 'first frame', coarse: 'a coarse level', highlightPlace: 'the highlight, the light away from the viewer', leastS: 's at its least', unclipped: 'its own sliders lowered (it clipped to white)', brightened: 'its own light raised (it was too dim)', judged: 'judged (submission)', reference: 'our reference', diff: 'difference' }[k]}</figcaption></figure>`).join('')}</div>` : '') +
@@ -74,7 +77,7 @@ th[data-sort]{cursor:pointer;text-decoration:underline dotted}.num{text-align:ri
 .badge{display:inline-block;padding:0 .4rem;border-radius:.6rem;font-size:.8rem;font-weight:600;color:#fff}.badge.pass{background:#2a7d2a}.badge.review{background:#a66b00}.badge.fail{background:#b3261e}.badge.not-graded{background:#667}
 .api{color:#556;font-size:.75rem;margin-left:.3rem}.thumbs{display:flex;gap:2px;margin-top:2px}.thumbs img{width:64px;height:64px;object-fit:contain;border:1px solid #ccd;background:#fff}
 .images{display:flex;gap:.8rem;flex-wrap:wrap}figure{margin:0}figure img{max-width:260px;border:1px solid #ccd;image-rendering:pixelated}
-.errors li{color:#a00}.confusion td.agree{background:#e3f6e3;font-weight:600}.file{color:#556;font-family:monospace}.part{border-top:1px solid #dde;padding:.3rem 0}${SIMILARITY_CSS}</style></head><body>
+.errors li{color:#a00}.confusion td.agree{background:#e3f6e3;font-weight:600}.file{color:#556;font-family:monospace}.part{border-top:1px solid #dde;padding:.3rem 0}${SIMILARITY_CSS}${TEACHER_CSS}</style></head><body>
 <h1>Grading report</h1><p>Each part was opened in Chromium (WebGL, or WebGPU on SwiftShader with its frames read back), or with
 --browser firefox in Firefox ESR (WebGL; a WebGPU part is not graded there), with time frozen. The grader found its controls, stopped or sampled the orbit, coarsened and subdivided until the silhouette stopped
 changing, and judged the picture by what the slide's step asks for (a round sphere; normals as colours; diffuse shading for a
@@ -87,6 +90,7 @@ ${grid}
 </tbody><tfoot><tr><th>pass / review / fail</th><td></td>${totals.map((t) => `<td>${t}</td>`).join('')}</tr></tfoot></table>
 ${agreed ? agreementHtml(agreed, (r) => `#${safeName(r.submission)}-${r.part}`) : ''}
 ${similar ? similarityHtml(similar, (n) => `<a href="#${esc(safeName(n))}">${esc(n)}</a>`) : ''}
+${itemAnalysisHtml(items)}
 ${details}${sortScript}</body></html>`);
   return { rows, agreed };
 }

@@ -1,0 +1,196 @@
+// The grader's intake (grader/node/intake/): a download from each course site, built here from the
+// real hand-ins in ../shared/handins in the site's own names (a student's zip, a zip in a zip, loose
+// files, a resubmission, __MACOSX/, a name with æ/ø/å), and hostile hand-ins, each a student of its
+// own (a zip bomb, a "../" entry, a symbolic link, a corrupt zip, two entries of one name, a CP850
+// name): every real student's unpacked tree equals its folder file for file, each hostile one gets
+// its message while the others are unpacked, and nothing is written outside the output folder.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { existsSync, mkdirSync, mkdtempSync, readdirSync, readFileSync, rmSync, statSync, writeFileSync } from 'node:fs';
+import os from 'node:os';
+import path from 'node:path';
+import { fileURLToPath } from 'node:url';
+import { intake, readIntake } from '../../grader/node/intake/intake.js';
+import { brightspaceTime, detectSite, groupBySite } from '../../grader/node/intake/formats.js';
+import { decodeName, safeSegments } from '../../grader/node/intake/names.js';
+import { makeZip, cp850, tree, entriesOf } from './downloads.js';
+
+const here = path.dirname(fileURLToPath(import.meta.url));
+const HANDINS = process.env.HANDINS_DIR || path.resolve(here, '../../../shared/handins');
+const have = existsSync(path.join(HANDINS, 'labels.tsv'));
+const skip = have ? false : `no hand-ins at ${HANDINS} (set HANDINS_DIR): skipped`;
+const students = have ? readdirSync(HANDINS).filter((n) => statSync(path.join(HANDINS, n)).isDirectory()).sort() : [];
+const rubric = JSON.parse(readFileSync(path.join(here, '../../grader/core/rubric.json'), 'utf8'));
+// small bounds, so that the bomb is small to build: 8 MB unpacked, 500 files, zips 3 deep
+const BOUNDS = { ...rubric.unpack, maxBytes: 8 << 20, maxFiles: 500 };
+
+/** How each real student packs the hand-in (k: the student's index). */
+function handinZip(name, k) {
+  const own = entriesOf(path.join(HANDINS, name));
+  if (k % 4 === 1) return makeZip([{ name: 'inner.zip', data: makeZip(own), store: true }]); // a zip in a zip
+  if (k % 4 === 2) return makeZip([...own, { name: '__MACOSX/._x.html', data: 'junk' }, { name: '.DS_Store', data: 'junk' }, { name: 'Thumbs.db', data: 'junk' }]);
+  return makeZip(own);
+}
+
+const bomb = () => makeZip([{ name: 'zeros.bin', data: new Uint8Array(40 << 20) }]);
+// each hostile hand-in: [name, zip, what its student must get]
+const HOSTILE = [
+  ['Zip Bomb', bomb, { error: /more than 8 MB .*unpack\.maxBytes/ }],
+  ['Lying Bomb', () => makeZip([{ name: 'a.html', data: '<p>' }, { name: 'zeros.bin', data: new Uint8Array(40 << 20), declared: 1000 }]), { error: /more than 8 MB .*unpack\.maxBytes/ }],
+  ['Climb Out', () => makeZip([{ name: '../../evil.txt', data: 'x' }, { name: 'ok/index.html', data: '<p>' }]), { note: /left out "\.\.\/\.\.\/evil\.txt".*"\.\." that climbs out/, files: ['ok/index.html'] }],
+  ['Link Maker', () => makeZip([{ name: 'link', data: '/etc/passwd', symlink: true }, { name: 'a.html', data: '<p>' }]), { note: /symbolic link/, files: ['a.html'] }],
+  ['Broken Zip', () => makeZip([{ name: 'a.html', data: 'hello world '.repeat(100) }]).slice(0, 120), { error: /could not be unpacked: .*not a zip file/ }],
+  ['Twice Named', () => makeZip([{ name: 'p1/index.html', data: 'first' }, { name: 'p1/index.html', data: 'second' }]), { files: ['p1/index (2).html', 'p1/index.html'] }],
+  ['Zip Sixtyfour', () => makeZip([{ name: 'p1/index.html', data: '<p>64</p>' }, { name: 'zeros.bin', data: new Uint8Array(40 << 20), declared: 10 }], { zip64: true }), { error: /more than 8 MB/ }],
+  ['Deep Path', () => makeZip([{ name: `${'deep/'.repeat(1000)}x.html`, data: '<p>' }]), { error: /could not be written here \(ENAMETOOLONG\)/ }],
+  ['Åse Bødker-Ærø', () => makeZip([{ nameBytes: cp850('æble/øl å.html'), data: 'cp850' }, { name: 'utf8/æøå.html', data: 'utf8' }]), { files: ['utf8/æøå.html', 'æble/øl å.html'] }],
+];
+
+/** A download of `site` in `dir`: the real students and the hostile ones, as `site` names them. */
+function buildDownload(site, dir) {
+  const files = [];
+  const all = [...students.map((n, k) => ({ name: `${n} Student`, zip: () => handinZip(n, k), real: n, k })), ...HOSTILE.map(([name, zip], k) => ({ name, zip, k: 100 + k }))];
+  for (const s of all) {
+    const uid = String(640600 + s.k), sid = String(39700 + s.k);
+    if (site === 'brightspace') {
+      const folder = `${sid}-${uid} - ${s.name} - Oct 10, 2025 1022 AM`;
+      if (s.k === 3) files.push(...entriesOf(path.join(HANDINS, s.real), `${folder}/`)); // loose files
+      else files.push({ name: `${folder}/handin.zip`, data: s.zip() });
+      // the first student handed in twice: an earlier, wrong hand-in the day before
+      if (s.k === 0) files.push({ name: `${Number(sid) - 50}-${uid} - ${s.name} - Oct 9, 2025 958 PM/old.zip`, data: makeZip([{ name: 'wrong.html', data: 'old' }]) });
+    } else if (site === 'canvas') {
+      const lastfirst = s.name.toLowerCase().replace(/[^a-zæøå]/g, '');
+      files.push({ name: `${lastfirst}${s.k === 2 ? '_late' : ''}_${uid}_${sid}_handin.zip`, data: s.zip() });
+    } else {
+      const folder = `${s.name}_${uid}_assignsubmission_file`;
+      if (s.k === 3) files.push(...entriesOf(path.join(HANDINS, s.real), `${folder}/`));
+      else files.push({ name: `${folder}/handin.zip`, data: s.zip() });
+      files.push({ name: `${s.name}_${uid}_assignsubmission_onlinetext/onlinetext.html`, data: '<p>text</p>' });
+    }
+  }
+  if (site === 'brightspace') files.push({ name: 'index.html', data: '<table>the listing</table>' });
+  files.push({ name: '.git/config', data: '[core]' }, { name: '.DS_Store', data: 'junk' }); // nobody's
+  const file = path.join(dir, `${site}-download.zip`);
+  // (Moodle's download written as ZIP64, as a large download is)
+  writeFileSync(file, makeZip(files.map((f) => ({ ...f, store: true })), { zip64: site === 'moodle' }));
+  return { file, all };
+}
+
+for (const site of ['brightspace', 'canvas', 'moodle']) {
+  test(`a ${site} download: the site said, each real hand-in unpacked file for file, each hostile one its message, nothing outside`, { skip }, () => {
+    const dir = mkdtempSync(path.join(os.tmpdir(), `intake-${site}-`));
+    try {
+      const { file, all } = buildDownload(site, dir);
+      const out = path.join(dir, 'out');
+      mkdirSync(out);
+      const t0 = performance.now();
+      const got = intake(file, out, BOUNDS);
+      const ms = performance.now() - t0;
+      console.log(`${site}: ${(statSync(file).size / 1048576).toFixed(1)} MB download, ${got.submissions.length} hand-ins unpacked in ${ms.toFixed(0)} ms`);
+      assert.equal(got.site, site);
+      assert.deepEqual(readIntake(out).site, site, 'intake.json says the site');
+      assert.equal(got.submissions.length, all.length, got.submissions.map((s) => s.name).join(', '));
+      const byName = new Map(got.submissions.map((s) => [s.identity.name.toLowerCase().replace(/[^a-zæøå]/g, ''), s]));
+      const find = (s) => byName.get(s.name.toLowerCase().replace(/[^a-zæøå]/g, ''));
+      for (const s of all) {
+        const sub = find(s);
+        assert.ok(sub, `${s.name} is found`);
+        assert.equal(sub.identity.userId, String(640600 + s.k), `${s.name}'s user id`);
+        if (site !== 'moodle') assert.equal(sub.identity.submissionId, String(39700 + s.k), `${s.name}'s submission id`);
+        if (s.real) {
+          assert.equal(sub.error, null, `${s.name}: ${sub.error}`);
+          assert.deepEqual(tree(sub.root), tree(path.join(HANDINS, s.real)), `${s.name}'s unpacked tree is its folder, file for file`);
+        }
+      }
+      for (const [name, , want] of HOSTILE) {
+        const sub = find({ name });
+        if (want.error) assert.match(String(sub.error), want.error, name);
+        else assert.equal(sub.error, null, `${name}: ${sub.error}`);
+        if (want.note) assert.ok(sub.notes.some((n) => want.note.test(n)), `${name}: ${sub.notes.join(' | ')}`);
+        if (want.files) assert.deepEqual(Object.keys(tree(sub.root)).sort(), want.files.sort(), name);
+      }
+      if (site === 'brightspace') {
+        const first = find(all[0]);
+        assert.equal(first.identity.time, '2025-10-10T10:22', 'the latest hand-in is graded');
+        assert.deepEqual(first.earlier.map((e) => e.time), ['2025-10-09T21:58'], 'the earlier one is listed with its time');
+        assert.ok(!existsSync(path.join(first.root, 'wrong.html')));
+      }
+      if (site === 'canvas') assert.equal(find(all[2]).identity.late, true, 'late is read from the name');
+      if (site === 'canvas') assert.equal(find(all[0]).identity.late, false);
+      // nothing written outside the output folder: the temp folder holds the download and out only
+      assert.deepEqual(readdirSync(dir).sort(), [path.basename(file), 'out'].sort());
+      assert.ok(!existsSync(path.join(os.tmpdir(), 'evil.txt')) && !existsSync(path.join(dir, 'evil.txt')) && !existsSync(path.join(out, 'evil.txt')));
+    } finally {
+      rmSync(dir, { recursive: true, force: true });
+    }
+  });
+}
+
+test('the download unpacked by the teacher (a folder) is read as the zip is', { skip }, () => {
+  const dir = mkdtempSync(path.join(os.tmpdir(), 'intake-folder-'));
+  try {
+    // Brightspace's folders, unpacked into "Assignment 4 Download ..." with the hand-ins loose
+    const root = path.join(dir, 'Assignment 4 Download Oct 11, 2025 803 PM');
+    for (const [k, n] of students.entries()) {
+      const folder = path.join(root, `${39700 + k}-${640600 + k} - ${n} Student - Oct 10, 2025 1022 AM`);
+      mkdirSync(folder, { recursive: true });
+      writeFileSync(path.join(folder, 'handin.zip'), handinZip(n, k));
+    }
+    const out = path.join(dir, 'out');
+    mkdirSync(out);
+    const got = intake(dir, out, BOUNDS);
+    assert.equal(got.site, 'brightspace');
+    for (const [k, n] of students.entries()) {
+      const sub = got.submissions.find((s) => s.identity.userId === String(640600 + k));
+      assert.deepEqual(tree(sub.root), tree(path.join(HANDINS, n)), n);
+    }
+  } finally {
+    rmSync(dir, { recursive: true, force: true });
+  }
+});
+
+test('a folder a student with no zip is graded where it is, as before', { skip }, () => {
+  const out = mkdtempSync(path.join(os.tmpdir(), 'intake-plain-'));
+  try {
+    const got = intake(HANDINS, out, BOUNDS);
+    assert.equal(got.site, 'folders');
+    assert.deepEqual(got.submissions.map((s) => s.name), students);
+    for (const s of got.submissions) assert.equal(s.root, path.join(HANDINS, s.name), 'the folder itself, as --batch gave it before');
+    assert.ok(!existsSync(path.join(out, 'handins')) || !readdirSync(path.join(out, 'handins')).length);
+  } finally {
+    rmSync(out, { recursive: true, force: true });
+  }
+});
+
+test('names: UTF-8 by the flag, CP850 otherwise; paths that climb out, absolute or with a drive letter are refused', () => {
+  assert.equal(decodeName(cp850('æøå ÆØÅ.txt'), false), 'æøå ÆØÅ.txt');
+  assert.equal(decodeName(new TextEncoder().encode('æøå.txt'), true), 'æøå.txt');
+  assert.equal(decodeName(new TextEncoder().encode('æøå.txt'), false), 'æøå.txt', 'macOS writes UTF-8 without the flag');
+  for (const bad of ['../x', 'a/../../x', '/etc/passwd', 'C:/x', 'C:\\x', '..\\x', 'a\\..\\..\\x']) assert.ok(safeSegments(bad).unsafe, bad);
+  assert.deepEqual(safeSegments('a\\b/./c.html').segments, ['a', 'b', 'c.html']);
+  assert.deepEqual(safeSegments('con.js/a:b?.html').segments, ['_con.js', 'a_b_.html']);
+  assert.equal(brightspaceTime('Oct 10, 2025 1022 AM'), '2025-10-10T10:22');
+  assert.equal(brightspaceTime('Sep 29, 2015 4:17 PM'), '2015-09-29T16:17');
+  assert.equal(brightspaceTime('Jan 1, 2026 1205 AM'), '2026-01-01T00:05');
+  assert.equal(detectSite([{ top: 'aiden_1_2_x.zip', isFile: true }, { top: 'bo_late_3_4_y.html', isFile: true }]), 'canvas');
+  assert.equal(detectSite([{ top: 'ada', isFile: false }, { top: 'bo', isFile: false }]), 'folders');
+});
+
+test('the sites\' other shapes: Brightspace\'s and Moodle\'s loose files, Canvas\'s several files a student', () => {
+  const f = (...names) => names.map((n) => ({ segments: n.split('/') }));
+  const shape = (g) => g.students.map((s) => [s.identity.name, s.identity.userId, s.files.map((x) => x.segments.join('/')).sort().join(' ')]).sort();
+  const bs = groupBySite(f('39786-640693 - Aiden Rodriguez - Oct 10, 2025 10:22 AM - handin.zip', '39786-640693 - Aiden Rodriguez - Oct 10, 2025 10:22 AM - notes.txt', '39790-640700 - Bo Ek - Sep 1, 2025 1:05 PM - p1.html', 'index.html'));
+  assert.equal(bs.site, 'brightspace');
+  assert.deepEqual(shape(bs), [['Aiden Rodriguez', '640693', 'handin.zip notes.txt'], ['Bo Ek', '640700', 'p1.html']]);
+  const md = groupBySite(f('Aiden Rodriguez_77_assignsubmission_file_handin.zip', 'Bo Ek_78_assignsubmission_file_/w4/p1.html', 'Bo Ek_78_assignsubmission_onlinetext_/onlinetext.html'));
+  assert.equal(md.site, 'moodle');
+  assert.deepEqual(shape(md), [['Aiden Rodriguez', '77', 'handin.zip'], ['Bo Ek', '78', 'w4/p1.html']]);
+  const cv = groupBySite(f('rodriguezaiden_640693_39786_p1.html', 'rodriguezaiden_640693_39786_common.js', 'ekbo_late_640700_39790_ws4-1.zip'));
+  assert.equal(cv.site, 'canvas');
+  assert.deepEqual(shape(cv), [['ekbo', '640700', 'ws4-1.zip'], ['rodriguezaiden', '640693', 'common.js p1.html']]);
+  assert.equal(cv.students.find((s) => s.identity.name === 'ekbo').identity.late, true);
+  // a name of no site beside a site's names is left out, and said
+  const mixed = groupBySite(f('39786-640693 - Aiden Rodriguez - Oct 10, 2025 1022 AM/a.html', 'stray/b.html'));
+  assert.equal(mixed.site, 'brightspace');
+  assert.deepEqual(mixed.notes, ['left out "stray": not named as brightspace names a hand-in']);
+});
