@@ -73,7 +73,7 @@ export function auditPart({ facts, images }, rubric) {
   if (shaded) auditUnclipped(C);
   if (shaded) auditBrightened(C);
   // the lit views kept along the orbit: their sparse fits (the orbit's), and full fits (the highlight's)
-  const lit = !shaded ? [] : facts.views.map((v) => ({ ...litView(images[v.image], T), orbiting: v.orbiting, image: v.image })).filter((v) => v.lit);
+  const lit = !shaded ? [] : facts.views.map((v) => ({ ...litView(images[v.image], T), orbiting: v.orbiting, image: v.image, camera: v.camera })).filter((v) => v.lit);
   if (shaded) auditDiffuse(C, shading, lit);
   auditOrbit(C, lit);
   if (shaded) auditPointLight(C, shading);

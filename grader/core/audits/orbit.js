@@ -1,8 +1,10 @@
 // WP04P3: "the camera orbits the sphere" with a button that toggles it: the lit side turns as the
 // camera orbits (a light that stays in the world), and a control starts and stops the orbit.
 import { describe } from '../controls.js';
+import { cameraRotations, cameraTurn, staysInWorld } from '../camera.js';
 
 const fmt = (x, d = 2) => (x === null || x === undefined || Number.isNaN(x) ? '–' : Number(x).toFixed(d));
+const signedAngle = (a, b) => (180 / Math.PI) * Math.acos(Math.max(-1, Math.min(1, (a[0] * b[0] + a[1] * b[1] + a[2] * b[2]) / (Math.hypot(...a) * Math.hypot(...b)))));
 const angle = (a, b) => (180 / Math.PI) * Math.acos(Math.min(1, Math.abs(a[0] * b[0] + a[1] * b[1] + a[2] * b[2])));
 
 /** The orbit restarted to look at the shading would not stop again. */
@@ -12,16 +14,32 @@ export function auditOrbitStopsAgain({ facts, say }) {
 
 /** The lit side turning with the orbit (the lit views' sparse fits, `lit`), and the orbit's control. */
 export function auditOrbit({ facts, T, must, say, numbers }, lit) {
-  const orbitFits = lit.filter((v) => v.orbiting).map((v) => v.fit);
+  const orbiting = lit.filter((v) => v.orbiting), orbitFits = orbiting.map((v) => v.fit);
   if (must.has('diffuse') && orbitFits.length >= 2) {
     let turn = 0;
     for (let i = 1; i < orbitFits.length; i++) turn = Math.max(turn, angle(orbitFits[0].light, orbitFits[i].light));
     numbers.lightTurn = turn;
+    // where the page sent its view matrix: how far a light in the world would have turned on screen
+    // between the views (the best fitted view's light, turned as the camera turned). A fit that turns
+    // far less than that is a light that moves with the camera, whatever the fits' noise; where the
+    // camera's turn moves such a light little (it turned too little, or about the light itself), the
+    // fit's own turn tells only when it is clear
+    const seen = orbiting.filter((v) => v.camera), rs = cameraRotations(seen.map((v) => v.camera), T.cameraRotationTolerance);
+    let apart = null;
+    if (rs) {
+      const ref = seen.reduce((b, v, k) => (v.fit.r2 > seen[b].fit.r2 ? k : b), 0), l = seen[ref].fit.light;
+      apart = Math.max(...rs.map((r) => signedAngle(staysInWorld(rs[ref], r, l), l)));
+    }
+    const camera = rs && cameraTurn(seen.map((v) => v.camera), T.cameraRotationTolerance);
+    if (rs) Object.assign(numbers, { cameraTurn: camera, lightTurnIfWorld: apart });
+    const words = `the fitted light turns ${fmt(turn, 1)}° over ${orbitFits.length} views${rs ? `, where a light in the world would have turned ${fmt(apart, 1)}° on screen (the camera turns ${fmt(camera, 1)}°: its view matrix, as the page sent it)` : ''}`;
     // on a sphere only the shading shows the orbit: where the step asks for the orbit (P3) a light that
     // moves with the camera hides it; elsewhere the slides leave the light's space to the student
-    if (turn < T.lightTurnDegrees) {
-      say(must.has('orbitToggle') ? 'review' : 'pass', `${must.has('orbitToggle') ? 'the orbit does not show in the shading: ' : 'note: '}while the camera orbits, the lit side stays where it is on screen (the fitted light turns ${fmt(turn, 1)}° over ${orbitFits.length} views): the light moves with the camera (given in eye space, or light and normals in different spaces?)`);
-    } else say('pass', `the lit side turns as the camera orbits (${fmt(turn, 0)}° over ${orbitFits.length} views): the light stays in the world`);
+    if (rs && apart < T.lightSeparationDegrees && turn < T.lightClearTurnDegrees) {
+      say(must.has('orbitToggle') ? 'review' : 'pass', `${must.has('orbitToggle') ? '' : 'note: '}the camera turned too little between the lit views seen to tell whether the light stays in the world (${words}; ${T.lightSeparationDegrees}° at least are needed)`);
+    } else if (turn < Math.max(T.lightTurnDegrees, rs ? T.lightFollowsWorld * apart : 0)) {
+      say(must.has('orbitToggle') ? 'review' : 'pass', `${must.has('orbitToggle') ? 'the orbit does not show in the shading: ' : 'note: '}while the camera orbits, the lit side stays where it is on screen (${words}): the light moves with the camera (given in eye space, or light and normals in different spaces?)`);
+    } else say('pass', `the lit side turns as the camera orbits (${rs ? words : `${fmt(turn, 0)}° over ${orbitFits.length} views`}): the light stays in the world`);
   }
   if (must.has('orbitToggle')) {
     const o = facts.orbit;

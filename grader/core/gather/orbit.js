@@ -6,20 +6,35 @@ import { analyse } from '../measure.js';
 import { describe, named, trialOrder, isClickable, sentChanges } from '../controls.js';
 import { litView } from '../views.js';
 import { readGeometry, readSent } from './geometry.js';
+import { cameraOf, cameraTurn } from '../camera.js';
 
 const fmt = (x, d) => Number(x).toFixed(d);
 
 /** Is `img` a lit view? Lit views are kept (`orbiting`: seen while the camera orbits). */
 export function look(S, img, { orbiting = true, keep = true } = {}) {
   const { lit } = litView(img, S.T);
-  if (lit && keep) S.facts.views.push({ image: S.keep(`view-${S.facts.views.length}`, img), orbiting });
+  if (lit && keep) S.facts.views.push({ image: S.keep(`view-${S.facts.views.length}`, img), orbiting, ...(orbiting && S.camera ? { camera: S.camera } : {}) });
   return lit;
+}
+
+/** The camera as the page sent it now (the animated matrices: camera.js), kept for the next views looked at. */
+async function readCamera(S) {
+  S.camera = S.facts.sentAnimated ? cameraOf(await readSent(S), S.facts.sentAnimated) : null;
+}
+
+/** Has the camera turned, over the orbiting views kept, less than it takes to tell where the light is? (unknown: no) */
+function turnedTooLittle(S) {
+  const turn = cameraTurn(S.facts.views.filter((v) => v.orbiting).map((v) => v.camera), S.T.cameraRotationTolerance);
+  return turn !== null && turn < S.T.cameraTurnDegrees;
 }
 
 // the k-th orbit sample's frames: many pages turn the camera a fixed step a frame, so each sample
 // runs more frames as the search goes on, as many as orbitSampleWork affords a page of this cost
-const tickOrbit = (S, k) => S.tick(S.T.orbitSampleSeconds * 1000,
-  Math.max(2, Math.min(8 << k, Math.round(60 * S.T.orbitSampleSeconds), Math.floor(S.T.orbitSampleWork / Math.max(1, S.frameWork)))));
+const tickOrbit = async (S, k) => {
+  await S.tick(S.T.orbitSampleSeconds * 1000,
+    Math.max(2, Math.min(8 << k, Math.round(60 * S.T.orbitSampleSeconds), Math.floor(S.T.orbitSampleWork / Math.max(1, S.frameWork)))));
+  await readCamera(S);
+};
 
 /**
  * Looks along the orbit until a lit view shows (a few positions at least), at most orbitSamples
@@ -34,7 +49,11 @@ export async function sampleOrbit(S, afterLadder = false) {
   }
   S.step('sampling the orbit');
   let k = 0, img = S.cur.img;
-  for (; k < T.orbitSamples && (!look(S, img) || k < 2); k++) {
+  await readCamera(S);
+  // a lit view and two samples at least; where the page sends its view matrix, until the camera has
+  // turned cameraTurnDegrees over the lit views (a slow orbit: a light that moves with the camera
+  // and one that stays in the world look alike over a small turn)
+  for (; k < T.orbitSamples && (!look(S, img) || k < 2 || turnedTooLittle(S)); k++) {
     await tickOrbit(S, k);
     img = await S.page.snap();
   }
