@@ -195,6 +195,7 @@ export function instrumentScript() {
     if (this instanceof Element) {
       const set = this.__gradeEvents || (this.__gradeEvents = new Set());
       set.add(type);
+      if ((type === 'input' || type === 'change') && typeof rest[0] === 'function') (this.__gradeHandlers ||= []).push(String(rest[0]).slice(0, 200));
     }
     return add.call(this, type, ...rest);
   };
@@ -285,9 +286,11 @@ export function instrumentScript() {
         .filter(Boolean).join(' ').replace(/\s+/g, ' ').trim();
       const events = [...(el.__gradeEvents || [])];
       for (const ev of ['click', 'input', 'change']) if (el['on' + ev] && !events.includes(ev)) events.push(ev);
+      // a slider's handlers, as text: changeKs(0, v), changeKs(1, v), changeKs(2, v) set one parameter's channels
+      const handler = /^(range|number|color)$/.test(type) ? [el.oninput, el.onchange, ...(el.__gradeHandlers || [])].filter(Boolean).map((f) => String(f).slice(0, 200)).join(' ') : '';
       return { index, type, id: el.id || '', name: el.name || '', text: type === 'submit' || type === 'button' ? (el.value + ' ' + text).trim() : text,
         value: el.value, min: el.min, max: el.max, step: el.step, checked: el.checked, disabled: el.disabled, events,
-        visible: el.getClientRects().length > 0, options: el.tagName === 'SELECT' ? [...el.options].map((o) => o.value) : undefined };
+        visible: el.getClientRects().length > 0, options: el.tagName === 'SELECT' ? [...el.options].map((o) => o.value) : undefined, ...(handler ? { handler } : {}) };
     }).filter((c) => c.visible && !['hidden', 'text', 'number', 'file'].includes(c.type) || c.type === 'number');
   };
 

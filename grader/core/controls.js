@@ -100,6 +100,18 @@ export function channelOf(s) {
   return stem && { stem, channel, family: CHANNEL.has(channel) ? CHANNEL.get(channel) : -1 };
 }
 
+/**
+ * A channel from a slider's handler: a function called with 0, 1 or 2 (or r/g/b, x/y/z) first, as
+ * changeKs(0, this.value) → { stem: 'ks', channel: '0', family }; null where none is.
+ */
+export function handlerChannelOf(handler) {
+  const m = /\b([A-Za-z_$][\w$]*)\s*\(\s*['"]?([012]|[rgbxyz])['"]?\s*,/.exec(String(handler || ''));
+  if (!m || /^(function|if|for|while|switch|return|parseFloat|parseInt|Number|setTimeout|setInterval|requestAnimationFrame)$/.test(m[1])) return null;
+  const stem = m[1].replace(/^(change|set|update|handle|on)_?/i, '').toLowerCase();
+  const channel = m[2].toLowerCase();
+  return stem ? { stem, channel, family: CHANNEL.get(channel) } : null;
+}
+
 const isSetting = (c) => (isValued(c) && c.type !== 'select') || c.type === 'color';
 
 /**
@@ -113,11 +125,14 @@ const isSetting = (c) => (isValued(c) && c.type !== 'select') || c.type === 'col
 export function parameterGroups(controls, patterns) {
   const settable = controls.filter(isSetting);
   const grouped = new Map(); // control index → group
-  for (const source of [(c) => c.id, (c) => c.name, (c) => c.text]) {
+  // (a handler's channel counts where its stem names the parameter, or the three carry the same words)
+  const sameWords = (xs) => new Set(xs.map((x) => String(x.c.text || '').replace(/[([]?\b([012]|[rgbxyz])\b[)\]]?/gi, '').replace(/[\s\d.:=]+/g, ' ').trim().toLowerCase())).size === 1;
+  const handlerOk = (stem, xs) => !!nameRole({ index: -1, type: 'range', id: stem, text: stem }, patterns) || sameWords(xs);
+  for (const [source, parse, ok] of [[(c) => c.id, channelOf], [(c) => c.name, channelOf], [(c) => c.text, channelOf], [(c) => c.handler, handlerChannelOf, handlerOk]]) {
     const byStem = new Map();
     for (const c of settable) {
       if (grouped.has(c.index) || c.type === 'color') continue;
-      const ch = channelOf(source(c));
+      const ch = parse(source(c));
       if (!ch) continue;
       if (!byStem.has(ch.stem)) byStem.set(ch.stem, []);
       byStem.get(ch.stem).push({ c, ...ch });
@@ -125,7 +140,7 @@ export function parameterGroups(controls, patterns) {
     for (const [stem, xs] of byStem) {
       const fam = xs[0].family;
       const channels = new Set(xs.map((x) => x.channel));
-      if (fam < 0 || xs.length !== 3 || channels.size !== 3 || xs.some((x) => x.family !== fam)) continue;
+      if (fam < 0 || xs.length !== 3 || channels.size !== 3 || xs.some((x) => x.family !== fam) || (ok && !ok(stem, xs))) continue;
       const g = { controls: xs.map((x) => x.c), stem, channels: FAMILIES[fam].join(', ') };
       for (const x of xs) grouped.set(x.c.index, g);
     }

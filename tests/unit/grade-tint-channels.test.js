@@ -4,7 +4,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
-import { channelOf, parameterGroups } from '../../grader/core/controls.js';
+import { channelOf, parameterGroups, handlerChannelOf } from '../../grader/core/controls.js';
 import { analyse, samples, diffuseFit, hueByNormal, tintedByNormal, shadeFit } from '../../grader/core/measure.js';
 import { clippedShare } from '../../grader/core/gather/visible.js';
 
@@ -39,6 +39,20 @@ test('parameterGroups: three sliders of one stem and r/g/b (or x/y/z, 0/1/2) are
   assert.deepEqual(pick.map((x) => [x.role, x.controls.length]), [['ks', 1]]);
   // two channels only are not read as one parameter
   assert.equal(parameterGroups(['ks_r', 'ks_g'].map((id, k) => slider(k, id)), P).length, 2);
+});
+
+test('parameterGroups: three sliders whose handlers call one function with 0, 1, 2 first are one parameter, where its name or their words agree', () => {
+  const h = (f, k) => ({ ...slider(k, `slider${k + 1}`, 'Specular'), handler: `function oninput(event) {\n${f}(${k % 3}, this.value)\n}` });
+  const ks = [0, 1, 2].map((k) => h('changeKs', k));
+  assert.deepEqual(parameterGroups(ks, P).map((x) => [x.role, x.controls.length]), [['ks', 3]]);
+  // one function for three parameters (setParam(0, …) for kd, (1, …) for ks, (2, …) for s) is no colour
+  const params = ['kd', 'ks', 'shininess'].map((w, k) => ({ ...slider(k, `${w}Slider`, w), handler: `(e) => setParam(${k}, e.target.value)` }));
+  assert.deepEqual(parameterGroups(params, P).map((x) => x.controls.length), [1, 1, 1]);
+  // a stem that names nothing: the words beside them must agree (they do: "Light colour")
+  const light = [0, 1, 2].map((k) => ({ ...slider(k, `q${k}`, 'Light colour'), handler: `(e) => update(${k}, e.target.value)` }));
+  assert.deepEqual(parameterGroups(light, P).map((x) => x.controls.length), [3]);
+  assert.equal(handlerChannelOf('function () { render(); }'), null);
+  assert.equal(handlerChannelOf('parseFloat(0, 1)'), null);
 });
 
 const norm = (v) => { const l = Math.hypot(...v); return v.map((x) => x / l); };
