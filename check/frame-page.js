@@ -69,6 +69,11 @@ export function framePage(frame, log) {
     async setNoCull(on) {
       g().noCull = on;
     },
+    /** The grader's hooks the page replaced (grader/browser/tamper.js). */
+    async tampered() {
+      const r = win().__tamper;
+      return r ? plain(r.read()) : [];
+    },
     /** What the page last sent for its shaders (grader/browser/sent.js). */
     async sent() {
       const r = win().__sent;

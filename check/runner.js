@@ -13,6 +13,8 @@ import { drawBatchScript } from '../grader/browser/draw-batch.js';
 import { instrumentScript } from '../grader/browser/instrument.js';
 import { geometryInit } from '../grader/browser/geometry.js';
 import { sentScript } from '../grader/browser/sent.js';
+import { pixelsScript } from '../grader/browser/pixels.js';
+import { tamperScript } from '../grader/browser/tamper.js';
 import { webgpuCaptureScript } from '../grader/browser/webgpu-capture.js';
 import { gradePart } from '../grader/core/grade-part.js';
 import { verdictOf, reasonsOf } from '../grader/core/verdict.js';
@@ -30,9 +32,11 @@ export function frameScript(rubric) {
     `(${webgpuCaptureScript})();`,
     `(${drawBatchScript})();`,
     `(${instrumentScript})();`,
+    `(${pixelsScript})();`,
     geometryInit,
     `(${sentScript})();`,
     `(${frameClockScript})(${FROZEN});`,
+    `(${tamperScript})();`,
   ].join('\n');
 }
 

@@ -5,7 +5,8 @@
 // frames come from grader/browser/webgpu-capture.js, which must be added first).
 export function instrumentScript() {
   const g = { api: null, apis: [], draws: 0, vertices: 0, pending: 0, shaderErrors: [], gpuErrors: [], adapter: undefined, webgpuMissing: false, wgsl: [], glsl: [], faces: { depthTest: false, culling: false, cullMode: null }, noCull: false, cullOn: false };
-  Object.defineProperty(window, '__grade', { value: g, enumerable: false });
+  // (read-only: a page that assigns to it is noted, grader/browser/tamper.js)
+  Object.defineProperty(window, '__grade', { get: () => g, set: () => { g.replacedByPage = true; }, enumerable: false });
   const add = EventTarget.prototype.addEventListener;
   const apiOf = { webgl: 'webgl', 'experimental-webgl': 'webgl', webgl2: 'webgl2', webgpu: 'webgpu' };
   const realGetContext = HTMLCanvasElement.prototype.getContext;
@@ -205,23 +206,6 @@ export function instrumentScript() {
   g.state = () => ({ api: g.api, frames: window.__webgpuCapture ? window.__webgpuCapture.frames : 0, adapter: g.adapter, webgpuMissing: g.webgpuMissing, draws: g.draws,
     vertices: g.vertices, pending: g.pending,
     shaderErrors: [...g.shaderErrors], gpuErrors: [...g.gpuErrors], faces: { ...g.faces } });
-
-  /** The target canvas (the largest visible one), composited over white: a PNG data URL with format 'png' (the grader, which sends it out of the page: a tenth of the raw bytes, lossless), else its RGBA bytes (the check page, in the page). */
-  g.pixels = (format) => {
-    const all = [...document.querySelectorAll('canvas')].filter((c) => c.width > 0 && c.height > 0 && c.getClientRects().length);
-    if (!all.length) return null;
-    const canvas = all.reduce((a, b) => (b.width * b.height > a.width * a.height ? b : a));
-    const copy = document.createElement('canvas');
-    copy.width = canvas.width;
-    copy.height = canvas.height;
-    const c2 = copy.getContext('2d');
-    c2.fillStyle = '#fff';
-    c2.fillRect(0, 0, copy.width, copy.height);
-    c2.drawImage(canvas, 0, 0);
-    const api = canvas.getAttribute('data-grade-api');
-    if (format === 'png') return { width: copy.width, height: copy.height, api, png: copy.toDataURL('image/png') };
-    return { width: copy.width, height: copy.height, api, data: c2.getImageData(0, 0, copy.width, copy.height).data };
-  };
 
   /**
    * A click as a user's, on control `index`: pointer and mouse down and up at its centre, then

@@ -15,7 +15,7 @@ import { auditOrbitStopsAgain, auditOrbit, auditNotStopped } from './audits/orbi
 import { auditHighlight, auditPlaceFarther } from './audits/highlight.js';
 import { auditSliders } from './audits/sliders.js';
 import { auditLeastShininess, auditPerFragment } from './audits/shading.js';
-import { auditWinding, auditClosed, auditPerFace, auditGrowth } from './audits/geometry.js';
+import { auditWinding, auditClosed, auditPerFace, auditGrowth, auditPictureNotGeometry } from './audits/geometry.js';
 
 /**
  * { fail, checks, numbers, shown, notGraded } for one part's artifact: `fail` (a reason) when the
@@ -35,6 +35,8 @@ export function auditPart({ facts, images }, rubric) {
   const C = { facts, images, T, rubric, part, must, say, numbers, imagesShown: shown };
   let notGraded = notGradedHere(C);
   const result = (fail) => ({ fail, checks, numbers, shown, tooSlow: facts.tooSlow || null, ...(notGraded ? { notGraded } : {}) });
+  // a page that replaced what the grader reads through may show one thing and hand the grader another
+  if (facts.tampered) say('review', `the page replaced or probed what the grader reads it through: ${facts.tampered.join(', ')} (a hand-in must not change the browser's own functions or the grader's, nor draw otherwise under a test driver): what it showed may not be what the grader saw, a teacher looks`);
   if (facts.tooSlow) {
     // nothing judged: where the bound ran out depends on the machine, the verdict must not; a page
     // that draws is not broken for being slow: not graded here (the rubric's tooSlowVerdict)
@@ -60,6 +62,7 @@ export function auditPart({ facts, images }, rubric) {
   auditSphere(C, judged, facts.ladder.map((l) => l.roundness), analyse(images.first, T).roundness);
   auditClosed(C);
   auditGrowth(C);
+  auditPictureNotGeometry(C, judged);
   auditPerspective(C, auditNormals(C, judged));
   auditPerFace(C);
   auditDepthCulling(C);

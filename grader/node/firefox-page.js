@@ -8,6 +8,8 @@ import { drawBatchScript } from '../browser/draw-batch.js';
 import { instrumentScript } from '../browser/instrument.js';
 import { geometryInit } from '../browser/geometry.js';
 import { sentScript } from '../browser/sent.js';
+import { pixelsScript } from '../browser/pixels.js';
+import { tamperScript } from '../browser/tamper.js';
 import { frameClockScript } from '../browser/clock.js';
 import { submissionAnswers, urlOf } from './serve-submission.js';
 import { FROZEN, pageDriver } from './playwright-page.js';
@@ -63,9 +65,11 @@ export function firefoxOpener(browser, host) {
       });
       await page.evaluateOnNewDocument(drawBatchScript);
       await page.evaluateOnNewDocument(instrumentScript);
+      await page.evaluateOnNewDocument(pixelsScript);
       await page.evaluateOnNewDocument(geometryInit);
       await page.evaluateOnNewDocument(sentScript);
       await page.evaluateOnNewDocument(frameClockScript, FROZEN.getTime());
+      await page.evaluateOnNewDocument(tamperScript);
       const url = urlOf(site.origin, root, rel, query).href;
       let response;
       try {

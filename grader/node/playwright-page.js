@@ -9,6 +9,8 @@ import { drawBatchScript } from '../browser/draw-batch.js';
 import { instrumentScript } from '../browser/instrument.js';
 import { geometryInit } from '../browser/geometry.js';
 import { sentScript } from '../browser/sent.js';
+import { pixelsScript } from '../browser/pixels.js';
+import { tamperScript } from '../browser/tamper.js';
 import { frameClockScript } from '../browser/clock.js';
 import { serveSubmission, urlOf } from './serve-submission.js';
 
@@ -37,9 +39,11 @@ export function partOpener(browser, host) {
     await context.addInitScript(webgpuCaptureScript);
     await context.addInitScript(drawBatchScript);
     await context.addInitScript(instrumentScript);
+    await context.addInitScript(pixelsScript);
     await context.addInitScript(geometryInit);
     await context.addInitScript(sentScript);
     await context.addInitScript(frameClockScript, FROZEN.getTime());
+    await context.addInitScript(tamperScript);
     const page = await context.newPage();
     page.on('popup', (popup) => {
       site.log.blocked.push(`popup: ${popup.url()}`);
@@ -139,6 +143,8 @@ export function pageDriver(page, log) {
     sources: () => page.evaluate(() => ({ glsl: window.__grade.glsl, wgsl: window.__grade.wgsl })),
     /** The geometry of the last frame drawn, summed up (grader/browser/geometry.js): triangles, winding, closed, per-face attributes. */
     /** What the page last sent for its shaders, a digest a key (grader/browser/sent.js): uniforms, constant attributes, vertex buffers. */
+    /** The grader's hooks the page replaced (grader/browser/tamper.js), by name. */
+    tampered: () => page.evaluate(() => (window.__tamper ? window.__tamper.read() : [])),
     sent: () => page.evaluate(() => (window.__sent ? window.__sent.read() : null)),
     geometry: (limits) => page.evaluate((l) => (window.__geometry ? window.__geometry.read(l) : { why: 'the geometry was not recorded' }), limits),
     errors: () => log.errors,

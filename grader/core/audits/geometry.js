@@ -69,3 +69,11 @@ export function auditGrowth({ facts, T, say, numbers }) {
   numbers.growth = f;
   say('mistake', `the page draws more every frame (${f[0]} → ${f[f.length - 1]} vertices over ${f.length} frames, no control touched): the mesh is built again and appended to its arrays, and the page slows until it stalls`);
 }
+
+/** A round sphere in the picture drawn with no more than a few triangles is a picture, not geometry (a textured quad, a sphere traced per pixel). */
+export function auditPictureNotGeometry({ facts, T, say }, judged) {
+  // (the triangles are counted whether or not their positions could be read)
+  const g = [facts.geometry, facts.geometryAtFirst].find((x) => x && Number.isFinite(x.triangles));
+  if (!g || !g.draws || 3 * g.triangles + (g.otherVertices || 0) > 3 * T.pictureTriangles || judged.an.blank || !(judged.an.roundness <= T.roundness)) return;
+  say('review', `the sphere is a picture, not geometry: a round sphere shows, but the page draws ${g.triangles} triangle${g.triangles === 1 ? '' : 's'} (read from what it sent to WebGL): the slide asks for a tetrahedron subdivided into a sphere`);
+}

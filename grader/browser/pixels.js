@@ -1,0 +1,35 @@
+// The grader's read-back of the canvas, as an init script after instrument.js: window.__grade.pixels.
+// It calls the browser's own functions as they were before the page's first script ran (a page
+// that replaces toDataURL, drawImage or getImageData afterwards changes what it reads itself, not
+// what the grader reads), and it cannot be replaced (grader/browser/tamper.js says who tried).
+export function pixelsScript() {
+  const g = window.__grade;
+  if (!g || g.pixels) return;
+  const C = HTMLCanvasElement.prototype, X = CanvasRenderingContext2D.prototype, D = Document.prototype, E = Element.prototype;
+  const property = (proto, name) => Object.getOwnPropertyDescriptor(proto, name);
+  const N = {
+    querySelectorAll: D.querySelectorAll, createElement: D.createElement, getClientRects: E.getClientRects, getAttribute: E.getAttribute,
+    getContext: C.getContext, toDataURL: C.toDataURL, width: property(C, 'width'), height: property(C, 'height'),
+    fillStyle: property(X, 'fillStyle'), fillRect: X.fillRect, drawImage: X.drawImage, getImageData: X.getImageData,
+  };
+  const size = (c) => ({ width: N.width.get.call(c), height: N.height.get.call(c) });
+
+  /** The target canvas (the largest visible one), composited over white: a PNG data URL with format 'png' (the grader, which sends it out of the page: a tenth of the raw bytes, lossless), else its RGBA bytes (the check page, in the page). */
+  const pixels = (format) => {
+    const all = [...N.querySelectorAll.call(document, 'canvas')].filter((c) => size(c).width > 0 && size(c).height > 0 && N.getClientRects.call(c).length);
+    if (!all.length) return null;
+    const canvas = all.reduce((a, b) => (size(b).width * size(b).height > size(a).width * size(a).height ? b : a));
+    const { width, height } = size(canvas);
+    const copy = N.createElement.call(document, 'canvas');
+    N.width.set.call(copy, width);
+    N.height.set.call(copy, height);
+    const c2 = N.getContext.call(copy, '2d');
+    N.fillStyle.set.call(c2, '#fff');
+    N.fillRect.call(c2, 0, 0, width, height);
+    N.drawImage.call(c2, canvas, 0, 0);
+    const api = N.getAttribute.call(canvas, 'data-grade-api');
+    if (format === 'png') return { width, height, api, png: N.toDataURL.call(copy, 'image/png') };
+    return { width, height, api, data: N.getImageData.call(c2, 0, 0, width, height).data };
+  };
+  Object.defineProperty(g, 'pixels', { value: pixels, enumerable: true, configurable: true });
+}
