@@ -4,7 +4,7 @@
 // joining on a separator, so that Windows' out folders work as POSIX's; `pathImpl` is Node's path
 // of this machine, or the other one's in tests.
 import path from 'node:path';
-import { pathToFileURL } from 'node:url';
+import { fileURLToPath, pathToFileURL } from 'node:url';
 
 // names Windows keeps for devices, in any letter case and with any extension ("con.txt" too)
 const RESERVED = /^(con|prn|aux|nul|com[0-9¹²³]|lpt[0-9¹²³])(\.|$)/i;
@@ -35,4 +35,13 @@ export function hrefOf(out, file, pathImpl = path) {
   const target = pathToFileURL(pathImpl.resolve(out, file), { windows });
   if (!target.href.startsWith(base.href)) throw new Error(`${file} is not under ${out}`);
   return target.href.slice(base.href.length);
+}
+
+/** The file under `out` that a link of hrefOf names (its letters decoded: Thé_Phone, not Th%C3%A9_Phone); null where it leaves `out`. */
+export function fileOfHref(out, href, pathImpl = path) {
+  const windows = pathImpl === path.win32;
+  const base = pathToFileURL(pathImpl.join(out, pathImpl.sep), { windows });
+  const target = new URL(href, base);
+  if (!target.href.startsWith(base.href)) return null;
+  return fileURLToPath(target, { windows });
 }

@@ -7,7 +7,7 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import path from 'node:path';
 import { findParts } from '../../grader/node/parts.js';
-import { partFiles, hrefOf, safeName } from '../../grader/node/layout.js';
+import { partFiles, hrefOf, fileOfHref, safeName } from '../../grader/node/layout.js';
 import { fileOf, urlOf } from '../../grader/node/serve-submission.js';
 
 const SYSTEMS = [
@@ -66,6 +66,9 @@ for (const { name, p, root } of SYSTEMS) {
     assert.equal(hrefOf(out, p.join(files.artifactDir, 'judged.png'), p), 'artifacts/S%C3%B8ren_%C3%86bel%C3%B8/WP04P3/judged.png');
     assert.equal(new URL(hrefOf(out, p.join(files.artifactDir, 'judged.png'), p), 'http://x/report/').pathname, '/report/artifacts/S%C3%B8ren_%C3%86bel%C3%B8/WP04P3/judged.png');
     assert.throws(() => hrefOf(out, p.join(out, '..', 'elsewhere.png'), p), /is not under/);
+    // and back: the feedback page reads the picture a report's link names (æ, ø, not %C3%A6)
+    assert.equal(fileOfHref(out, hrefOf(out, p.join(files.artifactDir, 'judged.png'), p), p), p.join(files.artifactDir, 'judged.png'));
+    assert.equal(fileOfHref(out, '../elsewhere.png', p), null);
   });
 
   test(`${name}: the submission server maps its URLs to files under the root and back, and nothing outside`, () => {

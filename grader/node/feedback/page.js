@@ -4,9 +4,9 @@
 // plainly, the slide's sentence it misses, the student's own pictures beside our reference, the
 // controls the grader found and what it did with them, and how to check again before handing in.
 import { existsSync, readFileSync } from 'node:fs';
-import path from 'node:path';
 import { missedSlides } from '../../../check/slides.js';
 import { NOT_GRADED } from '../../core/verdict.js';
+import { fileOfHref } from '../layout.js';
 
 const esc = (s) => String(s).replace(/[&<>"']/g, (c) => ({ '&': '&amp;', '<': '&lt;', '>': '&gt;', '"': '&quot;', "'": '&#39;' })[c]);
 
@@ -26,8 +26,8 @@ const PICTURES = [
 /** A picture of the report (a path relative to `out`) as a data: URL, or null when it is not there. */
 function dataUrl(out, rel) {
   if (!rel) return null;
-  const f = path.resolve(out, rel);
-  if (!f.startsWith(path.resolve(out) + path.sep) || !existsSync(f) || !/\.png$/i.test(f)) return null;
+  const f = fileOfHref(out, rel); // (the report's links are URLs: a name's letters are %-encoded there)
+  if (!f || !existsSync(f) || !/\.png$/i.test(f)) return null;
   return `data:image/png;base64,${readFileSync(f).toString('base64')}`;
 }
 
