@@ -1,7 +1,7 @@
 // Finding a page's controls as a teacher does: by what they do to the picture. A control's
 // names (id, name, label, the words beside it) only order the trials, break ties (which
-// material slider is kd) and name it in the report. Plain data: the trials' pictures are judged
-// by judge.js; driving the page is drive.js's.
+// material slider is kd) and name it in the report. Plain data: the gatherers (core/gather/) drive
+// the page and take the trials' pictures; these functions read them.
 import { silhouetteChange, pictureChange, outlineFlips } from './measure/change.js';
 
 const re = (s) => new RegExp(s, 'i');
