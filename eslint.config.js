@@ -4,7 +4,7 @@ import js from '@eslint/js';
 import globals from 'globals';
 
 export default [
-  { ignores: ['node_modules/', 'out/', 'test-results/', 'playwright-report/', 'tests/fixtures/handins/', 'tests/fixtures/student/', 'tests/fixtures/similar/', 'tests/fixtures/artifacts/', 'tests/fixtures/check/'] },
+  { ignores: ['node_modules/', 'out/', 'test-results/', 'playwright-report/', 'tests/fixtures/handins/', 'tests/fixtures/student/', 'tests/fixtures/similar/', 'tests/fixtures/artifacts/', 'tests/fixtures/check/', 'tests/fixtures/firefox/', 'tests/fixtures/heavy/'] },
   js.configs.recommended,
   {
     languageOptions: { ecmaVersion: 2023, sourceType: 'module' },
