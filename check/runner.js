@@ -11,8 +11,7 @@ import { frameWatchScript } from './frame-watch.js';
 import { frameClockScript } from '../grader/browser/clock.js';
 import { drawBatchScript } from '../grader/browser/draw-batch.js';
 import { instrumentScript } from '../grader/browser/instrument.js';
-import { geometryInit } from '../grader/browser/geometry.js';
-import { sentScript } from '../grader/browser/sent.js';
+import { recordersInit } from '../grader/browser/geometry.js';
 import { pixelsScript } from '../grader/browser/pixels.js';
 import { tamperScript } from '../grader/browser/tamper.js';
 import { webgpuCaptureScript } from '../grader/browser/webgpu-capture.js';
@@ -33,8 +32,7 @@ export function frameScript(rubric) {
     `(${drawBatchScript})();`,
     `(${instrumentScript})();`,
     `(${pixelsScript})();`,
-    geometryInit,
-    `(${sentScript})();`,
+    recordersInit,
     `(${frameClockScript})(${FROZEN});`,
     `(${tamperScript})();`,
   ].join('\n');

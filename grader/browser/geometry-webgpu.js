@@ -3,7 +3,7 @@
 // mapped, or written by queue.writeBuffer), each pipeline's vertex layout, topology and culling, and
 // each draw with the buffers bound then. A frame ends at a queue's submit. Each draw is resolved
 // into the form grader/browser/mesh.js sums up only when the grader asks.
-export function webgpuGeometry({ frameOf, closeFrame, vertexInputs, MAX_DRAWS, FLOAT, TRIANGLES }) {
+export function webgpuGeometry({ frameOf, closeFrame, wrap: after, bytesIn, vertexInputs, MAX_DRAWS, FLOAT, TRIANGLES }) {
   if (!window.GPUDevice || !window.GPURenderPassEncoder) return;
   const VERTEX = 0x20, INDEX = 0x10;
   const bytesOf = new WeakMap(); // GPUBuffer → Uint8Array
@@ -11,15 +11,6 @@ export function webgpuGeometry({ frameOf, closeFrame, vertexInputs, MAX_DRAWS, F
   const codeOf = new WeakMap(); // GPUShaderModule → WGSL
   const pipes = new WeakMap(); // GPURenderPipeline → { buffers, topology, cull, inputs }
   const passes = new WeakMap(); // GPURenderPassEncoder → { pipeline, vertex, index }
-  const after = (proto, name, fn) => {
-    const real = proto[name];
-    if (typeof real !== 'function') return;
-    proto[name] = function (...a) {
-      const out = real.apply(this, a);
-      try { fn(this, a, out); } catch { /* the record never breaks the page */ }
-      return out;
-    };
-  };
   const D = GPUDevice.prototype, Q = GPUQueue.prototype, B = GPUBuffer.prototype, P = GPURenderPassEncoder.prototype;
   after(D, 'createBuffer', (device, [desc], buffer) => {
     if (!desc || !(desc.usage & (VERTEX | INDEX)) || !(desc.size > 0 && desc.size < 2 ** 28)) return;
@@ -39,13 +30,9 @@ export function webgpuGeometry({ frameOf, closeFrame, vertexInputs, MAX_DRAWS, F
     } catch { /* (a detached range: nothing kept) */ }
     return unmap.apply(this, a);
   };
-  after(Q, 'writeBuffer', (queue, [buffer, at, data, dataOffset = 0, size]) => {
-    const bytes = bytesOf.get(buffer);
-    if (!bytes || !data) return;
-    const per = ArrayBuffer.isView(data) ? data.BYTES_PER_ELEMENT || 1 : 1;
-    const base = ArrayBuffer.isView(data) ? data.byteOffset : 0, whole = ArrayBuffer.isView(data) ? data.buffer : data;
-    const start = base + dataOffset * per, length = size !== undefined ? size * per : (ArrayBuffer.isView(data) ? data.byteLength : data.byteLength) - dataOffset * per;
-    if (at + length <= bytes.length) bytes.set(new Uint8Array(whole, start, length), at);
+  after(Q, 'writeBuffer', (queue, [buffer, at, data, dataOffset, size]) => {
+    const bytes = bytesOf.get(buffer), part = bytes && bytesIn(data, dataOffset, size);
+    if (part && at + part.length <= bytes.length) bytes.set(part, at);
   });
   after(Q, 'submit', () => closeFrame());
   after(D, 'createShaderModule', (device, [desc], module) => codeOf.set(module, String((desc && desc.code) || '')));

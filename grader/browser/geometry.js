@@ -1,44 +1,58 @@
 // What a graded page sends to WebGL as geometry, as an init script added after instrument.js (so
 // its wrappers see the page's own calls): the bytes of each buffer (bufferData, bufferSubData),
 // the attribute layout (vertexAttribPointer, vertex array objects), the program, the culling state
-// and each draw's range, grouped into frames (a frame starts at a clear of the colour buffer, or
+// (as instrument.js keeps it) and each draw's range, grouped into frames (a frame starts at a clear of the colour buffer, or
 // at a task's first draw on a page that never clears; in WebGPU, a queue's submit ends it:
 // grader/browser/geometry-webgpu.js). Nothing is changed; nothing is analysed
 // until the grader asks: window.__geometry.read() sums up the last frame's triangles (analyseMesh,
 // grader/browser/mesh.js, a pure function also run by the unit tests).
+// The same script starts grader/browser/sent.js's record (the uniforms), which shares its helpers.
 import { meshAnalysis } from './mesh.js';
 import { webgpuGeometry } from './geometry-webgpu.js';
+import { sentScript } from './sent.js';
 
-/** The init script as text: the recorder with the analysis in it (a graded page gets both). */
-export const geometryInit = `(${geometryScript})((${meshAnalysis})(), ${webgpuGeometry});`;
+/** The init script as text: the recorders of what a page sends (its geometry, WebGL and WebGPU, and its uniforms) with the analysis in it. */
+export const recordersInit = `(${geometryScript})((${meshAnalysis})(), ${webgpuGeometry}, ${sentScript});`;
 
-function geometryScript(analyseMesh, recordWebGPU) {
+function geometryScript(analyseMesh, recordWebGPU, recordSent) {
   if (window.__geometry || !window.WebGLRenderingContext) return;
+  const grade = window.__grade; // (instrument.js: the culling state the page set)
   const TRIANGLES = 4, FLOAT = 0x1406, COLOR_BUFFER_BIT = 0x4000;
   const MAX_DRAWS = 512, HISTORY = 32;
   const bytesOf = new WeakMap(); // WebGLBuffer → Uint8Array: what the page uploaded last
-  const ctxState = new WeakMap(); // context → { array, vao, program, cull }
-  const vaoState = new WeakMap(); // vertex array object → { attribs, elements, version }
+  const ctxState = new WeakMap(); // context → { array, vao, defaultVao, program }
+  const vaoState = new WeakMap(); // vertex array object → { attribs, elements, snap }
   const programInfo = new WeakMap(); // program → { position, attributes } (from its vertex shader)
   const rec = { cur: null, last: null, history: [], clears: 0, task: false };
   Object.defineProperty(window, '__geometry', { value: rec, enumerable: false });
 
-  const newVao = () => ({ attribs: [], elements: null, version: 0, snap: null });
+  const newVao = () => ({ attribs: [], elements: null, snap: null });
   const stateOf = (gl) => {
     let st = ctxState.get(gl);
-    if (!st) ctxState.set(gl, st = { array: null, vao: newVao(), defaultVao: null, program: null, cull: { on: false, mode: 'back', front: 'ccw' } });
-    if (!st.defaultVao) st.defaultVao = st.vao;
+    if (!st) {
+      const vao = newVao();
+      ctxState.set(gl, st = { array: null, vao, defaultVao: vao, program: null });
+    }
     return st;
   };
+  /**
+   * The bytes an upload names, as a view (no copy): a typed array's `offset` and `length` count its
+   * elements, an ArrayBuffer's count bytes (bufferData's srcOffset and length, writeBuffer's dataOffset
+   * and size); null where `src` is no data.
+   */
+  const bytesIn = (src, offset, length) => {
+    if (!src || !(src instanceof ArrayBuffer || ArrayBuffer.isView(src))) return null;
+    const per = ArrayBuffer.isView(src) ? src.BYTES_PER_ELEMENT || 1 : 1;
+    const base = ArrayBuffer.isView(src) ? src.byteOffset : 0, whole = ArrayBuffer.isView(src) ? src.buffer : src;
+    const start = base + (offset ? offset * per : 0);
+    const len = length ? length * per : src.byteLength - (offset ? offset * per : 0);
+    return new Uint8Array(whole, start, Math.max(0, len));
+  };
+  // a buffer's own copy of an upload (bufferData(target, size) makes it zeros)
   const copy = (src, offset, length) => {
     if (typeof src === 'number') return src > 0 && src < 2 ** 28 ? new Uint8Array(src) : null;
-    if (!src) return null;
-    if (src instanceof ArrayBuffer) return new Uint8Array(src.slice(0));
-    if (!ArrayBuffer.isView(src)) return null;
-    const per = src.BYTES_PER_ELEMENT || 1;
-    const start = src.byteOffset + (offset ? offset * per : 0);
-    const len = length ? length * per : src.byteLength - (offset ? offset * per : 0);
-    return new Uint8Array(src.buffer.slice(start, start + Math.max(0, len)));
+    const view = bytesIn(src, offset, length);
+    return view && view.slice();
   };
   const closeFrame = () => {
     if (!rec.cur) return;
@@ -62,7 +76,7 @@ function geometryScript(analyseMesh, recordWebGPU) {
     const f = frameOf(d.count);
     const st = stateOf(gl), vao = st.vao;
     if (!vao.snap) vao.snap = vao.attribs.map((a) => a && { ...a });
-    const cull = st.cull.on ? `${st.cull.mode}/${st.cull.front}` : 'off';
+    const cull = grade && grade.cullOn ? `${grade.faces.cullMode === 'front-and-back' ? 'both' : grade.faces.cullMode || 'back'}/${grade.faces.frontFace || 'ccw'}` : 'off';
     const prev = f.draws[f.draws.length - 1];
     if (prev && !d.indexed && !prev.indexed && d.mode === TRIANGLES && prev.mode === TRIANGLES && prev.gl === gl && prev.program === st.program
       && prev.attribs === vao.snap && prev.cull === cull && prev.first + prev.count === d.first) {
@@ -72,14 +86,15 @@ function geometryScript(analyseMesh, recordWebGPU) {
     if (f.draws.length >= MAX_DRAWS) { f.over++; return; }
     f.draws.push({ ...d, gl, program: st.program, attribs: vao.snap, elements: d.indexed ? vao.elements : null, cull });
   };
-  const changed = (vao) => { vao.version++; vao.snap = null; };
+  const changed = (vao) => { vao.snap = null; };
 
+  /** Wraps proto[name] so that `after(this, args, result)` hears each call after it ran (its errors never reach the page). */
   const wrap = (proto, name, after) => {
-    const real = proto[name];
+    const real = proto && proto[name];
     if (typeof real !== 'function') return;
     proto[name] = function (...a) {
       const out = real.apply(this, a);
-      try { after(this, a); } catch { /* the record never breaks the page */ }
+      try { after(this, a, out); } catch { /* the record never breaks the page */ }
       return out;
     };
   };
@@ -129,10 +144,6 @@ function geometryScript(analyseMesh, recordWebGPU) {
     });
     wrap(proto, 'bindVertexArray', (gl, [vao]) => bindVao(gl, vao));
     wrap(proto, 'useProgram', (gl, [program]) => { stateOf(gl).program = program; });
-    wrap(proto, 'enable', (gl, [cap]) => { if (cap === gl.CULL_FACE) stateOf(gl).cull.on = true; });
-    wrap(proto, 'disable', (gl, [cap]) => { if (cap === gl.CULL_FACE) stateOf(gl).cull.on = false; });
-    wrap(proto, 'cullFace', (gl, [mode]) => { stateOf(gl).cull.mode = mode === gl.FRONT ? 'front' : mode === gl.BACK ? 'back' : 'both'; });
-    wrap(proto, 'frontFace', (gl, [mode]) => { if (mode === gl.CW || mode === gl.CCW) stateOf(gl).cull.front = mode === gl.CW ? 'cw' : 'ccw'; });
     wrap(proto, 'clear', (gl, [mask]) => {
       if (!(mask & COLOR_BUFFER_BIT) || gl.getParameter(gl.FRAMEBUFFER_BINDING)) return;
       rec.clears++;
@@ -170,7 +181,8 @@ function geometryScript(analyseMesh, recordWebGPU) {
     return info;
   };
 
-  recordWebGPU({ frameOf, closeFrame, vertexInputs: analyseMesh.vertexInputs, MAX_DRAWS, FLOAT, TRIANGLES });
+  recordWebGPU({ frameOf, closeFrame, wrap, bytesIn, vertexInputs: analyseMesh.vertexInputs, MAX_DRAWS, FLOAT, TRIANGLES });
+  recordSent({ wrap, bytesIn });
 
   /** The last frame's geometry, summed up (analyseMesh.summary): small, plain data. */
   rec.read = (limits) => {

@@ -1,9 +1,10 @@
-// What a graded page sets for its shaders, as an init script added after instrument.js: the last
+// What a graded page sets for its shaders, started by grader/browser/geometry.js's init script (with
+// its helpers: `wrap` hears a call after it ran, `bytesIn` reads an upload's bytes): the last
 // value of each uniform (WebGL: by the uniform's name; WebGPU: each 16 bytes of a uniform buffer),
 // each constant attribute (gl.vertexAttrib*), and a digest of each vertex buffer's last upload.
 // window.__sent.read() gives { key: digest }: two reads compared tell what the page sent
 // differently between them (a slider's input event that changed kd, a view matrix that turned).
-export function sentScript() {
+export function sentScript({ wrap: after, bytesIn }) {
   if (window.__sent) return;
   const values = new Map(); // key → digest (a string)
   const buffers = []; // the buffer keys, oldest first: a page that makes a buffer a frame keeps the last MAX_BUFFERS
@@ -21,15 +22,6 @@ export function sentScript() {
   const idOf = (o) => ids.get(o) ?? (ids.set(o, ++nextId), nextId);
   const rec = {};
   Object.defineProperty(window, '__sent', { value: rec, enumerable: false });
-  const after = (proto, name, fn) => {
-    const real = proto && proto[name];
-    if (typeof real !== 'function') return;
-    proto[name] = function (...a) {
-      const out = real.apply(this, a);
-      try { fn(this, a, out); } catch { /* the record never breaks the page */ }
-      return out;
-    };
-  };
   const digestOf = (v) => {
     if (v === null || v === undefined) return String(v);
     if (typeof v === 'number' || typeof v === 'boolean') return String(v);
@@ -38,7 +30,7 @@ export function sentScript() {
   };
   // a large upload is known by its length and 64 of its bytes, evenly spread
   const sampleOf = (src) => {
-    const bytes = src instanceof ArrayBuffer ? new Uint8Array(src) : ArrayBuffer.isView(src) ? new Uint8Array(src.buffer, src.byteOffset, src.byteLength) : null;
+    const bytes = bytesIn(src);
     if (!bytes) return String(src);
     const step = Math.max(1, Math.floor(bytes.length / 64)), out = [bytes.length];
     for (let k = 0; k < bytes.length; k += step) out.push(bytes[k]);
@@ -76,13 +68,9 @@ export function sentScript() {
       if (desc && desc.usage & UNIFORM) kinds.set(buffer, 'uniform');
       else if (desc && desc.usage & VERTEX) kinds.set(buffer, 'vertex');
     });
-    after(GPUQueue.prototype, 'writeBuffer', (queue, [buffer, at, data, dataOffset = 0, size]) => {
-      const kind = kinds.get(buffer);
-      if (!kind || !data) return;
-      const per = ArrayBuffer.isView(data) ? data.BYTES_PER_ELEMENT || 1 : 1;
-      const whole = ArrayBuffer.isView(data) ? data.buffer : data, base = ArrayBuffer.isView(data) ? data.byteOffset : 0;
-      const start = base + dataOffset * per, length = size !== undefined ? size * per : (ArrayBuffer.isView(data) ? data.byteLength : data.byteLength) - dataOffset * per;
-      const bytes = new Uint8Array(whole, start, Math.max(0, length));
+    after(GPUQueue.prototype, 'writeBuffer', (queue, [buffer, at, data, dataOffset, size]) => {
+      const kind = kinds.get(buffer), bytes = kind && bytesIn(data, dataOffset, size);
+      if (!bytes) return;
       if (kind === 'vertex') { setBuffer(`buffer ${idOf(buffer)} at ${at}`, sampleOf(bytes)); return; }
       // a uniform buffer, 16 bytes at a time (a vec4, or a matrix's column)
       const id = idOf(buffer);

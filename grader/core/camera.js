@@ -53,8 +53,12 @@ export function cameraRotations(cameras, tolerance) {
 
 /** How far the camera turned over `cameras`: the largest turn from the first, in degrees; null where unknown. */
 export function cameraTurn(cameras, tolerance) {
-  const rs = cameraRotations(cameras.filter(Boolean), tolerance);
-  return rs && Math.max(...rs.slice(1).map((r) => turnBetween(rs[0], r)));
+  return rotationsTurn(cameraRotations(cameras.filter(Boolean), tolerance));
+}
+
+/** The largest turn from the first of `rotations` (cameraRotations), in degrees; null where there are none. */
+export function rotationsTurn(rotations) {
+  return rotations && Math.max(...rotations.slice(1).map((r) => turnBetween(rotations[0], r)));
 }
 
 /** A direction `v` seen in the eye space of rotation `from`, as it would be seen from `to` if it stayed in the world: to·fromᵀ·v. */

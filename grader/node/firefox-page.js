@@ -6,8 +6,7 @@
 // no WebGPU, so there is no WebGPU capture: a WebGPU part is not graded here (audits/first-frame.js).
 import { drawBatchScript } from '../browser/draw-batch.js';
 import { instrumentScript } from '../browser/instrument.js';
-import { geometryInit } from '../browser/geometry.js';
-import { sentScript } from '../browser/sent.js';
+import { recordersInit } from '../browser/geometry.js';
 import { pixelsScript } from '../browser/pixels.js';
 import { tamperScript } from '../browser/tamper.js';
 import { frameClockScript } from '../browser/clock.js';
@@ -66,8 +65,7 @@ export function firefoxOpener(browser, host) {
       await page.evaluateOnNewDocument(drawBatchScript);
       await page.evaluateOnNewDocument(instrumentScript);
       await page.evaluateOnNewDocument(pixelsScript);
-      await page.evaluateOnNewDocument(geometryInit);
-      await page.evaluateOnNewDocument(sentScript);
+      await page.evaluateOnNewDocument(recordersInit);
       await page.evaluateOnNewDocument(frameClockScript, FROZEN.getTime());
       await page.evaluateOnNewDocument(tamperScript);
       const url = urlOf(site.origin, root, rel, query).href;

@@ -1,7 +1,7 @@
 // WP04P3: "the camera orbits the sphere" with a button that toggles it: the lit side turns as the
 // camera orbits (a light that stays in the world), and a control starts and stops the orbit.
 import { describe } from '../controls.js';
-import { cameraRotations, cameraTurn, staysInWorld } from '../camera.js';
+import { cameraRotations, rotationsTurn, staysInWorld } from '../camera.js';
 
 const fmt = (x, d = 2) => (x === null || x === undefined || Number.isNaN(x) ? '–' : Number(x).toFixed(d));
 const signedAngle = (a, b) => (180 / Math.PI) * Math.acos(Math.max(-1, Math.min(1, (a[0] * b[0] + a[1] * b[1] + a[2] * b[2]) / (Math.hypot(...a) * Math.hypot(...b)))));
@@ -30,7 +30,7 @@ export function auditOrbit({ facts, T, must, say, numbers }, lit) {
       const ref = seen.reduce((b, v, k) => (v.fit.r2 > seen[b].fit.r2 ? k : b), 0), l = seen[ref].fit.light;
       apart = Math.max(...rs.map((r) => signedAngle(staysInWorld(rs[ref], r, l), l)));
     }
-    const camera = rs && cameraTurn(seen.map((v) => v.camera), T.cameraRotationTolerance);
+    const camera = rotationsTurn(rs);
     if (rs) Object.assign(numbers, { cameraTurn: camera, lightTurnIfWorld: apart });
     const words = `the fitted light turns ${fmt(turn, 1)}° over ${orbitFits.length} views${rs ? `, where a light in the world would have turned ${fmt(apart, 1)}° on screen (the camera turns ${fmt(camera, 1)}°: its view matrix, as the page sent it)` : ''}`;
     // on a sphere only the shading shows the orbit: where the step asks for the orbit (P3) a light that
