@@ -12,6 +12,7 @@ export { samples, perspectiveSamples } from './measure/samples.js';
 export { normalColours } from './measure/normals.js';
 export { diffuseFit } from './measure/diffuse.js';
 export { hueByNormal, tintedByNormal, detintedFit, shadeFit } from './measure/tint.js';
+export { addedTintFit, addedClearly } from './measure/tint-added.js';
 export { highlightOf, highlightOffset, highlightSeen } from './measure/highlight.js';
 export { silhouetteChange, outlineFlips, shadingChange, pictureChange } from './measure/change.js';
 export { pointLightFit, pointLightPredict, highlightAbove, nearPointLight, clearlyBetter, clearlyNearFalloff } from './measure/point-light.js';

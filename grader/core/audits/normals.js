@@ -2,7 +2,7 @@
 // (how far those normals reach at the rim), and (P2) the normals facing the viewer: front faces
 // only, the depth test and back-face culling enabled, or the slide's clockwise experiment. P3–P5:
 // the same colours where lighting is asked are not lighting.
-import { analyse, samples, normalColours, pictureChange } from '../measure.js';
+import { analyse, samples, normalColours, pictureChange, addedTintFit, addedClearly } from '../measure.js';
 import { rimAngle } from '../measure/perspective.js';
 import { facesViewer } from '../gather/probes.js';
 
@@ -87,12 +87,17 @@ export function auditPerspective({ T, must, say, numbers }, seen) {
 /**
  * P3–P5: a lit step whose colours still decode to unit normals everywhere (WP04P1's 0.5·n + 0.5,
  * which a diffuse fit accepts: its brightness is linear in n, and it turns with the orbit) shows no
- * lighting. Returns true when it says so (the shading is then not judged as lighting).
+ * lighting, unless the lighting is added on top (0.5·p + 0.5·L_o decodes to unit normals where L_o
+ * is near 1): then the channels show a light common to all three beside the normal colouring
+ * (addedClearly), and the shading is judged with the colouring taken out. Returns true when it
+ * says the picture is no lighting (the shading is then not judged as lighting).
  */
 export function auditNormalsNotLight({ T, must, say, numbers }, judged) {
   if (!must.has('diffuse') && !must.has('highlight')) return false;
-  const nc = normalColours(samples(judged.img, judged.an));
+  const pts = samples(judged.img, judged.an);
+  const nc = normalColours(pts);
   if (!smoothUnitNormals(nc, T) || Math.abs(nc.det) < T.facingDeterminant) return false;
+  if (addedClearly(addedTintFit(pts, T), T)) return false;
   numbers.normalColouring = nc;
   say('mistake', `shows the normal colouring of WP04P1, not the lighting: its colours decode to unit normals 2c − 1 all over the sphere (off by ${fmt(nc.unitError, 3)}), which is 0.5·n + 0.5, not kd·Le·max(n·w_i, 0) + ambient`);
   return true;

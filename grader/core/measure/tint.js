@@ -4,11 +4,12 @@
 // and the highlight's place go astray. Here: whether the hue follows the normal (the colour-
 // independent part of the picture: each channel's share of the brightness), and the diffuse fit of
 // the picture with a brightness-albedo that is linear in n divided out (fitted in turns with the
-// lighting).
+// lighting), or with a normal colouring added to the lighting taken out (tint-added.js).
 import { luminance } from './samples.js';
 import { diffuseFit } from './diffuse.js';
 import { highlightSeen } from './highlight.js';
 import { leastSquares, solveNormal, symmetricEigenvalues3 } from './linear.js';
+import { addedTintFit, addedClearly } from './tint-added.js';
 
 const usable = (s) => Math.max(...s.c) < 0.99 && s.c[0] + s.c[1] + s.c[2] > 0.15;
 
@@ -120,13 +121,17 @@ const angleOf = (a, b) => (180 / Math.PI) * Math.acos(Math.max(-1, Math.min(1, a
  * plain and the de-tinted fits' lights), sure }: sure where the fit is clean (R² ≥ diffuseR2) and
  * either the plain fit is kept (dividing the tint out explains no more) or the albedo's brightness
  * is nearly even (slope < tintSlope) and both fits put the light within tintLightDegrees of each
- * other; where it is not, the fitted light cannot place a highlight.
+ * other; where it is not, the fitted light cannot place a highlight. A normal colouring added to
+ * the lighting (addedClearly) is taken out instead (addedTintFit): `tint.added` its share.
  */
 export function shadeFit(pts, T) {
   const plain = diffuseFit(pts, T);
   if (!plain) return null;
   const hue = hueByNormal(pts);
   if (!tintedByNormal(hue, T)) return plain;
+  // a normal colouring added to the lighting: its fit, read as any clean fit is
+  const added = addedTintFit(pts, T);
+  if (addedClearly(added, T)) return { ...added, tint: { turn: hue.turn, added: added.added.share, sure: added.r2 >= T.diffuseR2, plain } };
   const de = detintedFit(pts, T, plain);
   // the de-tinted fit where it explains the picture better, and does not lose a highlight the plain one sees
   const fit = de && de.r2 >= plain.r2 && (highlightSeen(de, T) || !highlightSeen(plain, T)) ? de : plain;
