@@ -14,7 +14,10 @@ export function auditFirstFrame({ facts, images, T, say }) {
   if (!images.first) return 'no canvas on the page';
   for (const e of g.shaderErrors) say('fail', e);
   if (g.api === 'webgpu' && g.adapter === null) say('fail', 'no WebGPU adapter: the page could not start WebGPU');
-  if (!analyse(images.first, T).blank) return null;
+  if (!analyse(images.first, T).blank) {
+    if (g.orbitStarted) say('pass', `note: the canvas stayed one colour${g.waited ? ` for ${g.waited} frames more` : ''} (the unlit side toward the camera?); the orbit, started by ${g.orbitStarted}, showed the sphere, and it was judged from there`);
+    return null;
+  }
   const why = g.shaderErrors[0] || g.gpuErrors[0] || facts.errors.find((e) => /page error|dialog/.test(e));
   if (!g.api) return `drew nothing: the page never got a WebGL or WebGPU context${why ? ` (${why})` : ''}`;
   if (!g.draws) return `drew nothing: the canvas is one colour, no draw call${why ? ` (${why})` : ''}`;

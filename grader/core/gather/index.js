@@ -9,7 +9,7 @@
 // grader, check/frame-page.js for the check page): state(), snap(), controls(), click(c),
 // setValue(c, v, events), press(key), tick(ms, frames) → state(), setNoCull(on), sources(), errors().
 import { session, TooSlow } from './session.js';
-import { findOrbit, sampleOrbit, look } from './orbit.js';
+import { findOrbit, sampleOrbit, look, startOrbitToSee } from './orbit.js';
 import { findLevel, climb } from './level.js';
 import { probeFaces, probeDepthCulling, raiseHighlight, trySliders, leastShininess, placeFarther } from './probes.js';
 import { unclip, brighten } from './visible.js';
@@ -62,6 +62,12 @@ async function gather(S) {
     const later = await S.shot();
     facts.first.waited = T.blankWaitFrames;
     if (later) firstShot = later;
+    // a lit step may face its unlit side to the camera until its orbit is started
+    const started = firstShot.an.blank && must.has('diffuse') ? await startOrbitToSee(S) : null;
+    if (started) {
+      firstShot = started.shot;
+      facts.first.orbitStarted = started.control;
+    }
     facts.first.blankGeometry = firstShot.an.blank ? await readGeometry(S) : null;
   }
   facts.canvas = { width: firstShot.img.width, height: firstShot.img.height };

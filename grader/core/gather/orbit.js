@@ -126,6 +126,32 @@ export async function findOrbit(S, controls) {
   facts.movedAtFirst = orbit.movedAtFirst;
 }
 
+/**
+ * A lit step whose picture stays one colour after its wait (the unlit side toward the camera, on
+ * a background of that colour) has its orbit started: each control named for the orbit, clicked in
+ * turn, and the orbit looked along (searchOrbit: counted samples) until a lit view shows (a thin
+ * crescent is no outline to judge levels by); a control that shows none is clicked again, to leave
+ * the page as it was. { shot, control } (the lit view, the control's description, left on: the
+ * orbit is then found moving), or null.
+ */
+export async function startOrbitToSee(S) {
+  const { T, P } = S;
+  S.step('starting the orbit to see the lit side');
+  const clickables = (await S.page.controls()).filter(isClickable);
+  for (const c of trialOrder(clickables, 'orbit', P, S.taken).filter((x) => named(x, 'orbit', P)).slice(0, T.maxControlTrials)) {
+    S.trialsMade++;
+    if (!await S.press(c, 'a control named for the orbit, to see the lit side,')) continue;
+    const seen = await searchOrbit(S, (img) => litView(img, T).lit);
+    if (seen.img) {
+      S.act(`  → a lit view after ${seen.k} orbit positions`);
+      return { shot: { img: seen.img, an: analyse(seen.img, T) }, control: describe(c) };
+    }
+    S.act(`  → no lit view in ${seen.k} orbit positions`);
+    await S.press(c, 'the same control again');
+  }
+  return null;
+}
+
 /** An orbit control found while looking for the level (it started the picture moving): sampled, then stopped again. */
 export async function orbitFoundLate(S, c) {
   if (S.must.has('diffuse') && !S.R.orbit) await sampleOrbit(S);
