@@ -6,6 +6,7 @@ import { existsSync, mkdirSync, readFileSync, rmSync, statSync, writeFileSync } 
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { PARTS, findParts } from './parts.js';
+import { linkedPart } from './linked-part.js';
 import { readLabels, agreementText } from './labels.js';
 import { writeReport } from './report.js';
 import { partFiles } from './layout.js';
@@ -182,7 +183,9 @@ async function main() {
       for (const part of PARTS) {
         const cfg = rubric.parts[part] || {};
         const page = parts[part] && existsSync(path.join(s.root, parts[part])) ? parts[part] : null;
-        items.push({ name: s.name, part, root: s.root, page, referenceQuery: cfg.referenceQuery || {}, ...partFiles(out, s.name, part) });
+        // a page that only links to another part's page is graded once, as that part
+        const linksTo = page ? linkedPart(readFileSync(path.join(s.root, page), 'utf8'), page, parts) : null;
+        items.push({ name: s.name, part, root: s.root, page, ...(linksTo ? { linksTo } : {}), referenceQuery: cfg.referenceQuery || {}, ...partFiles(out, s.name, part) });
       }
     }
     // the parts that try the most first (the sliders, then the orbit's), so that the workers end

@@ -41,6 +41,11 @@ export async function runPart({ item, plan, openers, browserVersion = null, more
     Object.assign(result, { status: 'missing', reasons: [`no page for ${item.part} was found in the submission`] });
     return save(result);
   }
+  if (item.linksTo) {
+    const { part, page } = item.linksTo;
+    Object.assign(result, { status: 'linked', verdict: 'review', reasons: [`REVIEW: the page for ${item.part} (${item.page}) has no canvas and no script of its own: it links to ${part}'s page (${page}), graded as ${part}; a part is not graded twice (does that page do ${item.part}'s step too? a teacher looks)`] });
+    return save(result);
+  }
   const started = Date.now();
   let graded = { fail: null, checks: [], actions: [], images: {}, shown: {}, busy: 0 };
   const files = {};
