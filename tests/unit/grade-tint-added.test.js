@@ -6,22 +6,14 @@ import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import { analyse, samples, normalColours, addedTintFit, addedClearly, shadeFit } from '../../grader/core/measure.js';
 import { auditNormalsNotLight } from '../../grader/core/audits/normals.js';
+import { spherePicture } from './sphere-picture.js';
 
 const T = JSON.parse(readFileSync(new URL('../../grader/core/rubric.json', import.meta.url), 'utf8')).thresholds;
 const norm = (v) => { const l = Math.hypot(...v); return v.map((x) => x / l); };
 const dot = (a, b) => a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
 const degrees = (a, b) => (180 / Math.PI) * Math.acos(Math.min(1, dot(a, b)));
 
-/** A w×w orthographic sphere shaded by shade(n) on a light grey background. */
-function sphere(shade, w = 160, r = 64) {
-  const data = new Uint8Array(w * w * 4);
-  for (let y = 0; y < w; y++) for (let x = 0; x < w; x++) {
-    const nx = (x + 0.5 - w / 2) / r, ny = -(y + 0.5 - w / 2) / r, q = nx * nx + ny * ny;
-    const col = q <= 1 ? shade([nx, ny, Math.sqrt(1 - q)]) : [0.95, 0.95, 0.95];
-    data.set([...col.map((v) => Math.round(255 * Math.min(1, Math.max(0, v)))), 255], 4 * (y * w + x));
-  }
-  return { width: w, height: w, data };
-}
+const sphere = spherePicture;
 const light = norm([0.4, 0.2, 1]);
 const phong = (n, kd = 0.8) => {
   const d = dot(n, light), wr = n.map((v, k) => 2 * d * v - light[k]);

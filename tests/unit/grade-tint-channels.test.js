@@ -7,6 +7,7 @@ import { readFileSync } from 'node:fs';
 import { channelOf, parameterGroups, handlerChannelOf } from '../../grader/core/controls.js';
 import { analyse, samples, diffuseFit, hueByNormal, tintedByNormal, shadeFit } from '../../grader/core/measure.js';
 import { clippedShare } from '../../grader/core/gather/visible.js';
+import { spherePicture } from './sphere-picture.js';
 
 const rubric = JSON.parse(readFileSync(new URL('../../grader/core/rubric.json', import.meta.url), 'utf8'));
 const T = rubric.thresholds;
@@ -57,16 +58,7 @@ test('parameterGroups: three sliders whose handlers call one function with 0, 1,
 
 const norm = (v) => { const l = Math.hypot(...v); return v.map((x) => x / l); };
 const dot = (a, b) => a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-/** A w×w orthographic sphere shaded by shade(n) on a light grey background. */
-function sphere(shade, w = 160, r = 64) {
-  const data = new Uint8Array(w * w * 4);
-  for (let y = 0; y < w; y++) for (let x = 0; x < w; x++) {
-    const nx = (x + 0.5 - w / 2) / r, ny = -(y + 0.5 - w / 2) / r, q = nx * nx + ny * ny;
-    const col = q <= 1 ? shade([nx, ny, Math.sqrt(1 - q)]) : [0.95, 0.95, 0.95];
-    data.set([...col.map((v) => Math.round(255 * Math.min(1, Math.max(0, v)))), 255], 4 * (y * w + x));
-  }
-  return { width: w, height: w, data };
-}
+const sphere = spherePicture;
 const wi = norm([-1, 0.4, 0.8]);
 const phong = (n, { kd = 0.9, ks = 0.7, s = 25, La = 0.15 } = {}) => {
   const d = dot(n, wi), wr = n.map((v, k) => 2 * d * v - wi[k]);
