@@ -34,13 +34,13 @@ export function auditPart({ facts, images }, rubric) {
   if (images.first) shown.first = 'first';
   const C = { facts, images, T, rubric, part, must, say, numbers, imagesShown: shown };
   let notGraded = notGradedHere(C);
-  const result = (fail) => ({ fail, checks, numbers, shown, tooSlow: facts.tooSlow || null, ...(notGraded ? { notGraded } : {}) });
+  const result = (fail) => ({ fail, checks, numbers, shown, tooSlow: facts.tooSlow || null, tooHeavy: facts.tooHeavy ?? null, ...(notGraded ? { notGraded } : {}) });
   // a page that replaced what the grader reads through may show one thing and hand the grader another
   if (facts.tampered) say('review', `the page replaced or probed what the grader reads it through: ${facts.tampered.join(', ')} (a hand-in must not change the browser's own functions or the grader's, nor draw otherwise under a test driver): what it showed may not be what the grader saw, a teacher looks`);
   if (facts.tooSlow) {
     // nothing judged: where the bound ran out depends on the machine, the verdict must not; a page
     // that draws is not broken for being slow: not graded here (the rubric's tooSlowVerdict)
-    const why = tooSlowWords(rubric, facts.tooSlow);
+    const why = tooSlowWords(rubric, facts.tooSlow, facts.tooHeavy ?? null);
     if (rubric.tooSlowVerdict === NOT_GRADED) notGraded = `${NOT_GRADED}: ${why}`;
     else say(rubric.tooSlowVerdict, why);
     return result(null);

@@ -14,11 +14,12 @@ export function applyAudit(result, judged, files = {}) {
   Object.assign(result, { api: judged.api ?? null, canvas: judged.canvas, controls: judged.controls || {}, numbers: judged.numbers || {}, actions: [...(judged.actions || [])] });
   result.verdict = verdictOf(judged.checks, judged.fail);
   result.reasons = reasonsOf({ fail: judged.fail, checks: judged.checks, pageErrors: (result.errors || []).filter((e) => /page error/.test(e)) });
-  result.status = judged.fail ? 'failed' : judged.tooSlow ? 'too slow' : 'ok';
+  const slow = judged.tooHeavy ? 'too heavy' : 'too slow';
+  result.status = judged.fail ? 'failed' : judged.tooSlow ? slow : 'ok';
   if (judged.notGraded) {
     // the browser could not run it (WebGPU in Firefox ESR): no verdict; what was seen stays below
     result.verdict = NOT_GRADED;
-    result.status = judged.tooSlow ? 'too slow' : NOT_GRADED;
+    result.status = judged.tooSlow ? slow : NOT_GRADED;
     result.reasons = [judged.notGraded, ...result.reasons.map((r) => `(seen here: ${r})`)];
   }
   result.pass = result.verdict === 'pass';

@@ -281,6 +281,19 @@ test('a heavy page past the rubric\'s bound is not graded here, never failed', (
   expect(p5.reasons[0]).toMatch(/^not graded here: too slow on this machine: the rubric's bound of 3 s ran out while /);
 });
 
+// The same page under a budget of work it cannot meet (gatherWork, a count of vertices): "not graded
+// here: too heavy", at a step that depends on the page and the count alone, never on the machine.
+test('a heavy page past the rubric\'s budget of work is not graded here, never failed', ({}, testInfo) => { // eslint-disable-line no-empty-pattern
+  test.skip(testInfo.project.name !== 'webgl2', 'the grader runs its own Chromium; once is enough');
+  const out = mkdtempSync(path.join(os.tmpdir(), 'heavy-'));
+  writeFileSync(path.join(out, 'rubric.json'), JSON.stringify({ thresholds: { gatherWork: 20e6 }, reference: false }));
+  const run = spawnSync(process.execPath, ['grader/node/grade.js', 'tests/fixtures/heavy/dagny', '--rubric', path.join(out, 'rubric.json'), '--out', out], { encoding: 'utf8', timeout: 120_000 });
+  expect(run.status, run.stderr).toBe(0);
+  const p5 = JSON.parse(readFileSync(path.join(out, 'report.json'), 'utf8')).submissions[0].parts.find((p) => p.part === 'WP04P5');
+  expect([p5.verdict, p5.status]).toEqual(['not graded here', 'too heavy']);
+  expect(p5.reasons[0]).toMatch(/^not graded here: too heavy to grade: the page's own work over the grading \(20 million vertices, draw calls at 80 each\) passed the rubric's budget of 20 million \(gatherWork\) while sampling the orbit/);
+});
+
 test('a submission folder that does not exist: a clear message and exit code 1; a bad rubric: exit code 2', () => {
   const run = spawnSync(process.execPath, ['grader/node/grade.js', '/nonexistent/student'], { encoding: 'utf8' });
   expect(run.status).toBe(1);

@@ -27,3 +27,25 @@ test('a rubric that makes it review', () => {
   assert.equal(result.status, 'too slow');
   assert.match(result.reasons[0], /^REVIEW: too slow on this machine/);
 });
+
+test('too heavy: the page\'s own work over the gathering passes gatherWork at the same frame on any machine, and is not graded here', async () => {
+  const { session, TooHeavy } = await import('../../grader/core/gather/session.js');
+  const T = rubric.thresholds;
+  // a page whose every frame draws 2 million vertices in one draw call
+  let vertices = 0, draws = 0;
+  const page = { tick: async (ms, frames) => { vertices += 2e6 * (frames + 1); draws += frames + 1; return { vertices, draws }; } };
+  const S = session(page, { part: 'WP04P5', rubric });
+  S.step('climbing the levels');
+  const perTick = 11 * (2e6 + T.drawCallWork);
+  const ticks = Math.floor(T.gatherWork / perTick);
+  for (let k = 0; k < ticks; k++) await S.tick(160, 10);
+  const err = await S.tick(160, 10).then(() => null, (e) => e);
+  assert.ok(err instanceof TooHeavy, String(err));
+  assert.equal(err.doing, 'climbing the levels');
+  assert.ok(err.work > T.gatherWork && err.work <= T.gatherWork + perTick);
+  const judged = auditPart({ facts: { part: 'WP04P5', tooSlow: err.doing, tooHeavy: err.work, errors: [] }, images: {} }, rubric);
+  const result = applyAudit({ errors: [] }, judged);
+  assert.equal(result.verdict, NOT_GRADED);
+  assert.equal(result.status, 'too heavy');
+  assert.match(result.reasons[0], /^not graded here: too heavy to grade: the page's own work over the grading \(1012 million vertices, draw calls at 80 each\) passed the rubric's budget of 1000 million \(gatherWork\) while climbing the levels/);
+});

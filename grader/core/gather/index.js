@@ -8,7 +8,7 @@
 // It drives the page only through the page interface (grader/node/playwright-page.js for the
 // grader, check/frame-page.js for the check page): state(), snap(), controls(), click(c),
 // setValue(c, v, events), press(key), tick(ms, frames) → state(), setNoCull(on), sources(), errors().
-import { session, TooSlow } from './session.js';
+import { session, TooSlow, TooHeavy } from './session.js';
 import { findOrbit, sampleOrbit, look, startOrbitToSee } from './orbit.js';
 import { findLevel, climb } from './level.js';
 import { probeFaces, probeDepthCulling, raiseHighlight, trySliders, leastShininess, placeFarther } from './probes.js';
@@ -27,6 +27,7 @@ export async function gatherPart(page, { part, rubric, progress = () => {}, dead
   } catch (err) {
     if (!(err instanceof TooSlow)) throw err;
     S.facts.tooSlow = err.doing;
+    if (err instanceof TooHeavy) S.facts.tooHeavy = err.work;
   }
   S.facts.errors = [...page.errors()];
   // the grader's hooks the page replaced (a hand-in is untrusted code): the audit names them

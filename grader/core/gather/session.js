@@ -2,7 +2,9 @@
 // artifact: plain facts and named pictures). Every step of the gatherers goes through here: a
 // frame runs only by `tick` (a count of frames, never a clock's reading), a picture is taken by
 // `shot`, a control is used by `press` and its effect on the picture read by `trial`. The wall
-// clock is an outer bound only: past `deadline` a step throws TooSlow.
+// clock is an outer bound only: past `deadline` a step throws TooSlow. The page's own work over the
+// gathering (vertices, and draw calls at drawCallWork each) is bounded by a count, the rubric's
+// gatherWork: past it a frame throws TooHeavy, at the same step on every machine.
 import { analyse, pictureChange } from '../measure.js';
 import { describe, effectOf } from '../controls.js';
 
@@ -11,6 +13,15 @@ export class TooSlow extends Error {
   constructor(doing) {
     super(`too slow to judge here, while ${doing}`);
     this.doing = doing;
+  }
+}
+
+/** The page's own work over the gathering (`work`) passed the rubric's gatherWork while `doing`. */
+export class TooHeavy extends TooSlow {
+  constructor(doing, work) {
+    super(doing);
+    this.message = `too heavy to judge here, while ${doing}`;
+    this.work = work;
   }
 }
 
@@ -60,6 +71,8 @@ export function session(page, { part, rubric, progress = () => {}, deadline = In
       const w = facts.work;
       S.frameWork = ((s.vertices - w.vertices) + T.drawCallWork * (s.draws - w.draws)) / (frames + 1);
       Object.assign(w, { frames: w.frames + frames + 1, draws: s.draws, vertices: s.vertices });
+      const spent = w.vertices + T.drawCallWork * w.draws;
+      if (spent > T.gatherWork) throw new TooHeavy(S.doing, spent);
     },
     /** What the page awaits in real time (fetches, WebGPU requests), waited for within firstFrameSeconds; no frame runs meanwhile. */
     async settle() {
