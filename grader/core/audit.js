@@ -15,7 +15,7 @@ import { auditOrbitStopsAgain, auditOrbit, auditNotStopped } from './audits/orbi
 import { auditHighlight, auditPlaceFarther } from './audits/highlight.js';
 import { auditSliders } from './audits/sliders.js';
 import { auditLeastShininess, auditPerFragment } from './audits/shading.js';
-import { auditWinding, auditClosed, auditPerFace, auditGrowth, auditPictureNotGeometry } from './audits/geometry.js';
+import { auditWinding, auditClosed, auditAllRound, auditPerFace, auditGrowth, auditPictureNotGeometry } from './audits/geometry.js';
 
 /**
  * { fail, checks, numbers, shown, notGraded } for one part's artifact: `fail` (a reason) when the
@@ -61,6 +61,7 @@ export function auditPart({ facts, images }, rubric) {
   const judged = { img, an, raw, circleArc };
   auditSphere(C, judged, facts.ladder.map((l) => l.roundness), analyse(images.first, T).roundness);
   auditClosed(C);
+  auditAllRound(C);
   auditGrowth(C);
   auditPictureNotGeometry(C, judged);
   auditPerspective(C, auditNormals(C, judged));

@@ -77,3 +77,24 @@ export function auditPictureNotGeometry({ facts, T, say }, judged) {
   if (!g || !g.draws || 3 * g.triangles + (g.otherVertices || 0) > 3 * T.pictureTriangles || judged.an.blank || !(judged.an.roundness <= T.roundness)) return;
   say('review', `the sphere is a picture, not geometry: a round sphere shows, but the page draws ${g.triangles} triangle${g.triangles === 1 ? '' : 's'} (read from what it sent to WebGL): the slide asks for a tetrahedron subdivided into a sphere`);
 }
+
+/**
+ * Where the mesh could not be read (positions made in a shader), the outlines seen all round the
+ * orbit (gather/all-round.js): a round outline with a gap in it is a hole on that side. Views whose
+ * outline is not round (an unlit side merging with the background) tell nothing and are left out.
+ */
+export function auditAllRound({ facts, T, say, numbers, imagesShown }) {
+  const r = facts.allRound;
+  if (!r) return;
+  const round = r.views.filter((v) => !v.blank && v.roundness <= T.roundness);
+  const gaps = round.filter((v) => v.fill < T.fill);
+  numbers.allRound = { views: r.views.length, round: round.length, gaps: gaps.length, turned: r.turned };
+  const where = r.turned !== null ? `at ${r.views.length} positions along the orbit, the camera turning ${Math.round(r.turned)}°` : `at ${r.views.length} positions along the orbit (the page sends no view matrix the grader could read: how far it turned is not known)`;
+  const why = `the mesh could not be read from what the page sent (${r.why})`;
+  if (gaps.length) {
+    if (r.gap) imagesShown.allRoundGap = r.gap;
+    say('mistake', `a hole shows from some side: looked ${where}, ${gaps.length} of ${round.length} round outlines are not filled (down to ${pct(Math.min(...gaps.map((v) => v.fill)))}: the background shows through the sphere) (${why})`);
+  } else if (round.length) {
+    say('pass', `closed from every side it was seen from: ${round.length} round, filled outlines ${where} (${why}, so it was looked at all round)`);
+  } else say('pass', `note: could not see whether the sphere is closed all round: no view ${where} showed a round outline (${why})`);
+}

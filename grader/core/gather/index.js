@@ -14,6 +14,7 @@ import { findLevel, climb } from './level.js';
 import { probeFaces, probeDepthCulling, raiseHighlight, trySliders, leastShininess, placeFarther } from './probes.js';
 import { unclip, brighten } from './visible.js';
 import { readGeometry } from './geometry.js';
+import { lookAllRound } from './all-round.js';
 import { sphereView, shadingOf, viewFits, highlightEvidence } from '../evidence.js';
 
 /** What the gathering is doing until the page's first frame is seen (past it, the page draws). */
@@ -140,6 +141,8 @@ async function gather(S) {
   if (must.has('highlight') && shading.fit && stopped) await leastShininess(S, controls);
   facts.sources = await page.sources();
   if (placeLater) await placeFarther(S, controls);
+  // last: it turns the orbit on and off again, and nothing after it reads the picture
+  await lookAllRound(S);
 }
 
 /**

@@ -30,7 +30,7 @@ function turnedTooLittle(S) {
 
 // the k-th orbit sample's frames: many pages turn the camera a fixed step a frame, so each sample
 // runs more frames as the search goes on, as many as orbitSampleWork affords a page of this cost
-const tickOrbit = async (S, k) => {
+export const tickOrbit = async (S, k) => {
   await S.tick(S.T.orbitSampleSeconds * 1000,
     Math.max(2, Math.min(8 << k, Math.round(60 * S.T.orbitSampleSeconds), Math.floor(S.T.orbitSampleWork / Math.max(1, S.frameWork)))));
   await readCamera(S);

@@ -21,6 +21,7 @@ const PICTURES = [
   ['judged', 'your page, as judged'], ['reference', 'our reference, at your canvas size and light'], ['first', 'your page, first frame'],
   ['coarse', 'your page at a coarse level'], ['highlightPlace', 'your highlight, the light away from the viewer'], ['leastS', 'your page with s at its least'],
   ['unclipped', 'your page, its own sliders lowered'], ['brightened', 'your page, its own light raised'],
+  ['allRoundGap', 'your page from another side along the orbit: a hole'],
 ];
 
 /** A picture of the report (a path relative to `out`) as a data: URL, or null when it is not there. */

@@ -1,0 +1,42 @@
+// A sphere closed from every side (issue 37, point 3). Where the page's mesh can be read, the
+// geometry audits know every side exactly (open edges, winding). Where it cannot (positions made in
+// a shader), the orbit is run on and the outline read at counted positions until the camera has
+// turned all the way round (the view matrix the page sends; where it sends none, roundSamples
+// positions), and the orbit is stopped again where it was stopped. Each position's outline is kept
+// as numbers, the first with a gap as a picture; the audit (auditAllRound) judges them.
+import { cameraOf, cameraRotations, rotationsTurn } from '../camera.js';
+import { readSent } from './geometry.js';
+import { tickOrbit } from './orbit.js';
+
+/** The camera's rotation as the page sends it now (null where unknown). */
+async function rotationNow(S) {
+  const cam = S.facts.sentAnimated ? cameraOf(await readSent(S), S.facts.sentAnimated) : null;
+  const r = cam && cameraRotations([cam, cam], S.T.cameraRotationTolerance);
+  return r ? r[0] : null;
+}
+
+/** Looks at the sphere all round its orbit where its mesh cannot be read: sets facts.allRound. */
+export async function lookAllRound(S) {
+  const { T, facts, orbit } = S;
+  const g = facts.geometry;
+  if (!g || !g.why || !orbit) return;
+  const stopped = !S.moving;
+  if (stopped && !(orbit.start && orbit.stop)) return;
+  S.step('looking at the sphere from every side');
+  if (stopped && await S.tryClick(orbit.start, 'the orbit control, to look all round,', { watchMotion: true }) !== 'starts') return;
+  const views = [];
+  let last = await rotationNow(S), turned = last ? 0 : null, gap = null;
+  for (let k = 0; k < T.roundSamples && !(turned >= 360); k++) {
+    await tickOrbit(S, k);
+    const sh = await S.shot();
+    const now = await rotationNow(S);
+    turned = turned !== null && now ? turned + rotationsTurn([last, now]) : null;
+    last = now;
+    const an = sh ? sh.an : { blank: true };
+    views.push(an.blank ? { blank: true } : { roundness: an.roundness, fill: an.fill, ...(turned !== null ? { turned } : {}) });
+    if (!gap && !an.blank && an.roundness <= T.roundness && an.fill < T.fill) gap = S.keep('all-round-gap', sh.img);
+  }
+  facts.allRound = { views, turned, gap, why: g.why };
+  S.act(`looked at ${views.length} positions along the orbit${turned !== null ? ` (the camera turned ${Math.round(turned)}°)` : ''}`);
+  if (stopped) await S.tryClick(orbit.stop, 'the orbit control again', { watchMotion: true });
+}
