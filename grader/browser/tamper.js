@@ -1,7 +1,8 @@
 // What a graded page did to the grader's hooks, as the last init script (after the clock): each
 // function the grader put in place or reads through (its instrumentation's wrappers of WebGL, the
 // canvas's read-back, the frozen clock, window.__grade's methods) is noted as it stands before the
-// page's first script, and window.__tamper.read() lists those the page has replaced since. The
+// page's first script (WebGPU's too, where the browser has it), and window.__tamper.read() lists
+// those the page has replaced since. The
 // grader's own methods are made read-only, and navigator.webdriver reads false, as in a browser a
 // student uses. A hand-in is untrusted code: the audit gives such a part `review`, naming the hook.
 export function tamperScript() {
@@ -13,11 +14,17 @@ export function tamperScript() {
     if (d) watched.push([label, holder, name, d.value || d.get]);
   };
   const protos = { HTMLCanvasElement: window.HTMLCanvasElement, CanvasRenderingContext2D: window.CanvasRenderingContext2D, Document: window.Document,
-    WebGLRenderingContext: window.WebGLRenderingContext, WebGL2RenderingContext: window.WebGL2RenderingContext, EventTarget: window.EventTarget };
+    WebGLRenderingContext: window.WebGLRenderingContext, WebGL2RenderingContext: window.WebGL2RenderingContext, EventTarget: window.EventTarget,
+    GPUAdapter: window.GPUAdapter, GPUDevice: window.GPUDevice, GPUQueue: window.GPUQueue, GPUBuffer: window.GPUBuffer,
+    GPURenderPassEncoder: window.GPURenderPassEncoder, GPUShaderModule: window.GPUShaderModule };
   const names = {
     HTMLCanvasElement: ['getContext', 'toDataURL', 'toBlob'], CanvasRenderingContext2D: ['drawImage', 'getImageData'], Document: ['createElement', 'querySelectorAll'],
     WebGLRenderingContext: ['drawArrays', 'drawElements', 'bufferData', 'bufferSubData', 'vertexAttribPointer', 'enable', 'disable', 'cullFace', 'frontFace', 'useProgram', 'uniformMatrix4fv', 'getExtension', 'shaderSource', 'compileShader', 'linkProgram'],
     EventTarget: ['addEventListener'],
+    // WebGPU: what the instrumentation, the geometry's and the sent values' records and the frame capture wrap
+    GPUAdapter: ['requestDevice'], GPUDevice: ['createBuffer', 'createShaderModule', 'createRenderPipeline', 'createRenderPipelineAsync', 'popErrorScope'],
+    GPUQueue: ['submit', 'writeBuffer', 'onSubmittedWorkDone'], GPUBuffer: ['getMappedRange', 'unmap', 'mapAsync'],
+    GPURenderPassEncoder: ['setPipeline', 'setVertexBuffer', 'setIndexBuffer', 'draw', 'drawIndexed'], GPUShaderModule: ['getCompilationInfo'],
   };
   names.WebGL2RenderingContext = [...names.WebGLRenderingContext, 'bindVertexArray'];
   for (const [cls, list] of Object.entries(names)) for (const n of list) watch(`${cls}.prototype.${n}`, protos[cls] && protos[cls].prototype, n);
