@@ -10,6 +10,8 @@ const RULES = [
   { test: /per vertex|per fragment|coarse level|fragment shader/i, slide: 'We implement it by moving our evaluation of the Phong reflection model to the fragment shader. Most importantly, we must normalize the direction vectors in the fragment shader.' },
   { test: /subdivi|coarsen|finer|level|round|silhouette/i, slide: 'Insert buttons for subdividing or coarsening the mesh (incrementing or decrementing the level of subdivision). (A: 3.6.2)' },
   { test: /back side|front face|reflection of|inside|depth|cull/i, slide: 'Now, enable the depth test. Then enable backface culling. There is no visible effect of the back face culling.' },
+  // (before the orbit's: a highlight's place names the light and the eye too)
+  { test: /highlight sits at the light|highlight is \d+° from where|halfway between the light and the viewer/i, slide: 'ω_o is the direction toward the observer (ω_r · ω_o = cos φ). To have ω_o in the shader, we then either need the eye point in world coordinates or all vectors in eye space (where the eye point is at the origin).' },
   { test: /orbit|turns with the camera|moves with the camera|light .*(camera|eye)/i, slide: 'Add a tick function for animation and a button for toggling orbiting of the camera around the sphere on/off; move the camera with e = (r sin α, 0, r cos α) and lookAt, and upload V so that gl_Position = P*V*pos.' },
   { test: /colou?rs? (are not|decode)|0\.5·n|2c − 1|unit normal/i, slide: 'Get the normal from the position and visualize it using the vertex color c: c_rgb = 0.5 n_xyz + 0.5 = 0.5 p_xyz + 0.5.' },
   { test: /1\/r²|fall-off|point light/i, slide: 'L_i = V I / ‖p_ℓ − x‖² (a point light\'s radiance falls off with the squared distance).' },

@@ -63,5 +63,8 @@ test('a review or a fail names the slide sentence it misses', async () => {
   assert.equal(slide('REVIEW: no specular highlight: nothing brighter than the diffuse fit'), 'Update your reflection model');
   assert.equal(slide('REVIEW: not in perspective view (the slide: "Draw a solid sphere in perspective view"): the inside of the far side, whose normals reach 90°'), 'Draw a solid sphere');
   assert.equal(slide('REVIEW: shows the normal colouring of WP04P1, not the lighting: its colours decode to unit normals 2c − 1'), 'Given other parameters k_d,');
+  // a highlight's place names the light and the eye: its sentence is ω_o's, not the orbit's
+  assert.equal(slide('REVIEW: the highlight sits at the light, not halfway between the light and the viewer: 3° from the light, 25° from the halfway normal: is w_o the direction from the surface to the eye, in the same space as n and w_i?'), 'ω_o is the direction');
+  assert.equal(slide('REVIEW: the highlight is 31° from where the model puts it (at the normal halfway between the light, fitted at 0.1, 0.2, 0.9, and the viewer): is w_o the direction from the surface to the eye?'), 'ω_o is the direction');
   assert.deepEqual(missedSlides(['a round closed sphere (radius 80 px)']), []); // what passed names nothing
 });
