@@ -2,11 +2,12 @@
 // geometry audits know every side exactly (open edges, winding). Where it cannot (positions made in
 // a shader), the orbit is run on and the outline read at counted positions until the camera has
 // turned all the way round (the view matrix the page sends; where it sends none, roundSamples
-// positions), and the orbit is stopped again where it was stopped. Each position's outline is kept
-// as numbers, the first with a gap as a picture; the audit (auditAllRound) judges them.
+// positions), and the orbit is stopped again where it was stopped. Where the camera's turn is read,
+// each step is sized from the last to turn about roundStepDegrees, so that no side goes unseen (a
+// hole seen obliquely notches the outline; it shows as a gap only near face-on). Each position's
+// outline is kept as numbers, the first with a gap as a picture; the audit (auditAllRound) judges them.
 import { cameraOf, cameraRotations, rotationsTurn } from '../camera.js';
 import { readSent } from './geometry.js';
-import { tickOrbit } from './orbit.js';
 
 /** The camera's rotation as the page sends it now (null where unknown). */
 async function rotationNow(S) {
@@ -26,12 +27,18 @@ export async function lookAllRound(S) {
   if (stopped && await S.tryClick(orbit.start, 'the orbit control, to look all round,', { watchMotion: true }) !== 'starts') return;
   const views = [];
   let last = await rotationNow(S), turned = last ? 0 : null, gap = null;
+  // frames a step, at 60 Hz: as many as the page's work a frame allows (orbitSampleWork), as orbit.js's samples
+  const most = () => Math.max(1, Math.min(Math.round(60 * T.orbitSampleSeconds), Math.floor(T.orbitSampleWork / Math.max(1, S.frameWork))));
+  let frames = 4;
   for (let k = 0; k < T.roundSamples && !(turned >= 360); k++) {
-    await tickOrbit(S, k);
+    await S.tick((1000 * frames) / 60, frames);
     const sh = await S.shot();
     const now = await rotationNow(S);
-    turned = turned !== null && now ? turned + rotationsTurn([last, now]) : null;
+    const step = turned !== null && now ? rotationsTurn([last, now]) : null;
+    turned = step !== null ? turned + step : null;
     last = now;
+    // the next step's frames: sized to turn about roundStepDegrees where this one's turn is read, else doubled
+    frames = Math.max(1, Math.min(most(), step > 0 ? Math.round((frames * T.roundStepDegrees) / step) : 2 * frames));
     const an = sh ? sh.an : { blank: true };
     views.push(an.blank ? { blank: true } : { roundness: an.roundness, fill: an.fill, ...(turned !== null ? { turned } : {}) });
     if (!gap && !an.blank && an.roundness <= T.roundness && an.fill < T.fill) gap = S.keep('all-round-gap', sh.img);
