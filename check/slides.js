@@ -2,7 +2,9 @@
 // "Lighting and shading", the exercises WP04P1–P5 and the formulas they use), and our step that
 // does it right. Tried in order; the first match of a reason wins.
 const RULES = [
-  { test: /shader|compile|link|WGSL/i, slide: 'Upload parameters (k_d, L_e, and p_ℓ or I_e) as uniform vectors.', note: 'the shaders must compile first: the error above gives the line' },
+  // a sphere with a hole (read from its mesh, or seen along the orbit) before the shaders': its reason may name the vertex shader
+  { test: /a hole shows|not closed/i, slide: 'Draw a solid sphere in perspective view. (A: 6.6)' },
+  { test: /shader (error|does not compile)|compile|does not link|WGSL/i, slide: 'Upload parameters (k_d, L_e, and p_ℓ or I_e) as uniform vectors.', note: 'the shaders must compile first: the error above gives the line' },
   { test: /adapter|WebGPU/i, slide: 'Draw a solid sphere in perspective view. (A: 6.6)', note: 'this browser has no WebGPU adapter: try the WebGL view, or a browser with WebGPU' },
   { test: /drew nothing|no canvas|one colou?r|could not be opened|never returns|time bound|page error/i, slide: 'Draw a solid sphere in perspective view. (A: 6.6)' },
   { test: /not in perspective view/i, slide: 'Draw a solid sphere in perspective view. (A: 6.6)', note: 'an orthographic view shows the normals out to 90° at the rim' },
@@ -32,6 +34,8 @@ export const stepLink = (part) => `../${part}/`;
 export function missedSlides(reasons) {
   const out = [];
   for (const reason of reasons) {
+    // (a part not graded here was not judged: it misses no sentence)
+    if (/^not graded here\b/.test(reason)) continue;
     if (!/^(FAIL|REVIEW)\b/.test(reason) && !/could not|nothing|never|no canvas|time bound|missing|not found/i.test(reason)) continue;
     const rule = RULES.find((r) => r.test.test(reason));
     if (rule && !out.some((o) => o.slide === rule.slide)) out.push({ reason, slide: rule.slide, note: rule.note });

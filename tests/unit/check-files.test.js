@@ -66,5 +66,12 @@ test('a review or a fail names the slide sentence it misses', async () => {
   // a highlight's place names the light and the eye: its sentence is ω_o's, not the orbit's
   assert.equal(slide('REVIEW: the highlight sits at the light, not halfway between the light and the viewer: 3° from the light, 25° from the halfway normal: is w_o the direction from the surface to the eye, in the same space as n and w_i?'), 'ω_o is the direction');
   assert.equal(slide('REVIEW: the highlight is 31° from where the model puts it (at the normal halfway between the light, fitted at 0.1, 0.2, 0.9, and the viewer): is w_o the direction from the surface to the eye?'), 'ω_o is the direction');
+  // a hole's reason may name the vertex shader, a link page's 'links to': neither is a shader that does not compile
+  assert.equal(slide("REVIEW: a hole shows from some side: looked at 25 positions along the orbit (the mesh could not be read from what the page sent (the vertex shader's position attribute was not found))"), 'Draw a solid sphere');
+  assert.equal(slide("REVIEW: the page for WP04P5 (uge4/del5/index.html) has no canvas and no script of its own: it links to WP04P4's page"), 'Draw a solid sphere');
+  assert.equal(slide('FAIL: program does not link: ERROR: missing main()'), 'Upload parameters (k_d, L_e,');
+  assert.equal(slide('FAIL: WGSL does not compile (line 3): expected ;'), 'Upload parameters (k_d, L_e,');
+  // a part not graded here (too slow, too heavy) was not judged: no sentence, whatever it was doing
+  assert.deepEqual(missedSlides(["not graded here: too slow on this machine: the rubric's bound of 90 s ran out while sampling the orbit; nothing was judged"]), []);
   assert.deepEqual(missedSlides(['a round closed sphere (radius 80 px)']), []); // what passed names nothing
 });
