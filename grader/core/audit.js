@@ -4,7 +4,7 @@
 // reasons come from the findings only (verdict.js). No browser: `npm run grade -- --audit-only`
 // re-judges a class from its saved artifacts.
 import { analyse } from './measure.js';
-import { checkList, NOT_GRADED, tooSlowWords } from './verdict.js';
+import { checkList, NOT_GRADED, tooSlowWords, tooHeavyWords } from './verdict.js';
 import { litView } from './views.js';
 import { sphereView, shadingOf, viewFits } from './evidence.js';
 import { auditFirstFrame, notGradedHere, STOP } from './audits/first-frame.js';
@@ -40,7 +40,7 @@ export function auditPart({ facts, images }, rubric) {
   if (facts.tooSlow) {
     // nothing judged: where the bound ran out depends on the machine, the verdict must not; a page
     // that draws is not broken for being slow: not graded here (the rubric's tooSlowVerdict)
-    const why = tooSlowWords(rubric, facts.tooSlow, facts.tooHeavy ?? null);
+    const why = facts.tooHeavy != null ? tooHeavyWords(rubric, facts.tooSlow, facts.tooHeavy) : tooSlowWords(rubric, facts.tooSlow);
     if (rubric.tooSlowVerdict === NOT_GRADED) notGraded = `${NOT_GRADED}: ${why}`;
     else say(rubric.tooSlowVerdict, why);
     return result(null);

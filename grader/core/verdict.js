@@ -8,11 +8,11 @@
  */
 export const NOT_GRADED = 'not graded here';
 
-/** Why a part past the rubric's wall-clock bound while `doing` was not judged (`heavy`: its work where it passed gatherWork instead). */
-export const tooSlowWords = (rubric, doing, heavy = null) => heavy !== null ? tooHeavyWords(rubric, doing, heavy) : `too slow on this machine: the rubric's bound of ${rubric.timeoutSeconds} s ran out while ${doing}; nothing was judged (what was done is listed under what the grader did; grade it again on a faster machine, or with a larger timeoutSeconds)`;
+/** Why a part past the rubric's wall-clock bound while `doing` was not judged. */
+export const tooSlowWords = (rubric, doing) => `too slow on this machine: the rubric's bound of ${rubric.timeoutSeconds} s ran out while ${doing}; nothing was judged (what was done is listed under what the grader did; grade it again on a faster machine, or with a larger timeoutSeconds)`;
 
 /** Why a part whose own work passed the rubric's gatherWork (a count: the same on every machine) is not judged. */
-const tooHeavyWords = (rubric, doing, work) => `too heavy to grade: the page's own work over the grading (${(work / 1e6).toFixed(0)} million vertices, draw calls at ${rubric.thresholds.drawCallWork} each) passed the rubric's budget of ${(rubric.thresholds.gatherWork / 1e6).toFixed(0)} million (gatherWork) while ${doing}; nothing was judged (what was done is listed under what the grader did; grade it with a larger gatherWork, or at a level the sphere needs)`;
+export const tooHeavyWords = (rubric, doing, work) => `too heavy to grade: the page's own work over the grading (${(work / 1e6).toFixed(0)} million vertices, draw calls at ${rubric.thresholds.drawCallWork} each) passed the rubric's budget of ${(rubric.thresholds.gatherWork / 1e6).toFixed(0)} million (gatherWork) while ${doing}; nothing was judged (what was done is listed under what the grader did; grade it with a larger gatherWork, or at a level the sphere needs)`;
 
 /**
  * A list of checks with the rubric's cost of a mistake: say('pass' | 'review' | 'fail' |

@@ -6,15 +6,8 @@
 // each step is sized from the last to turn about roundStepDegrees, so that no side goes unseen (a
 // hole seen obliquely notches the outline; it shows as a gap only near face-on). Each position's
 // outline is kept as numbers, the first with a gap as a picture; the audit (auditAllRound) judges them.
-import { cameraOf, cameraRotations, rotationsTurn } from '../camera.js';
-import { readSent } from './geometry.js';
-
-/** The camera's rotation as the page sends it now (null where unknown). */
-async function rotationNow(S) {
-  const cam = S.facts.sentAnimated ? cameraOf(await readSent(S), S.facts.sentAnimated) : null;
-  const r = cam && cameraRotations([cam, cam], S.T.cameraRotationTolerance);
-  return r ? r[0] : null;
-}
+import { cameraTurn } from '../camera.js';
+import { readCamera } from './orbit.js';
 
 /** Looks at the sphere all round its orbit where its mesh cannot be read: sets facts.allRound. */
 export async function lookAllRound(S) {
@@ -26,17 +19,18 @@ export async function lookAllRound(S) {
   S.step('looking at the sphere from every side');
   if (stopped && await S.tryClick(orbit.start, 'the orbit control, to look all round,', { watchMotion: true }) !== 'starts') return;
   const views = [];
-  let last = await rotationNow(S), turned = last ? 0 : null, gap = null;
+  await readCamera(S);
+  let last = S.camera, turned = last ? 0 : null, gap = null;
   // frames a step, at 60 Hz: as many as the page's work a frame allows (orbitSampleWork), as orbit.js's samples
   const most = () => Math.max(1, Math.min(Math.round(60 * T.orbitSampleSeconds), Math.floor(T.orbitSampleWork / Math.max(1, S.frameWork))));
   let frames = 4;
   for (let k = 0; k < T.roundSamples && !(turned >= 360); k++) {
     await S.tick((1000 * frames) / 60, frames);
     const sh = await S.shot();
-    const now = await rotationNow(S);
-    const step = turned !== null && now ? rotationsTurn([last, now]) : null;
+    await readCamera(S);
+    const step = turned !== null ? cameraTurn([last, S.camera], T.cameraRotationTolerance) : null;
     turned = step !== null ? turned + step : null;
-    last = now;
+    last = S.camera;
     // the next step's frames: sized to turn about roundStepDegrees where this one's turn is read, else doubled
     frames = Math.max(1, Math.min(most(), step > 0 ? Math.round((frames * T.roundStepDegrees) / step) : 2 * frames));
     const an = sh ? sh.an : { blank: true };

@@ -18,7 +18,7 @@ export function look(S, img, { orbiting = true, keep = true } = {}) {
 }
 
 /** The camera as the page sent it now (the animated matrices: camera.js), kept for the next views looked at. */
-async function readCamera(S) {
+export async function readCamera(S) {
   S.camera = S.facts.sentAnimated ? cameraOf(await readSent(S), S.facts.sentAnimated) : null;
 }
 
