@@ -17,6 +17,7 @@ import { versionOfExecutable, nameOfVersionLine } from './browser-version.js';
 import { gradeInFirefox } from './grade-firefox.js';
 import { auditAgain } from './audit-only.js';
 import { takeIn } from './intake/batch.js';
+import { dueTime } from './intake/formats.js';
 import { readClass } from './class-results.js';
 import { prepareClass, writeTeacherFiles } from './teacher-loop.js';
 import { runSimilarity, writeSimilarityReport, SIMILARITY_HELP, parseBound } from '../similarity/run.js';
@@ -29,7 +30,7 @@ const HELP = `usage: npm run grade -- <submission-folder> [--part WP04P1=<path t
        npm run grade -- --batch <download.zip | its folder | a folder a student> [--rubric <file>] [--out <dir>]
 --batch takes a course site's download as it comes (its .zip or the folder it unpacked into) and
 says which it found: Brightspace (a folder a submission, "<id>-<id> - <name> - <date>"), Canvas
-(files "<lastfirst>_<user id>_<submission id>_<name>"), Moodle (folders "<name>_<id>_assignsubmission_file"),
+(files "<lastfirst>_<user id>_<file id>_<name>"), Moodle (folders "<name>_<id>_assignsubmission_file"),
 or a folder a student. Each hand-in is unpacked safely into OUT/handins/ (zips in it too; bounds:
 the rubric's unpack), the latest of a student's hand-ins is graded, and the student's identity goes
 into report.json and the grade files.
@@ -64,6 +65,9 @@ fail) with reasons, from what the slide's step asks for. Our reference part is d
   --roster FILE     the course site's class list export (CSV or TSV: OrgDefinedId / Username,
                     ID number / Email address, names; kept as OUT/roster.csv), for the ids its grade
                     import needs and the download does not carry (Brightspace, Moodle)
+  --due "YYYY-MM-DD HH:MM"  the due date, in the course site's time: a hand-in whose time (in
+                    Brightspace's names) is after it is late; Canvas's names say late themselves,
+                    Moodle's carry no time
 Besides report.html, report.json and grades.csv, every run writes grades-points.csv, the course
 site's grade import file (grades-brightspace.csv, grades-canvas.csv or grades-moodle.csv; points:
 the rubric's "points"), OUT/feedback/<student>.html (one self-contained page a student) and
@@ -100,6 +104,10 @@ function parseArgs(argv) {
     else if (a === '--labels') o.labels = next();
     else if (a === '--overrides') o.overrides = next();
     else if (a === '--roster') o.roster = next();
+    else if (a === '--due') {
+      const text = next();
+      o.due = dueTime(text) ?? fail(`--due takes the due date and time as "2025-10-10 23:59" (the course site's time), not "${text}"\n\n${HELP}`, 2);
+    }
     else if (a === '--browser') {
       o.browser = next().toLowerCase();
       if (!BROWSERS.includes(o.browser)) fail(`--browser takes ${BROWSERS.join(' or ')}, not "${o.browser}"\n\n${HELP}`, 2);
@@ -154,7 +162,7 @@ async function main() {
     const root = path.resolve(o.batch);
     if (!existsSync(root)) fail(`no such file or folder: ${o.batch}`);
     try {
-      submissions = takeIn(root, out, rubric).submissions;
+      submissions = takeIn(root, out, rubric, { due: o.due }).submissions;
     } catch (err) {
       fail(err.message);
     }

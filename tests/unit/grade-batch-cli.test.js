@@ -5,10 +5,11 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { spawnSync } from 'node:child_process';
-import { existsSync, mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
+import { mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
+import { unzipSync } from 'fflate';
 import { makeZip } from './downloads.js';
 import { parseTable } from '../../grader/node/roster.js';
 
@@ -31,19 +32,26 @@ test('a download of hostile hand-ins only: each student told why, every part fai
     writeFileSync(roster, 'Student,ID,SIS User ID,SIS Login ID,Section,Worksheet 4 (77)\n"Ærø, Søren",000123,s0099,soeren,Hold 2,\n');
     const r = run(['--batch', dl, '--out', out, '--roster', roster]);
     assert.equal(r.status, 0, r.stderr);
-    assert.match(r.stdout, /^grade: found Canvas download: .*2 hand-in\(s\); 2 could not be unpacked/m);
+    assert.match(r.stdout, /^grade: found Canvas download: .*2 hand-in\(s\); 1 late; 2 could not be unpacked/m, 'Canvas\'s "_late" counted');
     assert.match(r.stdout, /rodriguezaiden: the hand-in could not be unpacked: .*more than 100 MB/);
     assert.match(r.stdout, /aerosoeren: the hand-in could not be unpacked: "ws4\.zip": it is not a zip file/);
     const report = JSON.parse(readFileSync(path.join(out, 'report.json'), 'utf8'));
     const aero = report.submissions.find((s) => s.name === 'aerosoeren');
-    assert.deepEqual({ userId: aero.identity.userId, submissionId: aero.identity.submissionId, late: aero.identity.late }, { userId: '000123', submissionId: '39787', late: true });
+    assert.deepEqual({ userId: aero.identity.userId, fileIds: aero.identity.fileIds, late: aero.identity.late }, { userId: '000123', fileIds: ['39787'], late: true });
     assert.ok(aero.parts.every((p) => p.verdict === 'fail' && p.status === 'not unpacked' && /not a zip file/.test(p.reasons[0])));
     const canvas = parseTable(readFileSync(path.join(out, 'grades-canvas.csv'), 'utf8'));
     assert.deepEqual(canvas[0], ['Student', 'ID', 'SIS User ID', 'SIS Login ID', 'Section', 'Worksheet 4']);
     assert.deepEqual(canvas.find((l) => l[1] === '000123').slice(0, 5), ['Søren Ærø', '000123', 's0099', 'soeren', 'Hold 2'], 'the roster\'s columns, the id with its leading zeros');
     assert.deepEqual(canvas.find((l) => l[1] === '640693').slice(0, 3), ['rodriguezaiden', '640693', ''], 'a student the roster does not have: the download\'s name and id');
     assert.match(readFileSync(path.join(out, 'feedback', 'aerosoeren.html'), 'utf8'), /it is not a zip file/);
-    assert.ok(existsSync(path.join(out, 'feedback-canvas.zip')));
+    // Canvas's Re-Upload Submissions reads the first two all-digit "_"-parts of a file's name as the
+    // user id and the id of one of that student's files (canvas-lms Assignment#infer_comment_context_from_filename)
+    const back = Object.keys(unzipSync(readFileSync(path.join(out, 'feedback-canvas.zip')))).sort();
+    assert.deepEqual(back, ['aerosoeren_late_000123_39787_feedback.html', 'rodriguezaiden_640693_39786_feedback.html']);
+    for (const name of back) {
+      const s = report.submissions.find((x) => name.startsWith(`${x.name}_`));
+      assert.deepEqual(name.split('_').filter((p) => /^\d+$/.test(p)).slice(0, 2), [s.identity.userId, s.identity.fileIds[0]], name);
+    }
 
     writeFileSync(path.join(out, 'overrides.tsv'), 'student\tpart\tverdict\tnote\n000123\tWP04P1\treview\tSend me the zip again by mail.\n');
     const again = run(['--report-only', '--out', out]);
@@ -65,7 +73,10 @@ test('a download of hostile hand-ins only: each student told why, every part fai
 test('--help names the download and the loop\'s options; a missing download is an error (exit 1)', () => {
   const help = run(['--help']);
   assert.equal(help.status, 0);
-  for (const s of ['download.zip', '--overrides FILE', '--roster FILE', 'feedback-<site>.zip']) assert.ok(help.stdout.includes(s), s);
+  for (const s of ['download.zip', '--overrides FILE', '--roster FILE', '--due', 'feedback-<site>.zip']) assert.ok(help.stdout.includes(s), s);
+  const badDue = run(['--batch', 'x.zip', '--due', 'Friday 23:59']);
+  assert.equal(badDue.status, 2);
+  assert.match(badDue.stderr, /--due takes the due date and time as "2025-10-10 23:59"/);
   const missing = run(['--batch', path.join(os.tmpdir(), 'no-such-download.zip'), '--out', path.join(os.tmpdir(), 'grade-cli-none')]);
   assert.equal(missing.status, 1);
   assert.match(missing.stderr, /no such file or folder/);

@@ -11,7 +11,7 @@ import os from 'node:os';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { intake, readIntake } from '../../grader/node/intake/intake.js';
-import { brightspaceTime, detectSite, groupBySite } from '../../grader/node/intake/formats.js';
+import { brightspaceTime, detectSite, dueTime, groupBySite, lateOf } from '../../grader/node/intake/formats.js';
 import { decodeName, safeSegments } from '../../grader/node/intake/names.js';
 import { makeZip, cp850, tree, entriesOf } from './downloads.js';
 
@@ -84,7 +84,8 @@ for (const site of ['brightspace', 'canvas', 'moodle']) {
       const out = path.join(dir, 'out');
       mkdirSync(out);
       const t0 = performance.now();
-      const got = intake(file, out, BOUNDS);
+      // Brightspace's names give the time, so a due date makes a hand-in after it late
+      const got = intake(file, out, BOUNDS, site === 'brightspace' ? dueTime('2025-10-10 10:00') : null);
       const ms = performance.now() - t0;
       console.log(`${site}: ${(statSync(file).size / 1048576).toFixed(1)} MB download, ${got.submissions.length} hand-ins unpacked in ${ms.toFixed(0)} ms`);
       assert.equal(got.site, site);
@@ -96,7 +97,8 @@ for (const site of ['brightspace', 'canvas', 'moodle']) {
         const sub = find(s);
         assert.ok(sub, `${s.name} is found`);
         assert.equal(sub.identity.userId, String(640600 + s.k), `${s.name}'s user id`);
-        if (site !== 'moodle') assert.equal(sub.identity.submissionId, String(39700 + s.k), `${s.name}'s submission id`);
+        if (site === 'brightspace') assert.equal(sub.identity.submissionId, String(39700 + s.k), `${s.name}'s submission id`);
+        if (site === 'canvas') assert.deepEqual(sub.identity.fileIds, [String(39700 + s.k)], `${s.name}'s file id`);
         if (s.real) {
           assert.equal(sub.error, null, `${s.name}: ${sub.error}`);
           assert.deepEqual(tree(sub.root), tree(path.join(HANDINS, s.real)), `${s.name}'s unpacked tree is its folder, file for file`);
@@ -112,7 +114,8 @@ for (const site of ['brightspace', 'canvas', 'moodle']) {
       if (site === 'brightspace') {
         const first = find(all[0]);
         assert.equal(first.identity.time, '2025-10-10T10:22', 'the latest hand-in is graded');
-        assert.deepEqual(first.earlier.map((e) => e.time), ['2025-10-09T21:58'], 'the earlier one is listed with its time');
+        assert.deepEqual(first.earlier.map((e) => [e.time, e.late]), [['2025-10-09T21:58', false]], 'the earlier one is listed with its time, before the due date');
+        assert.equal(first.identity.late, true, 'the latest, 22 minutes after the due date, is late');
         assert.ok(!existsSync(path.join(first.root, 'wrong.html')));
       }
       if (site === 'canvas') assert.equal(find(all[2]).identity.late, true, 'late is read from the name');
@@ -172,6 +175,15 @@ test('names: UTF-8 by the flag, CP850 otherwise; paths that climb out, absolute 
   assert.equal(brightspaceTime('Oct 10, 2025 1022 AM'), '2025-10-10T10:22');
   assert.equal(brightspaceTime('Sep 29, 2015 4:17 PM'), '2015-09-29T16:17');
   assert.equal(brightspaceTime('Jan 1, 2026 1205 AM'), '2026-01-01T00:05');
+  assert.equal(dueTime('2025-10-10 9:05'), '2025-10-10T09:05');
+  assert.equal(dueTime('2025-10-10T23:59'), '2025-10-10T23:59');
+  for (const bad of ['tomorrow', '2025-13-01 10:00', '2025-10-10 24:00', '10/10/2025 10:00', '2025-10-10']) assert.equal(dueTime(bad), null, bad);
+  // late: after the due minute; the site's own word stands; no time or no due date: not known
+  assert.equal(lateOf({ time: '2025-10-10T10:00', late: null }, '2025-10-10T10:00'), false);
+  assert.equal(lateOf({ time: '2025-10-10T10:01', late: null }, '2025-10-10T10:00'), true);
+  assert.equal(lateOf({ time: null, late: true }, '2025-10-10T10:00'), true);
+  assert.equal(lateOf({ time: null, late: null }, '2025-10-10T10:00'), null);
+  assert.equal(lateOf({ time: '2025-10-10T10:01', late: null }, null), null);
   assert.equal(detectSite([{ top: 'aiden_1_2_x.zip', isFile: true }, { top: 'bo_late_3_4_y.html', isFile: true }]), 'canvas');
   assert.equal(detectSite([{ top: 'ada', isFile: false }, { top: 'bo', isFile: false }]), 'folders');
 });
@@ -185,9 +197,12 @@ test('the sites\' other shapes: Brightspace\'s and Moodle\'s loose files, Canvas
   const md = groupBySite(f('Aiden Rodriguez_77_assignsubmission_file_handin.zip', 'Bo Ek_78_assignsubmission_file_/w4/p1.html', 'Bo Ek_78_assignsubmission_onlinetext_/onlinetext.html'));
   assert.equal(md.site, 'moodle');
   assert.deepEqual(shape(md), [['Aiden Rodriguez', '77', 'handin.zip'], ['Bo Ek', '78', 'w4/p1.html']]);
-  const cv = groupBySite(f('rodriguezaiden_640693_39786_p1.html', 'rodriguezaiden_640693_39786_common.js', 'ekbo_late_640700_39790_ws4-1.zip'));
+  // each file a Canvas student handed in has its own id (the attachment's): one hand-in still
+  const cv = groupBySite(f('rodriguezaiden_640693_39786_p1.html', 'rodriguezaiden_640693_39791_common.js', 'ekbo_late_640700_39790_ws4-1.zip'));
   assert.equal(cv.site, 'canvas');
   assert.deepEqual(shape(cv), [['ekbo', '640700', 'ws4-1.zip'], ['rodriguezaiden', '640693', 'common.js p1.html']]);
+  const aiden = cv.students.find((s) => s.identity.name === 'rodriguezaiden');
+  assert.deepEqual([aiden.identity.fileIds, aiden.earlier], [['39786', '39791'], []], 'both files graded together, neither an earlier hand-in');
   assert.equal(cv.students.find((s) => s.identity.name === 'ekbo').identity.late, true);
   // a name of no site beside a site's names is left out, and said
   const mixed = groupBySite(f('39786-640693 - Aiden Rodriguez - Oct 10, 2025 1022 AM/a.html', 'stray/b.html'));

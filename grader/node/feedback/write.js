@@ -4,7 +4,11 @@
 //     folder "<Full Name>_<participant id>_assignsubmission_file/" is a new feedback file for
 //     that participant (mod/assign/feedback/file/importziplib.php reads the id from the folder).
 //   Brightspace: the download's folder "<submission id>-<user id> - <name> - <date>/".
-//   Canvas: the download's prefix "<lastfirst>[_late]_<user id>_<submission id>_" on the file.
+//   Canvas (Gradebook → Re-Upload Submissions): a file named as the download names one of the
+//     student's files, "<lastfirst>[_late]_<user id>_<file id>_<name>", becomes a comment with the
+//     file attached on that student's submission (canvas-lms app/models/assignment.rb,
+//     infer_comment_context_from_filename: the first two all-digit "_"-parts are the user id and
+//     the id of a file of that submission).
 //   A folder a student: "<student>/feedback.html".
 import { mkdirSync, rmSync, writeFileSync } from 'node:fs';
 import path from 'node:path';
@@ -24,7 +28,7 @@ export function feedbackZipPath(s, site) {
     const moodle = site === 'moodle' ? /^(.+_\d+_assignsubmission_file)/.exec(folder) : null;
     return `${moodle ? moodle[1] : folder}/${FEEDBACK_FILE}`;
   }
-  if (site === 'canvas') return `${id.name}${id.late ? '_late' : ''}_${id.userId}_${id.submissionId}_${FEEDBACK_FILE}`;
+  if (site === 'canvas') return `${id.name}${id.late ? '_late' : ''}_${id.userId}_${(id.fileIds && id.fileIds[0]) || id.submissionId}_${FEEDBACK_FILE}`;
   return `${safeName(s.name)}/${FEEDBACK_FILE}`;
 }
 

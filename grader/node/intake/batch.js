@@ -12,22 +12,25 @@ import { safeName } from '../layout.js';
 export const NOT_UNPACKED = 'not unpacked';
 
 /**
- * Reads the download `input` into `out` (the rubric's unpack bounds) and says what it found.
+ * Reads the download `input` into `out` (the rubric's unpack bounds; `due`, dueTime's form, makes a
+ * hand-in after it late) and says what it found.
  * Returns the submissions to grade ([{ name, root }]) and all of them ({ all }, the failed too).
  * Throws an Error with a message for the teacher when `input` cannot be read at all.
  */
-export function takeIn(input, out, rubric, log = console.log) {
+export function takeIn(input, out, rubric, { log = console.log, due = null } = {}) {
   let got;
   try {
-    got = intake(input, out, rubric.unpack);
+    got = intake(input, out, rubric.unpack, due);
   } catch (err) {
     if (err instanceof IntakeError) throw new Error(err.message, { cause: err });
     throw err;
   }
   const failed = got.submissions.filter((s) => s.error);
   const earlier = got.submissions.filter((s) => s.earlier.length);
+  const late = got.submissions.filter((s) => s.identity.late);
   log(`grade: found ${got.found}: ${got.submissions.length} hand-in(s)` +
     (earlier.length ? `; ${earlier.length} student(s) handed in more than once (the latest is graded)` : '') +
+    (late.length ? `; ${late.length} late` : '') +
     (failed.length ? `; ${failed.length} could not be unpacked` : '') + ` (${got.seconds.toFixed(1)} s)`);
   for (const s of failed) log(`grade: ${s.name}: ${s.error}`);
   for (const n of got.notes) log(`grade: ${n}`);

@@ -5,8 +5,11 @@
 //     "<submission id>-<user id> - <First Last> - <Mon D, YYYY H:MM AM>" (the colon left out in
 //     downloads since about 2020: "Oct 10, 2025 1022 AM"), and an index.html listing them;
 //     older downloads put the files loose: "<same> - <original name>".
-//   Canvas (Download Submissions): files "<lastfirst>_<user id>_<submission id>_<original name>",
-//     "<lastfirst>_late_<user id>_..." when late (only the latest submission is in the download).
+//   Canvas (Download Submissions): files "<lastfirst>[_late]_<user id>_<file id>_<original name>"
+//     (canvas-lms lib/content_zipper.rb: the student's sortable name with all but letters, digits
+//     and "_" taken out, lower-cased; "late" when the submission is late; then the user id, and for
+//     each file handed in its own attachment id). Only the latest submission is in the download, so
+//     a student's files, each with its own id, are one hand-in.
 //   Moodle (Download all submissions): folders "<Full Name>_<participant id>_assignsubmission_file"
 //     (older versions end it with "_"; without "download as folders", files
 //     "<Full Name>_<participant id>_assignsubmission_file_<original name>").
@@ -19,7 +22,7 @@ const MOODLE = /^(.+)_(\d+)_assignsubmission_([a-z]+)(?:_(.*))?$/;
 
 export const SITES = {
   brightspace: 'Brightspace (D2L) download: a folder a submission, "<submission id>-<user id> - <name> - <date time>"',
-  canvas: 'Canvas download: files "<lastfirst>_<user id>_<submission id>_<name>" (late: "_late_")',
+  canvas: 'Canvas download: files "<lastfirst>_<user id>_<file id>_<name>" (late: "_late_")',
   moodle: 'Moodle download: folders "<Full Name>_<participant id>_assignsubmission_file"',
   folders: 'a folder a student',
 };
@@ -35,6 +38,27 @@ export function brightspaceTime(text) {
 }
 
 /**
+ * A due date as the teacher writes it ("2025-10-10 23:59" or "2025-10-10T23:59", the course site's
+ * local time, as its names give hand-in times) in the form brightspaceTime gives, or null.
+ */
+export function dueTime(text) {
+  const m = /^(\d{4})-(\d{2})-(\d{2})[ T](\d{1,2}):(\d{2})$/.exec(String(text).trim());
+  if (!m || Number(m[2]) < 1 || Number(m[2]) > 12 || Number(m[3]) < 1 || Number(m[3]) > 31 || Number(m[4]) > 23 || Number(m[5]) > 59) return null;
+  return `${m[1]}-${m[2]}-${m[3]}T${m[4].padStart(2, '0')}:${m[5]}`;
+}
+
+/**
+ * Late, from the hand-in's time and the due date (both as dueTime gives them): a hand-in after the
+ * due minute is late. Where the site's name said it (Canvas's "_late"), that stands; where there is
+ * no time or no due date, it is not known (null).
+ */
+export function lateOf(identity, due) {
+  if (identity.late !== null && identity.late !== undefined) return identity.late;
+  if (!due || !identity.time) return null;
+  return identity.time > due;
+}
+
+/**
  * What one top-level name of a download says, for `site`: { userId, name, submissionId, time, late,
  * rest } (rest: the original file name when the site puts files loose), or null when it is not of
  * that site's shape. `isFile`: the name is a file at the top of the download.
@@ -47,7 +71,7 @@ export function parseTopName(site, top, isFile) {
   }
   if (site === 'canvas') {
     const m = isFile ? CANVAS.exec(top) : null;
-    return m ? { name: m[1], late: Boolean(m[2]), userId: m[3], submissionId: m[4], time: null, rest: m[5] } : null;
+    return m ? { name: m[1], late: Boolean(m[2]), userId: m[3], submissionId: null, fileId: m[4], time: null, rest: m[5] } : null;
   }
   if (site === 'moodle') {
     const m = MOODLE.exec(top);
@@ -104,10 +128,11 @@ export function groupBySite(files) {
     if (!byUser.has(user)) byUser.set(user, new Map());
     const subs = byUser.get(user);
     const subKey = `${id.submissionId}|${id.time}|${site === 'folders' ? top : ''}`;
-    if (!subs.has(subKey)) subs.set(subKey, { identity: { site, name: id.name, userId: id.userId, submissionId: id.submissionId, time: id.time, late: id.late, source: [] }, files: [] });
+    if (!subs.has(subKey)) subs.set(subKey, { identity: { site, name: id.name, userId: id.userId, submissionId: id.submissionId, time: id.time, late: id.late, source: [], ...(id.fileId ? { fileIds: [] } : {}) }, files: [] });
     const sub = subs.get(subKey);
     const source = isFile ? top : `${top}/`;
     if (!sub.identity.source.includes(source)) sub.identity.source.push(source);
+    if (id.fileId && !sub.identity.fileIds.includes(id.fileId)) sub.identity.fileIds.push(id.fileId);
     sub.files.push({ ...f, segments: isFile ? [id.rest] : f.segments.slice(1) });
   }
   const students = [];
@@ -115,7 +140,7 @@ export function groupBySite(files) {
     // the latest first: by time, then by submission id (a later submission has a larger id)
     const order = [...subs.values()].sort((a, b) => String(b.identity.time).localeCompare(String(a.identity.time)) || Number(b.identity.submissionId) - Number(a.identity.submissionId));
     const [latest, ...rest] = order;
-    students.push({ ...latest, earlier: rest.map((s) => ({ time: s.identity.time, submissionId: s.identity.submissionId, source: s.identity.source, files: s.files.length })) });
+    students.push({ ...latest, earlier: rest.map((s) => ({ time: s.identity.time, late: s.identity.late, submissionId: s.identity.submissionId, source: s.identity.source, files: s.files.length })) });
   }
   return { site, students, notes };
 }

@@ -7,7 +7,7 @@ import { existsSync, lstatSync, readFileSync, readdirSync, rmSync, writeFileSync
 import path from 'node:path';
 import { IntakeError, TooBig, entryData, zipEntries } from './zip.js';
 import { isJunk, safeSegments } from './names.js';
-import { groupBySite, detectSite, SITES } from './formats.js';
+import { groupBySite, detectSite, lateOf, SITES } from './formats.js';
 import { unpackHandin } from './unpack.js';
 import { safeName } from '../layout.js';
 
@@ -62,10 +62,11 @@ function unwrap(files) {
 
 /**
  * Reads the download `input` (a .zip or a folder) into one folder a student under `out`/handins.
- * `bounds`: the rubric's unpack. Returns { site, found (what it was, in words), submissions:
- * [{ name, root, identity, earlier, notes, error }], notes, seconds }, also written to OUT/intake.json.
+ * `bounds`: the rubric's unpack; `due`: the due date (dueTime's form) that makes a timed hand-in
+ * late, or null. Returns { site, found (what it was, in words), due, submissions: [{ name, root,
+ * identity, earlier, notes, error }], notes, seconds }, also written to OUT/intake.json.
  */
-export function intake(input, out, bounds) {
+export function intake(input, out, bounds, due = null) {
   const t0 = Date.now();
   const isZipFile = lstatSync(input).isFile();
   let listing;
@@ -76,6 +77,11 @@ export function intake(input, out, bounds) {
     throw err;
   }
   const { site, students, notes } = groupBySite(unwrap(listing.files));
+  for (const s of students) {
+    s.identity.late = lateOf(s.identity, due);
+    for (const e of s.earlier) e.late = lateOf(e, due);
+  }
+  if (due && students.some((s) => !s.identity.time && s.identity.late === null)) notes.push(`--due ${due.replace('T', ' ')}: this download's names carry no hand-in time, so late is not known`);
   const handins = path.join(out, 'handins');
   rmSync(handins, { recursive: true, force: true });
   // the name the report shows: the site's name for the student, with the user id when two share one
@@ -103,7 +109,7 @@ export function intake(input, out, bounds) {
     }
     return sub;
   });
-  const result = { site, found: SITES[site], input: path.resolve(input), submissions, notes: [...listing.notes, ...notes], seconds: (Date.now() - t0) / 1000 };
+  const result = { site, found: SITES[site], input: path.resolve(input), due, submissions, notes: [...listing.notes, ...notes], seconds: (Date.now() - t0) / 1000 };
   writeFileSync(path.join(out, INTAKE_FILE), JSON.stringify(result, null, 1));
   return result;
 }
