@@ -3,6 +3,8 @@
 // does it right. Tried in order; the first match of a reason wins.
 const RULES = [
   // a sphere with a hole (read from its mesh, or seen along the orbit) before the shaders': its reason may name the vertex shader
+  // a hostile page's reasons are about the page, not a sentence of the step: none is named
+  { test: /reads back differs from what the browser shows|replaced or probed what the grader reads/i, slide: null },
   { test: /a hole shows|not closed/i, slide: 'Draw a solid sphere in perspective view. (A: 6.6)' },
   { test: /shader (error|does not compile)|compile|does not link|WGSL/i, slide: 'Upload parameters (k_d, L_e, and p_ℓ or I_e) as uniform vectors.', note: 'the shaders must compile first: the error above gives the line' },
   { test: /adapter|WebGPU/i, slide: 'Draw a solid sphere in perspective view. (A: 6.6)', note: 'this browser has no WebGPU adapter: try the WebGL view, or a browser with WebGPU' },
@@ -19,7 +21,7 @@ const RULES = [
   { test: /1\/r²|fall-off|point light/i, slide: 'L_i = V I / ‖p_ℓ − x‖² (a point light\'s radiance falls off with the squared distance).' },
   { test: /pow\(0, 0\)|black spots|s = /i, slide: 'L_r,s = k_s L_i (max(ω_r · ω_o, 0))^s: with s = 0, pow(0, 0) is undefined; guard it.' },
   { test: /input event|change event|while sliding/i, slide: 'Use the input event for the sliders to get immediate response while sliding.' },
-  { test: /slider|ks|kd|\bLe\b|\bLa\b/i, slide: 'Upload remaining parameters for the Phong model (k_s, s, L_a) as uniform vectors. Add sliders to the webpage for modifying the different parameters.' },
+  { test: /slider|\bks\b|\bkd\b|\bLe\b|\bLa\b/i, slide: 'Upload remaining parameters for the Phong model (k_s, s, L_a) as uniform vectors. Add sliders to the webpage for modifying the different parameters.' },
   { test: /highlight|specular/i, slide: 'Update your reflection model calculations to include ambient light and highlights: L_o = L_r,d + L_r,s + L_r,a.' },
   { test: /diffuse|brightness|\|n·w_i\||two-sided|lit/i, slide: 'L_r,d = k_d L_i max(cos θ, 0) = k_d L_i max(n · ω_i, 0).' },
 ];
@@ -38,6 +40,7 @@ export function missedSlides(reasons) {
     if (/^not graded here\b/.test(reason)) continue;
     if (!/^(FAIL|REVIEW)\b/.test(reason) && !/could not|nothing|never|no canvas|time bound|missing|not found/i.test(reason)) continue;
     const rule = RULES.find((r) => r.test.test(reason));
+    if (rule && rule.slide === null) continue;
     if (rule && !out.some((o) => o.slide === rule.slide)) out.push({ reason, slide: rule.slide, note: rule.note });
   }
   return out;

@@ -11,14 +11,21 @@ export function pixelsScript() {
     querySelectorAll: D.querySelectorAll, createElement: D.createElement, getClientRects: E.getClientRects, getAttribute: E.getAttribute,
     getContext: C.getContext, toDataURL: C.toDataURL, width: property(C, 'width'), height: property(C, 'height'),
     fillStyle: property(X, 'fillStyle'), fillRect: X.fillRect, drawImage: X.drawImage, getImageData: X.getImageData,
+    getBoundingClientRect: E.getBoundingClientRect, innerWidth: property(window, 'innerWidth'), innerHeight: property(window, 'innerHeight'),
+    clientLeft: property(E, 'clientLeft'), clientTop: property(E, 'clientTop'), clientWidth: property(E, 'clientWidth'), clientHeight: property(E, 'clientHeight'),
   };
   const size = (c) => ({ width: N.width.get.call(c), height: N.height.get.call(c) });
 
+  /** The canvas the grader reads: the largest visible one, or null. */
+  const target = () => {
+    const all = [...N.querySelectorAll.call(document, 'canvas')].filter((c) => size(c).width > 0 && size(c).height > 0 && N.getClientRects.call(c).length);
+    return all.length ? all.reduce((a, b) => (size(b).width * size(b).height > size(a).width * size(a).height ? b : a)) : null;
+  };
+
   /** The target canvas (the largest visible one), composited over white: a PNG data URL with format 'png' (the grader, which sends it out of the page: a tenth of the raw bytes, lossless), else its RGBA bytes (the check page, in the page). */
   const pixels = (format) => {
-    const all = [...N.querySelectorAll.call(document, 'canvas')].filter((c) => size(c).width > 0 && size(c).height > 0 && N.getClientRects.call(c).length);
-    if (!all.length) return null;
-    const canvas = all.reduce((a, b) => (size(b).width * size(b).height > size(a).width * size(a).height ? b : a));
+    const canvas = target();
+    if (!canvas) return null;
     const { width, height } = size(canvas);
     const copy = N.createElement.call(document, 'canvas');
     N.width.set.call(copy, width);
@@ -32,4 +39,29 @@ export function pixelsScript() {
     return { width, height, api, data: N.getImageData.call(c2, 0, 0, width, height).data };
   };
   Object.defineProperty(g, 'pixels', { value: pixels, enumerable: true, configurable: true });
+
+  /**
+   * The first of a picture's two channels: the target canvas as read back, its alpha kept (a PNG
+   * data URL), with where it lies in the viewport and the viewport's size, in CSS pixels ({ x, y,
+   * width, height }; a screenshot's clip is in the viewport's pixels, wherever the page is
+   * scrolled): the driver takes the second, a screenshot of that box from outside the page. Null
+   * where there is no canvas.
+   */
+  const readBack = () => {
+    const canvas = target();
+    if (!canvas) return null;
+    const { width, height } = size(canvas);
+    const copy = N.createElement.call(document, 'canvas');
+    N.width.set.call(copy, width);
+    N.height.set.call(copy, height);
+    N.drawImage.call(N.getContext.call(copy, '2d'), canvas, 0, 0);
+    // the canvas's own picture lies inside its border (a CSS border shows around it, not over it)
+    const r = N.getBoundingClientRect.call(canvas), read = (k) => N[k].get.call(canvas);
+    return {
+      width, height, api: N.getAttribute.call(canvas, 'data-grade-api'), png: N.toDataURL.call(copy, 'image/png'),
+      box: { x: r.x + read('clientLeft'), y: r.y + read('clientTop'), width: read('clientWidth'), height: read('clientHeight') },
+      view: { x: 0, y: 0, width: N.innerWidth.get.call(window), height: N.innerHeight.get.call(window) },
+    };
+  };
+  Object.defineProperty(g, 'readBack', { value: readBack, enumerable: true, configurable: true });
 }

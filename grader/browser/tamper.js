@@ -37,7 +37,7 @@ export function tamperScript() {
   watch('performance.now', performance, 'now');
   const g = window.__grade;
   if (g) {
-    for (const n of ['state', 'pixels', 'click', 'controls', 'setValue']) {
+    for (const n of ['state', 'pixels', 'readBack', 'click', 'controls', 'setValue']) {
       const f = g[n];
       if (typeof f !== 'function') continue;
       try { Object.defineProperty(g, n, { get: () => f, set: () => { tried.add(`window.__grade.${n}`); }, configurable: false, enumerable: true }); } catch { /* (already fixed) */ }

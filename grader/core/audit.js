@@ -8,6 +8,7 @@ import { checkList, NOT_GRADED, tooSlowWords, tooHeavyWords } from './verdict.js
 import { litView } from './views.js';
 import { sphereView, shadingOf, viewFits } from './evidence.js';
 import { auditFirstFrame, notGradedHere, STOP } from './audits/first-frame.js';
+import { auditShown } from './audits/channels.js';
 import { auditLevelControls, auditHeavyLevel, auditSphere } from './audits/sphere.js';
 import { auditNormals, auditPerspective, auditNormalsNotLight, auditDepthCulling } from './audits/normals.js';
 import { auditDiffuse, auditPointLight, auditUnclipped, auditBrightened } from './audits/diffuse.js';
@@ -45,9 +46,11 @@ export function auditPart({ facts, images }, rubric) {
     else say(rubric.tooSlowVerdict, why);
     return result(null);
   }
+  const firstDiffers = auditShown(C);
   const fail = auditFirstFrame(C);
   if (fail === STOP) return result(null);
-  if (fail) return result(fail);
+  // what the grader read is not what a student sees: the review stands, nothing is failed on it
+  if (fail) return result(firstDiffers ? null : fail);
   if (!facts.ladder) return result('the grader stopped before the level ladder');
   auditHeavyLevel(C);
   auditOrbitStopsAgain(C);

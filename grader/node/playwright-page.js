@@ -91,12 +91,41 @@ export function partOpener(browser, host) {
       if (!response || !response.ok()) return { page, why: `the page answered ${response ? response.status() : 'nothing'}` };
       // (no wait for the network to go quiet: drive.js waits for the first draw call, which comes after
       // any shaders or models a page fetches)
-      return { page, driver: pageDriver(page, log) };
+      return { page, driver: { ...pageDriver(page, log), shown: () => shownChannels(page) } };
     },
     async done(clean) {
       if (!clean) await drop();
     },
   };
+}
+
+/** A PNG (bytes) as { width, height, data }. */
+const decode = (bytes) => {
+  const { width, height, data } = PNG.sync.read(Buffer.from(bytes));
+  return { width, height, data: new Uint8Array(data.buffer, data.byteOffset, data.length) };
+};
+
+/**
+ * A picture's two channels: the canvas as the page reads it back (its alpha kept), and as the
+ * browser shows it, a screenshot of the canvas's box in view taken from outside the page (the
+ * protocol, not the page's own functions): { raw, shown, box, clip } in the page's CSS pixels, or
+ * { why } where there is nothing to compare.
+ */
+async function shownChannels(page) {
+  const r = await page.evaluate(async () => {
+    if (window.__webgpuCapture) await window.__webgpuCapture.settled();
+    return window.__grade.readBack ? window.__grade.readBack() : null;
+  });
+  if (!r) return { why: 'no canvas read back' };
+  const { box, view } = r;
+  if (!(box.width >= 1 && box.height >= 1)) return { why: 'the canvas has no size on the page' };
+  // the box in view, on whole pixels, a pixel more on each side (a canvas at a fractional place)
+  const x0 = Math.max(view.x, Math.floor(box.x) - 1), y0 = Math.max(view.y, Math.floor(box.y) - 1);
+  const x1 = Math.min(view.x + view.width, Math.ceil(box.x + box.width) + 1), y1 = Math.min(view.y + view.height, Math.ceil(box.y + box.height) + 1);
+  if (x1 - x0 < box.width / 2 || y1 - y0 < box.height / 2) return { why: 'the canvas is mostly out of view' };
+  const clip = { x: x0, y: y0, width: x1 - x0, height: y1 - y0 };
+  const png = await page.screenshot({ clip, animations: 'disabled', caret: 'hide', timeout: 10_000 });
+  return { raw: decode(Buffer.from(r.png.slice(r.png.indexOf(',') + 1), 'base64')), shown: decode(png), box, clip };
 }
 
 /**

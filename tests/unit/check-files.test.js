@@ -74,4 +74,8 @@ test('a review or a fail names the slide sentence it misses', async () => {
   // a part not graded here (too slow, too heavy) was not judged: no sentence, whatever it was doing
   assert.deepEqual(missedSlides(["not graded here: too slow on this machine: the rubric's bound of 90 s ran out while sampling the orbit; nothing was judged"]), []);
   assert.deepEqual(missedSlides(['a round closed sphere (radius 80 px)']), []); // what passed names nothing
+  // a hostile page's reasons are about the page, not the step ('a teacher looks' is no k_s slider)
+  assert.deepEqual(missedSlides(["REVIEW: what the page reads back differs from what the browser shows, at the first frame: 56% of the canvas's opaque pixels in view (another canvas or an element laid over it, or a CSS filter on it?); the browser's picture is shown: a teacher looks"]), []);
+  assert.deepEqual(missedSlides(["REVIEW: the page replaced or probed what the grader reads it through: toDataURL (a hand-in must not change the browser's own functions or the grader's, nor draw otherwise under a test driver): what it showed may not be what the grader saw, a teacher looks"]), []);
+  assert.equal(slide('REVIEW: raising ks showed no highlight'), 'Upload remaining parameters for');
 });

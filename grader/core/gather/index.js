@@ -16,6 +16,7 @@ import { unclip, brighten } from './visible.js';
 import { readGeometry } from './geometry.js';
 import { lookAllRound } from './all-round.js';
 import { sphereView, shadingOf, viewFits, highlightEvidence } from '../evidence.js';
+import { shownDifference } from '../measure/shown.js';
 
 /** What the gathering is doing until the page's first frame is seen (past it, the page draws). */
 export const FIRST_FRAME = 'waiting for the first frame';
@@ -74,6 +75,7 @@ async function gather(S) {
   }
   facts.canvas = { width: firstShot.img.width, height: firstShot.img.height };
   S.keep('first', firstShot.img);
+  await compareShown(S, 'first');
   if (firstShot.an.blank) return;
 
   // ---- the controls, the orbit, the level ----
@@ -141,8 +143,23 @@ async function gather(S) {
   if (must.has('highlight') && shading.fit && stopped) await leastShininess(S, controls);
   facts.sources = await page.sources();
   if (placeLater) await placeFarther(S, controls);
+  await compareShown(S, 'last');
   // last: it turns the orbit on and off again, and nothing after it reads the picture
   await lookAllRound(S);
+}
+
+/**
+ * The picture as the browser shows it beside the page's own read-back (the second channel, where the
+ * driver has one): facts.shown[] gets how far they agree, and where they differ the browser's picture
+ * is kept (`shown-<at>`), for the report to show what a student saw.
+ */
+async function compareShown(S, at) {
+  if (!S.page.shown) return;
+  S.outOfTime();
+  const two = await S.page.shown();
+  const d = shownDifference(two, S.T);
+  if (d.compared && d.share > S.T.shownDifferShare) d.image = S.keep(`shown-${at}`, two.shown);
+  (S.facts.shown || (S.facts.shown = [])).push({ at, ...d });
 }
 
 /**

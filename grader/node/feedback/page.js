@@ -22,6 +22,7 @@ const PICTURES = [
   ['coarse', 'your page at a coarse level'], ['highlightPlace', 'your highlight, the light away from the viewer'], ['leastS', 'your page with s at its least'],
   ['unclipped', 'your page, its own sliders lowered'], ['brightened', 'your page, its own light raised'],
   ['allRoundGap', 'your page from another side along the orbit: a hole'],
+  ['shownFirst', 'your page as the browser shows it, first frame'], ['shownLast', 'your page as the browser shows it, at the end'],
 ];
 
 /** A picture of the report (a path relative to `out`) as a data: URL, or null when it is not there. */

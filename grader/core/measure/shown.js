@@ -1,0 +1,52 @@
+// A picture's two channels: the canvas as the page's own read-back gives it (its alpha kept), and as
+// the browser shows it (a screenshot of the canvas's box, taken outside the page). Where the canvas
+// is opaque they agree, but for the engine's rounding and the blur of a canvas placed at a fraction
+// of a pixel or shown scaled; a canvas or an element laid over it, or a CSS filter on it, shows
+// something else than what is read back.
+
+/**
+ * Of the shown picture's pixels whose canvas pixel is opaque, how many differ from it by more than
+ * `limit` in a channel, with the shown picture read (dx, dy) pixels on: { opaque, differ }. Each
+ * shown pixel is matched to the canvas pixel under its centre (`box`: the canvas's picture on the
+ * page, `clip`: the screenshot's, both in CSS pixels; `step`: every step-th row and column).
+ */
+function differing(raw, shown, box, clip, dx, dy, limit, step) {
+  const kx = raw.width / box.width, ky = raw.height / box.height;
+  let opaque = 0, differ = 0;
+  for (let v = 0; v < shown.height; v += step) {
+    const ry = Math.floor((clip.y + v + 0.5 + dy - box.y) * ky);
+    if (ry < 0 || ry >= raw.height) continue;
+    for (let u = 0; u < shown.width; u += step) {
+      const rx = Math.floor((clip.x + u + 0.5 + dx - box.x) * kx);
+      if (rx < 0 || rx >= raw.width) continue;
+      const o = 4 * (ry * raw.width + rx);
+      if (raw.data[o + 3] !== 255) continue;
+      const s = 4 * (v * shown.width + u);
+      opaque++;
+      if (Math.max(Math.abs(raw.data[o] - shown.data[s]), Math.abs(raw.data[o + 1] - shown.data[s + 1]), Math.abs(raw.data[o + 2] - shown.data[s + 2])) > limit) differ++;
+    }
+  }
+  return { opaque, differ };
+}
+
+/**
+ * How far the two channels of one picture agree ({ raw, shown, box, clip }: playwright-page.js's
+ * shownChannels): { compared: true, opaque, share } (share: of the canvas's opaque pixels in view,
+ * those shown otherwise by more than shownPixelDiff in a channel), where they fit best within
+ * shownShift pixels; or { compared: false, why }.
+ */
+export function shownDifference(two, T) {
+  if (!two || two.why) return { compared: false, why: two ? two.why : 'not read' };
+  const { raw, shown, box, clip } = two;
+  // a large picture is read at every other row and column (a quarter of the work; the share alike)
+  const step = shown.width * shown.height > T.shownFullPixels ? 2 : 1;
+  let best = null;
+  for (let dy = -T.shownShift; dy <= T.shownShift; dy++) {
+    for (let dx = -T.shownShift; dx <= T.shownShift; dx++) {
+      const r = differing(raw, shown, box, clip, dx, dy, T.shownPixelDiff, step);
+      if (r.opaque && (!best || r.differ / r.opaque < best.differ / best.opaque)) best = r;
+    }
+  }
+  if (!best) return { compared: false, why: 'no opaque pixel of the canvas is in view' };
+  return { compared: true, opaque: best.opaque, share: Math.round((best.differ / best.opaque) * 1e4) / 1e4 };
+}
