@@ -1,5 +1,5 @@
 // Seeing what a WebGPU page draws in headless Chromium. Headless Chromium gets a SwiftShader
-// WebGPU adapter (WEBGPU_ARGS) but cannot present a WebGPU canvas: a screenshot shows one flat
+// WebGPU adapter (WEBGPU_ARGS, grader/node/chromium.js) but cannot present a WebGPU canvas: a screenshot shows one flat
 // colour. So an init script (webgpuCaptureScript, for context.addInitScript) stands in for the
 // canvas's 'webgpu' context: configure() remembers the device and format, getCurrentTexture()
 // hands out an ordinary texture of the canvas's size (RENDER_ATTACHMENT | COPY_SRC | the page's
@@ -8,9 +8,6 @@
 // swizzled) and put on the canvas through its 2D context. The page's files are not changed; the
 // canvas then shows, screenshots and reads back like any other canvas.
 // readWebGPUFrame(page) waits for the last frame's copy and returns it.
-
-/** Chromium flags for a SwiftShader WebGPU adapter on this machine (no --disable-gpu). */
-export const WEBGPU_ARGS = ['--enable-unsafe-webgpu', '--enable-features=Vulkan', '--use-webgpu-adapter=swiftshader'];
 
 /** The init script (a function: Playwright serialises it). Publishes window.__webgpuCapture. */
 export function webgpuCaptureScript() {

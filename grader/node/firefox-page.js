@@ -1,4 +1,4 @@
-// The page interface in Debian's Firefox ESR (tools/firefox.js: puppeteer-core over WebDriver
+// The page interface in Debian's Firefox ESR (firefox.js: puppeteer-core over WebDriver
 // BiDi, WebGL on Mesa's llvmpipe): a part opened as playwright-page.js opens one in Chromium, with
 // the same init scripts (grader/browser/instrument.js, then clock.js at the same frozen start) and
 // the same serving rules (serve-submission.js's submissionAnswers: only the submission's files,

@@ -6,7 +6,7 @@
 // its worker's Firefox is ended and started again for the next part.
 import { readFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
-import { launchFirefox } from '../../tools/firefox.js';
+import { launchFirefox } from './firefox.js';
 import { firefoxOpener } from './firefox-page.js';
 import { runPart } from './run-part.js';
 import { browserLabel } from './browser-version.js';

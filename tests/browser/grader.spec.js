@@ -12,9 +12,9 @@ import { copyHandins } from '../fixtures/handins.js';
 import { readArtifact } from '../../grader/node/artifacts.js';
 import { findParts, partNumber } from '../../grader/node/parts.js';
 import { partOpener } from '../../grader/node/playwright-page.js';
-import { CHROMIUM, CHROMIUM_ARGS } from '../../tools/browser.js';
-import { WEBGPU_ARGS, webgpuCaptureScript, readWebGPUFrame } from '../../grader/browser/webgpu-capture.js';
-import { launchFirefox } from '../../tools/firefox.js';
+import { CHROMIUM, CHROMIUM_ARGS, WEBGPU_ARGS } from '../../grader/node/chromium.js';
+import { webgpuCaptureScript, readWebGPUFrame } from '../../grader/browser/webgpu-capture.js';
+import { launchFirefox } from '../../grader/node/firefox.js';
 import { checkClassInFirefox, NO_WEBGPU, partsByName } from './check-helpers.js';
 
 const RECORDED = path.resolve(import.meta.dirname, '../fixtures/artifacts');
