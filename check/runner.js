@@ -60,7 +60,7 @@ async function load(stage, src, seconds) {
   return { frame, how };
 }
 
-/** The grader's words for a part stopped by the time bound (as grade.spec.js's). */
+/** The grader's words for a part stopped by the time bound (as harness.js's). */
 const timedOut = (rubric, why) => `the page did not finish within the rubric's bound of ${rubric.timeoutSeconds} s (it never returns, or is far too slow)${why ? `: ${why}` : ''}`;
 
 /**
@@ -91,7 +91,7 @@ export async function checkPart({ part, page, session, rubric, stage, progress =
       let timer;
       const bound = new Promise((resolve) => { timer = setTimeout(() => resolve('timeout'), rubric.timeoutSeconds * 1000); });
       // a loop stopped after loading (in a promise, a frame, a handler) is a page that never returns, as
-      // under the grader, whatever was judged meanwhile; the grader's outer bound (as grade.spec.js's):
+      // under the grader, whatever was judged meanwhile; the grader's outer bound (as harness.js's):
       // past it the part is too slow to judge here
       const deadline = Date.now() + 0.85 * rubric.timeoutSeconds * 1000;
       const grading = fp.hung() ? Promise.reject(new Error('hung')) : gradePart(fp, { part, rubric, progress, deadline });
@@ -101,7 +101,7 @@ export async function checkPart({ part, page, session, rubric, stage, progress =
         if (r === 'timeout') graded.fail = timedOut(rubric);
         else graded = r;
       } catch (err) {
-        // the grader's own trouble with this page: never a pass on it, a teacher looks (as grade.spec.js)
+        // the grader's own trouble with this page: never a pass on it, a teacher looks (as harness.js)
         if (!fp.hung()) graded.checks = [{ level: 'review', reason: `the grader could not finish on this page: ${err.message.split('\n')[0]}` }];
       } finally {
         clearTimeout(timer);

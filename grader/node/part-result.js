@@ -1,6 +1,6 @@
 // A part's result (what report.json says of it) from its audit: the verdict, the reasons in the
 // order a teacher reads them, the numbers, the pictures shown (files of its artifact). The same
-// for a part just gathered (grade.spec.js) and for a part re-judged from its saved artifact
+// for a part just gathered (harness.js) and for a part re-judged from its saved artifact
 // (--audit-only), so the two cannot drift apart. A part the browser could not run (WebGPU in
 // Firefox ESR) gets the verdict "not graded here", never a fail.
 import { verdictOf, reasonsOf, NOT_GRADED } from '../core/verdict.js';

@@ -1,4 +1,4 @@
-// The grader's own Playwright Test run: one test per part (grader/node/grade.spec.js), its workers,
+// The grader's own Playwright Test run: one test per part (grader/node/harness.js), its workers,
 // its --shard for splitting a class over machines, its reporters (blob for merge-reports, list).
 // Chromium gets a SwiftShader WebGPU adapter too: hand-ins come in both APIs. The browser is the
 // one grade.js found (the plan's browserPath: grader/node/find-browser.js).
@@ -9,7 +9,7 @@ const plan = process.env.GRADE_PLAN ? JSON.parse(await import('node:fs').then((f
 
 export default defineConfig({
   testDir: '.',
-  testMatch: 'grade.spec.js',
+  testMatch: 'harness.js',
   timeout: plan.timeoutSeconds * 1000,
   workers: Number(process.env.GRADE_WORKERS || 2),
   fullyParallel: true,

@@ -2,7 +2,7 @@
 // playwright-page.js or firefox-page.js: served by serve-submission.js's rules, time frozen,
 // instrumented), gathered and audited (grader/core/grade-part.js), its artifact saved
 // (artifacts.js) and its result (part-result.js), our reference drawn beside it. Chromium's
-// harness runs it as one Playwright test a part (grade.spec.js), Firefox's as a plain Node loop
+// harness runs it as one Playwright test a part (harness.js), Firefox's as a plain Node loop
 // (grade-firefox.js).
 import { writeFileSync, mkdirSync } from 'node:fs';
 import path from 'node:path';

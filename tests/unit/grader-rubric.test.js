@@ -86,7 +86,7 @@ test('every threshold the grader reads is in grader/core/rubric.json, every top-
 
 test('no rubric value has a number written beside it as a fallback in grader/ and check/', () => {
   const files = sources();
-  assert.ok(files.some((rel) => rel.startsWith('core/measure/')) && files.some((rel) => rel.startsWith('core/gather/')) && files.includes('node/grade.spec.js') && files.includes('../check/runner.js'), 'the measurements, the gatherers, the harness and the check page\'s runner are scanned');
+  assert.ok(files.some((rel) => rel.startsWith('core/measure/')) && files.some((rel) => rel.startsWith('core/gather/')) && files.includes('node/harness.js') && files.includes('../check/runner.js'), 'the measurements, the gatherers, the harness and the check page\'s runner are scanned');
   const found = files.flatMap((rel) => numericFallbacks(read(rel)).map((f) => `${rel}: ${f}`));
   assert.deepEqual(found, [], 'numbers that belong in rubric.json');
 });
