@@ -1,8 +1,7 @@
 // WP04P3: the diffuse term, brightness = max(n·w_i, 0)·kd·Le + ambient for a fitted light, in the
 // judged view and in every lit view along the orbit; a point light and its 1/r² fall-off.
 import { nearPointLight, clearlyBetter } from '../measure.js';
-
-const fmt = (x, d = 2) => (x === null || x === undefined || Number.isNaN(x) ? '–' : Number(x).toFixed(d));
+import { fmt } from '../format.js';
 
 /** The diffuse fit of the judged view (`shading`: evidence.shadingOf), with the lit views' sparse fits (`lit`). */
 export function auditDiffuse({ T, must, say, numbers }, shading, lit) {

@@ -5,8 +5,7 @@
 import { analyse, samples, normalColours, pictureChange, addedTintFit, addedClearly } from '../measure.js';
 import { rimAngle } from '../measure/perspective.js';
 import { facesViewer } from '../gather/probes.js';
-
-const fmt = (x, d = 2) => (x === null || x === undefined || Number.isNaN(x) ? '–' : Number(x).toFixed(d));
+import { fmt } from '../format.js';
 
 /**
  * The normals as colours, on the judged picture (`judged`: { img, an }) or the one the page's face
