@@ -17,7 +17,7 @@ export function auditDiffuse({ T, must, say, numbers }, shading, lit) {
     (f.r2TwoSidedAll > f.r2All + T.twoSidedGainAll && f.r2TwoSidedAll >= T.diffuseR2));
   if (fit && fit.tint && fit.tint.added) say('pass', `note: the colour is the lighting with WP04P1's normal colouring added (about ${fmt(fit.tint.added, 2)}·n, read from how the channels differ: each follows one component of the normal, the lighting is the same in all three): the lighting is judged with it taken out`);
   if (!fit) say('mistake', 'too little of the sphere to read its shading');
-  else if (fit.spread < T.litSpread / 2) say('mistake', `the sphere is evenly bright: no diffuse shading to see (in ${1 + lit.length} views${orbitFits.length ? ' along the orbit' : ''})`);
+  else if (fit.spread < T.evenSpread) say('mistake', `the sphere is evenly bright: no diffuse shading to see (in ${1 + lit.length} views${orbitFits.length ? ' along the orbit' : ''})`);
   else if (twoSided) {
     say('mistake', `the sphere is lit on both sides: brightness follows |n·w_i| (R² ${fmt(twoSided.r2TwoSided)}), not max(n·w_i, 0) (R² ${fmt(twoSided.r2)})`);
   } else if (!must.has('highlight') && orbitFits.length && Math.min(...orbitFits.map((f) => f.r2)) < T.diffuseR2 - 0.1) {

@@ -68,7 +68,6 @@ export function diffuseFit(pts, T) {
   let use = unclipped.reduce((a, v) => a + v, 0) >= Math.max(20, 0.3 * pts.length) ? unclipped : new Uint8Array(pts.length).fill(1);
   const use0 = use;
   let best = null, sseAll = null, F = null;
-  const highlightMargin = T.highlightMargin;
   for (let pass = 0; pass < 2; pass++) {
     best = null;
     F = flat(pts, use);
@@ -86,7 +85,7 @@ export function diffuseFit(pts, T) {
     }
     if (pass === 0) {
       sseAll = best.sse;
-      const left = Uint8Array.from(pts, (s, i) => use0[i] && s.y - (best.a + best.b * Math.max(0, s.n[0] * best.l[0] + s.n[1] * best.l[1] + s.n[2] * best.l[2])) < highlightMargin * 0.7);
+      const left = Uint8Array.from(pts, (s, i) => use0[i] && s.y - (best.a + best.b * Math.max(0, s.n[0] * best.l[0] + s.n[1] * best.l[1] + s.n[2] * best.l[2])) < T.highlightFitMargin);
       // no pixel above the fit: the second pass would fit the same pixels to the same numbers
       if (sameMask(left, use)) break;
       use = left;

@@ -97,7 +97,7 @@ export function pointLightFit(pts, T) {
     inv = search(use, true, coarse.inv);
     if (!none || !inv) return null;
     if (pass === 0) {
-      const margin = T.highlightMargin * 0.7;
+      const margin = T.highlightFitMargin;
       const left = pts.map((s, i) => use0[i] && Math.min(s.y - none.a - none.b * none.xs[i], s.y - inv.a - inv.b * inv.xs[i]) < margin);
       // no pixel above both fits: the second pass would fit the same pixels to the same numbers
       if (sameMask(left, use)) break;

@@ -93,7 +93,7 @@ export function addedTintFit(pts, T) {
     if (!fit) return null;
     const l = fit.light, f = fit;
     lit = (n) => Math.max(0, dot(n, l));
-    use = pts.filter((s, i) => !rest[i].clipped && rest[i].y - (f.ambient + f.diffuse * lit(s.n)) < T.highlightMargin * 0.7);
+    use = pts.filter((s, i) => !rest[i].clipped && rest[i].y - (f.ambient + f.diffuse * lit(s.n)) < T.highlightFitMargin);
     if (use.length < 20) return null;
     const { x } = channelsR2(use, lit, turned);
     if (!x) return null;
@@ -110,7 +110,7 @@ export function addedTintFit(pts, T) {
  * of at least addedShare, of a turned normal (its two singular values within addedEven), the
  * channels explained to addedR2, what is left unexplained shrunk addedShrink-fold from nothing added, a part that multiplies
  * the lighting (`times`) within addedTimesShare of it, and lighting left when it is taken out (the
- * rest shaded by half litSpread, as a lit picture must be, fitted to diffuseR2: WP04P1's colours alone leave a flat rest)?
+ * rest shaded by evenSpread at least, as a lit picture must be, fitted to diffuseR2: WP04P1's colours alone leave a flat rest)?
  */
 export const addedClearly = (fit, T) => !!fit && fit.added.share >= T.addedShare && fit.added.even >= T.addedEven && fit.added.r2 >= T.addedR2 &&
-  1 - fit.added.r2Without >= T.addedShrink * (1 - fit.added.r2) && Math.abs(fit.added.times) <= T.addedTimesShare && fit.spread >= T.litSpread / 2 && fit.r2 >= T.diffuseR2;
+  1 - fit.added.r2Without >= T.addedShrink * (1 - fit.added.r2) && Math.abs(fit.added.times) <= T.addedTimesShare && fit.spread >= T.evenSpread && fit.r2 >= T.diffuseR2;

@@ -103,7 +103,7 @@ export function detintedFit(pts, T, plain = diffuseFit(pts, T)) {
     if (!fit) return null;
     const L = (n) => fit.ambient + fit.diffuse * Math.max(0, n[0] * fit.light[0] + n[1] * fit.light[1] + n[2] * fit.light[2]);
     // the pixels the lighting fits (no highlight, nothing clipped, not black)
-    const use = pts.filter((s) => usable(s, T) && L(s.n) >= 0.05 && luminance(s.c) - L(s.n) * A(s.n) <= T.highlightMargin * 0.7)
+    const use = pts.filter((s) => usable(s, T) && L(s.n) >= 0.05 && luminance(s.c) - L(s.n) * A(s.n) <= T.highlightFitMargin)
       .map((s) => ({ n: s.n, y: luminance(s.c) }));
     if (use.length < 20) break;
     q = albedoAndLighting(use, fit.light, q, fit.ambient, fit.diffuse, T.tintIterations);
