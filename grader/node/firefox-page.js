@@ -9,9 +9,9 @@ import { instrumentScript } from '../browser/instrument.js';
 import { recordersInit } from '../browser/geometry.js';
 import { pixelsScript } from '../browser/pixels.js';
 import { tamperScript } from '../browser/tamper.js';
-import { frameClockScript } from '../browser/clock.js';
+import { FROZEN, frameClockScript } from '../browser/clock.js';
 import { submissionAnswers, urlOf } from './serve-submission.js';
-import { FROZEN, pageDriver } from './playwright-page.js';
+import { pageDriver } from './playwright-page.js';
 
 /**
  * Opens the parts a worker grades, one after another, in `browser` (a puppeteer Browser of Firefox):
@@ -66,7 +66,7 @@ export function firefoxOpener(browser, host) {
       await page.evaluateOnNewDocument(instrumentScript);
       await page.evaluateOnNewDocument(pixelsScript);
       await page.evaluateOnNewDocument(recordersInit);
-      await page.evaluateOnNewDocument(frameClockScript, FROZEN.getTime());
+      await page.evaluateOnNewDocument(frameClockScript, FROZEN);
       await page.evaluateOnNewDocument(tamperScript);
       const url = urlOf(site.origin, root, rel, query).href;
       let response;
