@@ -28,7 +28,7 @@ export function firefoxOpener(browser, host) {
     if (c) await c.close().catch(() => {});
   };
   return {
-    async open({ root, rel, query = '', loadSeconds = 20, log }) {
+    async open({ root, rel, query = '', loadSeconds, log }) {
       await drop();
       context = await browser.createBrowserContext();
       const page = await context.newPage();

@@ -71,7 +71,7 @@ export function partOpener(browser, host) {
     await context.close().catch(() => {});
   };
   return {
-    async open({ root, rel, query = '', loadSeconds = 20, log }) {
+    async open({ root, rel, query = '', loadSeconds, log }) {
       // the part before is left for an empty page first (its frames would run once as time is frozen
       // anew); a page that crashed, was closed or will not let go takes the context with it (its goto fails)
       if (kept && !await leave(kept)) await drop();

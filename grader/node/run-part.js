@@ -109,7 +109,7 @@ async function drawReference({ item, plan, openers, result, graded }) {
   const query = referenceQuery(graded.images.judged, result.numbers, plan.rubric.thresholds, item.referenceQuery);
   let ref = null;
   try {
-    const r = await openers.reference.open({ root: plan.repo, rel: `${item.part}/index.html`, query: query.toString(), log: refLog });
+    const r = await openers.reference.open({ root: plan.repo, rel: `${item.part}/index.html`, query: query.toString(), loadSeconds: plan.rubric.loadSeconds, log: refLog });
     if (!r.why) {
       await r.driver.tick(500, 30);
       ref = await r.driver.snap();

@@ -95,7 +95,7 @@ test.describe("the grader's kept page", () => {
     const browser = await chromium.launch({ executablePath: CHROMIUM, args: CHROMIUM_ARGS });
     try {
       const opener = partOpener(browser, 'submission.localhost');
-      const open = (name) => opener.open({ root: path.join(dir, name), rel: 'index.html', log: { errors: [], blocked: [], notes: [] } });
+      const open = (name) => opener.open({ root: path.join(dir, name), rel: 'index.html', loadSeconds: 20, log: { errors: [], blocked: [], notes: [] } });
       const loaded = '2026-01-05T09:00:02.000Z';
       const a = await open('one');
       expect(await a.page.title()).toBe(`one ${loaded} 1`);

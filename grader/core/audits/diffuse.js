@@ -20,7 +20,7 @@ export function auditDiffuse({ T, must, say, numbers }, shading, lit) {
   else if (fit.spread < T.evenSpread) say('mistake', `the sphere is evenly bright: no diffuse shading to see (in ${1 + lit.length} views${orbitFits.length ? ' along the orbit' : ''})`);
   else if (twoSided) {
     say('mistake', `the sphere is lit on both sides: brightness follows |n·w_i| (R² ${fmt(twoSided.r2TwoSided)}), not max(n·w_i, 0) (R² ${fmt(twoSided.r2)})`);
-  } else if (!must.has('highlight') && orbitFits.length && Math.min(...orbitFits.map((f) => f.r2)) < T.diffuseR2 - 0.1) {
+  } else if (!must.has('highlight') && orbitFits.length && Math.min(...orbitFits.map((f) => f.r2)) < T.orbitDiffuseR2) {
     const worst = orbitFits.reduce((a, b) => (b.r2 < a.r2 ? b : a));
     say('mistake', `brightness does not follow max(n·w_i, 0)·kd·Le + ambient at every orbit position (R² down to ${fmt(worst.r2)}): lit where it should be dark?`);
   } else if (fit.r2 >= T.diffuseR2 && fit.diffuse >= T.diffuseMin) {

@@ -71,7 +71,7 @@ export function auditPerspective({ T, must, say, numbers }, seen) {
   if (!smoothUnitNormals(nc, T)) return;
   const far = nc.det < 0;
   if (!far && nc.det < T.facingDeterminant) return;
-  const rim = rimAngle(samples(img, an, { maxRho: 0.9 }), far);
+  const rim = rimAngle(samples(img, an, { maxRho: T.rimSampleRadius }), far);
   if (!rim || rim.rms > T.perspectiveFitDegrees) return;
   numbers.perspective = rim;
   const short = Math.abs(90 - rim.rimDegrees);
