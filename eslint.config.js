@@ -4,6 +4,8 @@ import js from '@eslint/js';
 import globals from 'globals';
 
 // the grader owns what it runs (its browser launchers included): nothing in grader/ or check/ comes from tools/
+// the grader's core runs in Node and in the browser alike: its own modules only
+const CORE_ONLY = { regex: '^(node:|[a-z@])', message: 'the grader\'s core imports only its own modules (no Node, no packages)' };
 const NOT_TOOLS = { regex: '(^|/)tools/', message: 'the check page and the grader import the grader from grader/, never from tools/' };
 
 export default [
@@ -35,7 +37,15 @@ export default [
     files: ['grader/core/**'],
     languageOptions: { globals: { ...globals.es2021, URL: 'readonly', URLSearchParams: 'readonly', setTimeout: 'readonly', clearTimeout: 'readonly', queueMicrotask: 'readonly' } },
     rules: {
-      'no-restricted-imports': ['error', { patterns: [NOT_TOOLS, { regex: '^(node:|[a-z@])', message: 'the grader\'s core imports only its own modules (no Node, no packages)' }] }],
+      'no-restricted-imports': ['error', { patterns: [NOT_TOOLS, CORE_ONLY] }],
+    },
+  },
+  // gather, then audit (Lighthouse): an audit is a pure function of the artifact and never reaches
+  // into a gatherer; what both need lives in measure/ (or the modules beside audit.js)
+  {
+    files: ['grader/core/audits/**'],
+    rules: {
+      'no-restricted-imports': ['error', { patterns: [NOT_TOOLS, CORE_ONLY, { regex: '(^|/)gather/', message: 'an audit imports nothing from core/gather/: put what both need in measure/ or beside audit.js' }] }],
     },
   },
 ];

@@ -2,9 +2,8 @@
 // (how far those normals reach at the rim), and (P2) the normals facing the viewer: front faces
 // only, the depth test and back-face culling enabled, or the slide's clockwise experiment. P3–P5:
 // the same colours where lighting is asked are not lighting.
-import { analyse, samples, normalColours, pictureChange, addedTintFit, addedClearly } from '../measure.js';
+import { analyse, samples, normalColours, facesViewer, pictureChange, addedTintFit, addedClearly } from '../measure.js';
 import { rimAngle } from '../measure/perspective.js';
-import { facesViewer } from '../gather/probes.js';
 import { fmt } from '../format.js';
 
 /**
