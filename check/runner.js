@@ -29,7 +29,7 @@ export function frameScript(rubric) {
     `(${frameWatchScript})(${JSON.stringify({ loopSeconds: rubric.loadSeconds })});`,
     `(${webgpuCaptureScript})();`,
     `(${drawBatchScript})();`,
-    `(${instrumentScript})();`,
+    instrumentScript,
     `(${pixelsScript})();`,
     recordersInit,
     `(${frameClockScript})(${FROZEN});`,
