@@ -5,8 +5,7 @@
 // WebGL 2 baselines. The project "firefox" runs firefox.spec.js, which
 // launches Firefox itself (puppeteer-core over WebDriver BiDi: tests/browser/firefox-fixtures.js).
 import { defineConfig } from '@playwright/test';
-import { CHROMIUM, CHROMIUM_ARGS, CHROMIUM_MISSING } from './tools/browser.js';
-import { WEBGPU_ARGS } from './grader/browser/webgpu-capture.js';
+import { CHROMIUM, CHROMIUM_ARGS, CHROMIUM_MISSING, WEBGPU_ARGS } from './grader/node/chromium.js';
 
 const PORT = Number(process.env.TEST_PORT || 4173);
 // (without one, Playwright would ask for a browser of its own to be downloaded: say what to install instead)

@@ -1,14 +1,14 @@
 // One part of a hand-in, checked as `npm run grade` checks it: opened in a frame of its own
 // (1000 × 1000 CSS pixels, as the grader's page; time frozen; only the hand-in's files served),
 // loaded within the rubric's loadSeconds, then driven and judged by the grader's own modules
-// (gradePart, grader/core/grade-part.js; verdictOf and reasonsOf, grader/core/verdict.js) through the
+// (gradePart, grader/core/grade-part.js; its verdict and reasons, grader/core/part-result.js) through the
 // frame's page interface (check/frame-page.js), within the rubric's timeoutSeconds. A part that
 // never returns is stopped and said so. A part this browser cannot run (WebGPU here without it), or
 // whose page the self-check's own instrumentation broke, gets no verdict: "not checked here"
 // (check/not-checked.js). Our own part can be drawn beside it (drawReference).
 import { framePage } from './frame-page.js';
 import { frameWatchScript } from './frame-watch.js';
-import { frameClockScript } from '../grader/browser/clock.js';
+import { FROZEN, frameClockScript } from '../grader/browser/clock.js';
 import { drawBatchScript } from '../grader/browser/draw-batch.js';
 import { instrumentScript } from '../grader/browser/instrument.js';
 import { recordersInit } from '../grader/browser/geometry.js';
@@ -16,12 +16,11 @@ import { pixelsScript } from '../grader/browser/pixels.js';
 import { tamperScript } from '../grader/browser/tamper.js';
 import { webgpuCaptureScript } from '../grader/browser/webgpu-capture.js';
 import { gradePart } from '../grader/core/grade-part.js';
-import { verdictOf, reasonsOf } from '../grader/core/verdict.js';
+import { judgement, notJudgedHere } from '../grader/core/part-result.js';
 import { referenceQuery } from '../grader/core/reference-state.js';
+import { deadlineOf } from '../grader/core/deadline.js';
 import { NOT_CHECKED, notCheckedHere } from './not-checked.js';
 
-/** The grader's frozen clock: the same wall time as the grader's (2026-01-05 09:00 UTC). */
-export const FROZEN = Date.UTC(2026, 0, 5, 9, 0, 0);
 export const VIEWPORT = 1000;
 
 /** The script every part's HTML gets first: the watch, the WebGPU capture, the draw batching and the grader's instrumentation, the clock. */
@@ -30,7 +29,7 @@ export function frameScript(rubric) {
     `(${frameWatchScript})(${JSON.stringify({ loopSeconds: rubric.loadSeconds })});`,
     `(${webgpuCaptureScript})();`,
     `(${drawBatchScript})();`,
-    `(${instrumentScript})();`,
+    instrumentScript,
     `(${pixelsScript})();`,
     recordersInit,
     `(${frameClockScript})(${FROZEN});`,
@@ -60,7 +59,7 @@ async function load(stage, src, seconds) {
   return { frame, how };
 }
 
-/** The grader's words for a part stopped by the time bound (as grade.spec.js's). */
+/** The grader's words for a part stopped by the time bound (as harness.js's). */
 const timedOut = (rubric, why) => `the page did not finish within the rubric's bound of ${rubric.timeoutSeconds} s (it never returns, or is far too slow)${why ? `: ${why}` : ''}`;
 
 /**
@@ -91,9 +90,8 @@ export async function checkPart({ part, page, session, rubric, stage, progress =
       let timer;
       const bound = new Promise((resolve) => { timer = setTimeout(() => resolve('timeout'), rubric.timeoutSeconds * 1000); });
       // a loop stopped after loading (in a promise, a frame, a handler) is a page that never returns, as
-      // under the grader, whatever was judged meanwhile; the grader's outer bound (as grade.spec.js's):
-      // past it the part is too slow to judge here
-      const deadline = Date.now() + 0.85 * rubric.timeoutSeconds * 1000;
+      // under the grader, whatever was judged meanwhile; the grader's outer bound (core/deadline.js)
+      const deadline = deadlineOf(Date.now(), rubric);
       const grading = fp.hung() ? Promise.reject(new Error('hung')) : gradePart(fp, { part, rubric, progress, deadline });
       grading.catch(() => {}); // after the time bound the frame is gone, and so is the grading
       try {
@@ -101,7 +99,7 @@ export async function checkPart({ part, page, session, rubric, stage, progress =
         if (r === 'timeout') graded.fail = timedOut(rubric);
         else graded = r;
       } catch (err) {
-        // the grader's own trouble with this page: never a pass on it, a teacher looks (as grade.spec.js)
+        // the grader's own trouble with this page: never a pass on it, a teacher looks (as harness.js)
         if (!fp.hung()) graded.checks = [{ level: 'review', reason: `the grader could not finish on this page: ${err.message.split('\n')[0]}` }];
       } finally {
         clearTimeout(timer);
@@ -115,14 +113,13 @@ export async function checkPart({ part, page, session, rubric, stage, progress =
   const errors = fp.errors();
   const result = {
     part, file: page, api: graded.api ?? null, canvas: graded.canvas, controls: graded.controls || {}, numbers: graded.numbers || {},
-    verdict: verdictOf(graded.checks, graded.fail),
-    reasons: reasonsOf({ fail: graded.fail, checks: graded.checks, pageErrors: errors.filter((e) => /page error/.test(e)) }),
+    ...judgement(graded, errors),
     actions: graded.actions || [], images: graded.images || {}, errors, blocked: fp.blocked(), notes: [...session.log.notes], seconds,
   };
   // what the grader would have said stays below, for the student to read, but is no verdict
   const usedWebGPU = session.log.webgpu || graded.api === 'webgpu' || errors.some((e) => /requestAdapter|navigator\.gpu|\bgpu is (undefined|null)/.test(e));
   const not = notCheckedHere({ webgpuHere, usedWebGPU, api: graded.api, broken: [...broken, ...fp.broken()] });
-  if (not) Object.assign(result, { verdict: NOT_CHECKED, notChecked: not.why, reasons: [not.reason, ...result.reasons.map((r) => `(the check saw: ${r})`)] });
+  if (not) Object.assign(notJudgedHere(result, NOT_CHECKED, not.reason, (r) => `(the check saw: ${r})`), { notChecked: not.why });
   return result;
 }
 

@@ -43,7 +43,7 @@ if (!existsSync(marker)) {
 
 // The browsers npm test drives, found as grader/node/find-browser.js finds them (CHROMIUM_PATH,
 // FIREFOX_PATH, the usual installs of this OS, Playwright's cache): Chromium (Playwright) and
-// Firefox (puppeteer-core, tools/firefox.js)
+// Firefox (puppeteer-core, grader/node/firefox.js)
 const wanted = args.includes('--no-browser') ? [] : args.includes('--firefox') ? ['chromium', 'firefox'] : ['chromium'];
 const missing = () => wanted.map((kind) => ({ kind, ...findHere(kind) })).filter((b) => !b.found);
 const lacking = missing();

@@ -8,7 +8,8 @@ import { existsSync, writeFileSync } from 'node:fs';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { PNG } from 'pngjs';
-import { canvasScreenshot, launchChromium, startServer } from './browser.js';
+import { canvasScreenshot, startServer } from './browser.js';
+import { launchChromium } from '../grader/node/chromium.js';
 import { isMainScript, parseOptions, progressLine, runCommand } from './cli.js';
 import { readPNG } from './reference/png.js';
 

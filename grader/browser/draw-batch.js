@@ -16,6 +16,7 @@
 //
 // An init script, added before instrumentScript, which sends its draws through
 // window.__drawBatch.arrays(gl, args, send): `send(gl, args)` draws at once.
+// eslint-disable-next-line max-lines-per-function -- over 80 lines: still to split into named parts (issue 40)
 export function drawBatchScript() {
   if (window.__drawBatch) return;
   const TRIANGLES = 4, NO_ERROR = 0;

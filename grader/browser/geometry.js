@@ -14,6 +14,7 @@ import { sentScript } from './sent.js';
 /** The init script as text: the recorders of what a page sends (its geometry, WebGL and WebGPU, and its uniforms) with the analysis in it. */
 export const recordersInit = `(${geometryScript})((${meshAnalysis})(), ${webgpuGeometry}, ${sentScript});`;
 
+// eslint-disable-next-line max-lines-per-function -- over 80 lines: still to split into named parts (issue 40)
 function geometryScript(analyseMesh, recordWebGPU, recordSent) {
   if (window.__geometry || !window.WebGLRenderingContext) return;
   const grade = window.__grade; // (instrument.js: the culling state the page set)

@@ -2,14 +2,46 @@
 // scripts, changes none of its files): which API the page asked for, shader and adapter
 // failures, which events each control listens to, and a read-back of the canvas in either API
 // (WebGL contexts get preserveDrawingBuffer so the last frame can be read at any time; WebGPU
-// frames come from grader/browser/webgpu-capture.js, which must be added first).
-export function instrumentScript() {
+// frames come from grader/browser/webgpu-capture.js, which must be added first). It is injected
+// as named parts, in order (instrumentScript), which share what they record on window.__grade.
+
+/** window.__grade: what the parts below record, and state(), what the page interface reads of it. */
+function gradeState() {
   const g = { api: null, apis: [], draws: 0, vertices: 0, pending: 0, shaderErrors: [], gpuErrors: [], adapter: undefined, webgpuMissing: false, wgsl: [], glsl: [], faces: { depthTest: false, culling: false, cullMode: null }, noCull: false, cullOn: false };
   // (read-only: a page that assigns to it is noted, grader/browser/tamper.js)
   Object.defineProperty(window, '__grade', { get: () => g, set: () => { g.replacedByPage = true; }, enumerable: false });
-  const add = EventTarget.prototype.addEventListener;
+
+  /** What the page interface's state() gives the grading core (playwright-page.js and the check page's
+   * frame driver both read it here, so they cannot drift apart). */
+  g.state = () => ({ api: g.api, frames: window.__webgpuCapture ? window.__webgpuCapture.frames : 0, adapter: g.adapter, webgpuMissing: g.webgpuMissing, draws: g.draws,
+    vertices: g.vertices, pending: g.pending,
+    shaderErrors: [...g.shaderErrors], gpuErrors: [...g.gpuErrors], faces: { ...g.faces } });
+}
+
+/** Which API the page asked for (getContext), WebGL canvases keeping their drawing buffer. */
+function watchContexts() {
+  const g = window.__grade;
   const apiOf = { webgl: 'webgl', 'experimental-webgl': 'webgl', webgl2: 'webgl2', webgpu: 'webgpu' };
   const realGetContext = HTMLCanvasElement.prototype.getContext;
+  HTMLCanvasElement.prototype.getContext = function (type, attrs, ...rest) {
+    const api = apiOf[type];
+    const clearsOnPresent = api && api !== 'webgpu' && !(attrs && attrs.preserveDrawingBuffer);
+    if (api && api !== 'webgpu') attrs = { ...(attrs || {}), preserveDrawingBuffer: true };
+    const ctx = realGetContext.call(this, type, attrs, ...rest);
+    if (api === 'webgpu' && !ctx) g.webgpuMissing = true; // a browser without WebGPU (Firefox ESR)
+    if (ctx && clearsOnPresent && !('__gradeClearsOnPresent' in ctx)) Object.defineProperty(ctx, '__gradeClearsOnPresent', { value: true });
+    if (api && ctx) {
+      g.api = api;
+      if (!g.apis.includes(api)) g.apis.push(api);
+      this.setAttribute('data-grade-api', api);
+    }
+    return ctx;
+  };
+}
+
+/** WebGL: shader sources and errors, the depth test and culling, draws counted, a present after each task that drew. */
+function watchWebGL() {
+  const g = window.__grade;
   // a WebGL canvas keeps its drawing buffer (preserveDrawingBuffer) so the last frame can be read
   // at any time; where the page did not ask for that, its depth and stencil buffers are cleared
   // after each task that drew, as the browser clears them when it presents the frame (a page that
@@ -39,20 +71,6 @@ export function instrumentScript() {
     if (!gl.__gradeClearsOnPresent || presented.get(gl)) return;
     presented.set(gl, true);
     queueMicrotask(() => present(gl));
-  };
-  HTMLCanvasElement.prototype.getContext = function (type, attrs, ...rest) {
-    const api = apiOf[type];
-    const clearsOnPresent = api && api !== 'webgpu' && !(attrs && attrs.preserveDrawingBuffer);
-    if (api && api !== 'webgpu') attrs = { ...(attrs || {}), preserveDrawingBuffer: true };
-    const ctx = realGetContext.call(this, type, attrs, ...rest);
-    if (api === 'webgpu' && !ctx) g.webgpuMissing = true; // a browser without WebGPU (Firefox ESR)
-    if (ctx && clearsOnPresent && !('__gradeClearsOnPresent' in ctx)) Object.defineProperty(ctx, '__gradeClearsOnPresent', { value: true });
-    if (api && ctx) {
-      g.api = api;
-      if (!g.apis.includes(api)) g.apis.push(api);
-      this.setAttribute('data-grade-api', api);
-    }
-    return ctx;
   };
   for (const proto of [window.WebGLRenderingContext, window.WebGL2RenderingContext].filter(Boolean).map((c) => c.prototype)) {
     const { compileShader, linkProgram, shaderSource, drawArrays, drawElements } = proto;
@@ -110,6 +128,12 @@ export function instrumentScript() {
     proto.drawArrays = function (...a) { g.draws++; g.vertices += Math.max(0, a[2] | 0); drew(this); return batch ? batch.arrays(this, a, send) : send(this, a); };
     proto.drawElements = function (...a) { g.draws++; g.vertices += Math.max(0, a[1] | 0); drew(this); return bare(this, drawElements, a); };
   }
+}
+
+/** What the page waits for in real time (fetch, XHR, WebGPU), and WebGPU's shaders, pipelines and draws. */
+function watchWaits() {
+  const g = window.__grade;
+  const add = EventTarget.prototype.addEventListener;
   // what the page waits for in real time (a fetch, an XHR, a WebGPU adapter or device): the grader
   // lets frames run only once none is pending, so that what a page shows after n frames does not
   // depend on how long the network or the GPU took
@@ -191,6 +215,11 @@ export function instrumentScript() {
       Object.defineProperty(Navigator.prototype, 'gpu', { configurable: true, enumerable: false, get() { g.webgpuMissing = true; return undefined; } });
     }
   }
+}
+
+/** Which events each control listens to. */
+function watchListeners() {
+  const add = EventTarget.prototype.addEventListener;
   // which events each control listens to (addEventListener, or on<event> properties/attributes)
   EventTarget.prototype.addEventListener = function (type, ...rest) {
     if (this instanceof Element) {
@@ -200,13 +229,11 @@ export function instrumentScript() {
     }
     return add.call(this, type, ...rest);
   };
+}
 
-  /** What the page interface's state() gives the grading core (playwright-page.js and the check page's
-   * frame driver both read it here, so they cannot drift apart). */
-  g.state = () => ({ api: g.api, frames: window.__webgpuCapture ? window.__webgpuCapture.frames : 0, adapter: g.adapter, webgpuMissing: g.webgpuMissing, draws: g.draws,
-    vertices: g.vertices, pending: g.pending,
-    shaderErrors: [...g.shaderErrors], gpuErrors: [...g.gpuErrors], faces: { ...g.faces } });
-
+/** The page interface's hands on the page's controls: click, controls, setValue. */
+function controlsInterface() {
+  const g = window.__grade;
   /**
    * A click as a user's, on control `index`: pointer and mouse down and up at its centre, then
    * click (which toggles a checkbox). { ok, why }: not when it is disabled, hidden or covered.
@@ -287,3 +314,9 @@ export function instrumentScript() {
     return true;
   };
 }
+
+/** The parts, in the order they are installed (window.__grade first; the listeners' wrapper after the waits' own use of addEventListener). */
+export const INSTRUMENT_PARTS = [gradeState, watchContexts, watchWebGL, watchWaits, watchListeners, controlsInterface];
+
+/** The init script, as source: each part called in order (for addInitScript, evaluateOnNewDocument or a frame's script). */
+export const instrumentScript = INSTRUMENT_PARTS.map((part) => `(${part})();`).join('\n');

@@ -23,7 +23,7 @@ import { auditWinding, auditClosed, auditAllRound, auditPerFace, auditGrowth, au
  * part could not be judged at all, `checks` the findings, `shown` the artifact's picture names a
  * report shows (first, judged, coarse, highlightPlace, leastS); `notGraded` (a reason) when the
  * browser it was gathered in could not run it (WebGPU in Firefox ESR): then no verdict stands,
- * whatever the findings (part-result.js).
+ * whatever the findings (core/part-result.js).
  */
 export function auditPart({ facts, images }, rubric) {
   const { checks, say } = checkList(rubric);

@@ -9,7 +9,7 @@ import { memo } from './memo.js';
 export const analyse = memo(analyseOnce);
 export { openMask, fitCircle } from './measure/silhouette.js';
 export { samples, perspectiveSamples } from './measure/samples.js';
-export { normalColours } from './measure/normals.js';
+export { normalColours, facesViewer } from './measure/normals.js';
 export { diffuseFit } from './measure/diffuse.js';
 export { hueByNormal, tintedByNormal, detintedFit, shadeFit } from './measure/tint.js';
 export { addedTintFit, addedClearly } from './measure/tint-added.js';

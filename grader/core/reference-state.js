@@ -2,8 +2,7 @@
 // the judge fitted to the student's picture. Plain data: the query for our page and what
 // report.json says of the state it was drawn at.
 import { nearPointLight } from './measure/point-light.js';
-
-const fmt = (x, d) => Number(x).toFixed(d);
+import { fmt } from './format.js';
 
 /**
  * Our reference's light, as the judge fitted the student's (P3–P5): the fitted direction toward the

@@ -13,8 +13,8 @@ export const litView = memo((img, T) => {
   const an = analyse(img, T);
   if (an.blank) return { an, fit: null, lit: false };
   const fit = shadeFit(samples(img, an, { max: 1500 }), T);
-  const lit = !!fit && an.roundness < T.orbitCoarseRoundness && (fit.spread >= T.litSpread * 1.5 ||
-    (fit.spread >= T.litSpread / 2 && fit.r2 >= T.diffuseR2 && fit.diffuse >= T.diffuseMin));
+  const lit = !!fit && an.roundness < T.orbitCoarseRoundness && (fit.spread >= T.clearlyLitSpread ||
+    (fit.spread >= T.evenSpread && fit.r2 >= T.diffuseR2 && fit.diffuse >= T.diffuseMin));
   return { an, fit, lit };
 });
 

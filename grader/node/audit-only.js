@@ -5,7 +5,7 @@
 import { existsSync, readFileSync, readdirSync, writeFileSync } from 'node:fs';
 import path from 'node:path';
 import { auditDirs } from './audit-pool.js';
-import { applyAudit } from './part-result.js';
+import { applyAudit } from '../core/part-result.js';
 import { PARTS } from './parts.js';
 import { hrefOf } from './layout.js';
 

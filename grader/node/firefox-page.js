@@ -1,4 +1,4 @@
-// The page interface in Debian's Firefox ESR (tools/firefox.js: puppeteer-core over WebDriver
+// The page interface in Debian's Firefox ESR (firefox.js: puppeteer-core over WebDriver
 // BiDi, WebGL on Mesa's llvmpipe): a part opened as playwright-page.js opens one in Chromium, with
 // the same init scripts (grader/browser/instrument.js, then clock.js at the same frozen start) and
 // the same serving rules (serve-submission.js's submissionAnswers: only the submission's files,
@@ -9,9 +9,9 @@ import { instrumentScript } from '../browser/instrument.js';
 import { recordersInit } from '../browser/geometry.js';
 import { pixelsScript } from '../browser/pixels.js';
 import { tamperScript } from '../browser/tamper.js';
-import { frameClockScript } from '../browser/clock.js';
+import { FROZEN, frameClockScript } from '../browser/clock.js';
 import { submissionAnswers, urlOf } from './serve-submission.js';
-import { FROZEN, pageDriver } from './playwright-page.js';
+import { pageDriver } from './playwright-page.js';
 
 /**
  * Opens the parts a worker grades, one after another, in `browser` (a puppeteer Browser of Firefox):
@@ -28,7 +28,7 @@ export function firefoxOpener(browser, host) {
     if (c) await c.close().catch(() => {});
   };
   return {
-    async open({ root, rel, query = '', loadSeconds = 20, log }) {
+    async open({ root, rel, query = '', loadSeconds, log }) {
       await drop();
       context = await browser.createBrowserContext();
       const page = await context.newPage();
@@ -66,7 +66,7 @@ export function firefoxOpener(browser, host) {
       await page.evaluateOnNewDocument(instrumentScript);
       await page.evaluateOnNewDocument(pixelsScript);
       await page.evaluateOnNewDocument(recordersInit);
-      await page.evaluateOnNewDocument(frameClockScript, FROZEN.getTime());
+      await page.evaluateOnNewDocument(frameClockScript, FROZEN);
       await page.evaluateOnNewDocument(tamperScript);
       const url = urlOf(site.origin, root, rel, query).href;
       let response;

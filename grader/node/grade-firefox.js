@@ -1,12 +1,12 @@
 // The grader's harness in Firefox ESR (npm run grade -- --browser firefox): the plan's parts, the
-// same items as Chromium's grade.spec.js runs, graded by run-part.js in a plain Node loop, with
+// same items as Chromium's harness.js runs, graded by run-part.js in a plain Node loop, with
 // pages opened by firefox-page.js; each worker drives a Firefox of its own. The same artifacts and
 // results are written, so report.js, --report-only and --audit-only read them as Chromium's. A
 // part's time bound is the rubric's (plus our reference's): a part it stops stays a timeout, and
 // its worker's Firefox is ended and started again for the next part.
 import { readFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
-import { launchFirefox } from '../../tools/firefox.js';
+import { launchFirefox } from './firefox.js';
 import { firefoxOpener } from './firefox-page.js';
 import { runPart } from './run-part.js';
 import { browserLabel } from './browser-version.js';

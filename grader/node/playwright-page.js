@@ -10,11 +10,10 @@ import { instrumentScript } from '../browser/instrument.js';
 import { recordersInit } from '../browser/geometry.js';
 import { pixelsScript } from '../browser/pixels.js';
 import { tamperScript } from '../browser/tamper.js';
-import { frameClockScript } from '../browser/clock.js';
+import { FROZEN, frameClockScript } from '../browser/clock.js';
 import { serveSubmission, urlOf } from './serve-submission.js';
 
 // the time the page sees: frozen, moving only when the grader lets frames run
-export const FROZEN = new Date('2026-01-05T09:00:00Z');
 
 /**
  * Opens the parts a worker grades, one after another, in one browser context and page: each part
@@ -40,7 +39,7 @@ export function partOpener(browser, host) {
     await context.addInitScript(instrumentScript);
     await context.addInitScript(pixelsScript);
     await context.addInitScript(recordersInit);
-    await context.addInitScript(frameClockScript, FROZEN.getTime());
+    await context.addInitScript(frameClockScript, FROZEN);
     await context.addInitScript(tamperScript);
     const page = await context.newPage();
     page.on('popup', (popup) => {
@@ -72,7 +71,7 @@ export function partOpener(browser, host) {
     await context.close().catch(() => {});
   };
   return {
-    async open({ root, rel, query = '', loadSeconds = 20, log }) {
+    async open({ root, rel, query = '', loadSeconds, log }) {
       // the part before is left for an empty page first (its frames would run once as time is frozen
       // anew); a page that crashed, was closed or will not let go takes the context with it (its goto fails)
       if (kept && !await leave(kept)) await drop();

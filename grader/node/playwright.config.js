@@ -1,16 +1,15 @@
-// The grader's own Playwright Test run: one test per part (grader/node/grade.spec.js), its workers,
+// The grader's own Playwright Test run: one test per part (grader/node/harness.js), its workers,
 // its --shard for splitting a class over machines, its reporters (blob for merge-reports, list).
 // Chromium gets a SwiftShader WebGPU adapter too: hand-ins come in both APIs. The browser is the
 // one grade.js found (the plan's browserPath: grader/node/find-browser.js).
 import { defineConfig } from '@playwright/test';
-import { CHROMIUM, CHROMIUM_ARGS } from '../../tools/browser.js';
-import { WEBGPU_ARGS } from '../browser/webgpu-capture.js';
+import { CHROMIUM, CHROMIUM_ARGS, WEBGPU_ARGS } from './chromium.js';
 
 const plan = process.env.GRADE_PLAN ? JSON.parse(await import('node:fs').then((fs) => fs.readFileSync(process.env.GRADE_PLAN, 'utf8'))) : { timeoutSeconds: 30, out: 'out/grade' };
 
 export default defineConfig({
   testDir: '.',
-  testMatch: 'grade.spec.js',
+  testMatch: 'harness.js',
   timeout: plan.timeoutSeconds * 1000,
   workers: Number(process.env.GRADE_WORKERS || 2),
   fullyParallel: true,

@@ -1,8 +1,8 @@
 // One part of the plan graded in a browser, the same in either engine: opened (an opener of
 // playwright-page.js or firefox-page.js: served by serve-submission.js's rules, time frozen,
 // instrumented), gathered and audited (grader/core/grade-part.js), its artifact saved
-// (artifacts.js) and its result (part-result.js), our reference drawn beside it. Chromium's
-// harness runs it as one Playwright test a part (grade.spec.js), Firefox's as a plain Node loop
+// (artifacts.js) and its result (core/part-result.js), our reference drawn beside it. Chromium's
+// harness runs it as one Playwright test a part (harness.js), Firefox's as a plain Node loop
 // (grade-firefox.js).
 import { writeFileSync, mkdirSync } from 'node:fs';
 import path from 'node:path';
@@ -10,8 +10,9 @@ import { PNG } from 'pngjs';
 import { compareImages } from './compare.js';
 import { writeArtifact, pngOf } from './artifacts.js';
 import { hrefOf } from './layout.js';
-import { applyAudit } from './part-result.js';
+import { applyAudit } from '../core/part-result.js';
 import { NOT_GRADED, tooSlowWords } from '../core/verdict.js';
+import { deadlineOf } from '../core/deadline.js';
 import { FIRST_FRAME } from '../core/gather/index.js';
 import { gradePart, addTime } from '../core/grade-part.js';
 import { referenceQuery, referenceStateOf } from '../core/reference-state.js';
@@ -60,8 +61,7 @@ export async function runPart({ item, plan, openers, browserVersion = null, more
     if (opened.why) graded.fail = `the page could not be opened: ${opened.why}`;
     else {
       // what has been done so far stays in the result if the time bound stops the part
-      // the outer bound: past 85% of it a part is too slow to judge here (time is left to write what was seen)
-      const deadline = started + 0.85 * rubric.timeoutSeconds * 1000;
+      const deadline = deadlineOf(started, rubric);
       graded = await gradePart(opened.driver, { part: item.part, rubric, deadline, timing, progress: (what) => {
         // what stays if the time bound stops the part now: past its first frame the page draws, and
         // a page that draws is too slow here, not broken (the rubric's tooSlowVerdict)
@@ -109,7 +109,7 @@ async function drawReference({ item, plan, openers, result, graded }) {
   const query = referenceQuery(graded.images.judged, result.numbers, plan.rubric.thresholds, item.referenceQuery);
   let ref = null;
   try {
-    const r = await openers.reference.open({ root: plan.repo, rel: `${item.part}/index.html`, query: query.toString(), log: refLog });
+    const r = await openers.reference.open({ root: plan.repo, rel: `${item.part}/index.html`, query: query.toString(), loadSeconds: plan.rubric.loadSeconds, log: refLog });
     if (!r.why) {
       await r.driver.tick(500, 30);
       ref = await r.driver.snap();

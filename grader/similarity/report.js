@@ -1,6 +1,6 @@
 // The similarity check in the grader's report: report.json's `similarity`, similar.csv, and a
 // section of report.html that the class grid links to (a badge on both hand-ins' rows).
-import { PARTS } from './parts.js';
+import { PARTS } from '../node/parts.js';
 
 const esc = (s) => String(s).replace(/[&<>"']/g, (c) => ({ '&': '&amp;', '<': '&lt;', '>': '&gt;', '"': '&quot;', "'": '&#39;' })[c]);
 const pct = (x) => `${Math.round(100 * x)}%`;

@@ -12,9 +12,9 @@ import { copyHandins } from '../fixtures/handins.js';
 import { readArtifact } from '../../grader/node/artifacts.js';
 import { findParts, partNumber } from '../../grader/node/parts.js';
 import { partOpener } from '../../grader/node/playwright-page.js';
-import { CHROMIUM, CHROMIUM_ARGS } from '../../tools/browser.js';
-import { WEBGPU_ARGS, webgpuCaptureScript, readWebGPUFrame } from '../../grader/browser/webgpu-capture.js';
-import { launchFirefox } from '../../tools/firefox.js';
+import { CHROMIUM, CHROMIUM_ARGS, WEBGPU_ARGS } from '../../grader/node/chromium.js';
+import { webgpuCaptureScript, readWebGPUFrame } from '../../grader/browser/webgpu-capture.js';
+import { launchFirefox } from '../../grader/node/firefox.js';
 import { checkClassInFirefox, NO_WEBGPU, partsByName } from './check-helpers.js';
 
 const RECORDED = path.resolve(import.meta.dirname, '../fixtures/artifacts');
@@ -95,7 +95,7 @@ test.describe("the grader's kept page", () => {
     const browser = await chromium.launch({ executablePath: CHROMIUM, args: CHROMIUM_ARGS });
     try {
       const opener = partOpener(browser, 'submission.localhost');
-      const open = (name) => opener.open({ root: path.join(dir, name), rel: 'index.html', log: { errors: [], blocked: [], notes: [] } });
+      const open = (name) => opener.open({ root: path.join(dir, name), rel: 'index.html', loadSeconds: 20, log: { errors: [], blocked: [], notes: [] } });
       const loaded = '2026-01-05T09:00:02.000Z';
       const a = await open('one');
       expect(await a.page.title()).toBe(`one ${loaded} 1`);

@@ -12,7 +12,7 @@ import os from 'node:os';
 import path from 'node:path';
 import { readArtifact } from '../../grader/node/artifacts.js';
 import { judged } from '../../grader/core/grade-part.js';
-import { applyAudit } from '../../grader/node/part-result.js';
+import { applyAudit } from '../../grader/core/part-result.js';
 import { NOT_GRADED } from '../../grader/core/verdict.js';
 import { parseLabels, agreement, agreementText } from '../../grader/node/labels.js';
 import { writeReport } from '../../grader/node/report.js';

@@ -73,10 +73,10 @@ test('the hue turns with the normal where the P1 colour is the material or mixed
   const plain = sphere((n) => { const p = phong(n); return [0.8, 0.3, 0.2].map((c) => c * p.lit + p.spec); });
   // magenta ambient, yellow diffuse: the hue follows n·w_i, one direction only
   const twoColours = sphere((n) => { const d = Math.max(dot(n, wi), 0); return [0.3 + 0.6 * d, 0.1 + 0.8 * d, 0.3]; });
-  assert.ok(tintedByNormal(hueByNormal(pts(tintedTimes)), T));
-  assert.ok(tintedByNormal(hueByNormal(pts(tintedMix)), T));
-  assert.ok(!tintedByNormal(hueByNormal(pts(plain)), T));
-  const h = hueByNormal(pts(twoColours));
+  assert.ok(tintedByNormal(hueByNormal(pts(tintedTimes), T), T));
+  assert.ok(tintedByNormal(hueByNormal(pts(tintedMix), T), T));
+  assert.ok(!tintedByNormal(hueByNormal(pts(plain), T), T));
+  const h = hueByNormal(pts(twoColours), T);
   assert.ok(h.spread > 0.04 && !tintedByNormal(h, T), JSON.stringify(h));
   // the plain picture's fit is diffuseFit's, untouched
   assert.deepEqual(shadeFit(pts(plain), T), diffuseFit(pts(plain), T));

@@ -6,6 +6,7 @@ import assert from 'node:assert/strict';
 import { readFileSync, readdirSync } from 'node:fs';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
+import * as acorn from 'acorn';
 import { mergeRubric } from '../../grader/core/rubric.js';
 
 const grader = fileURLToPath(new URL('../../grader/', import.meta.url));
@@ -86,7 +87,7 @@ test('every threshold the grader reads is in grader/core/rubric.json, every top-
 
 test('no rubric value has a number written beside it as a fallback in grader/ and check/', () => {
   const files = sources();
-  assert.ok(files.some((rel) => rel.startsWith('core/measure/')) && files.some((rel) => rel.startsWith('core/gather/')) && files.includes('node/grade.spec.js') && files.includes('../check/runner.js'), 'the measurements, the gatherers, the harness and the check page\'s runner are scanned');
+  assert.ok(files.some((rel) => rel.startsWith('core/measure/')) && files.some((rel) => rel.startsWith('core/gather/')) && files.includes('node/harness.js') && files.includes('../check/runner.js'), 'the measurements, the gatherers, the harness and the check page\'s runner are scanned');
   const found = files.flatMap((rel) => numericFallbacks(read(rel)).map((f) => `${rel}: ${f}`));
   assert.deepEqual(found, [], 'numbers that belong in rubric.json');
 });
@@ -103,4 +104,108 @@ test('a teacher\'s rubric is merged over the default key by key (mergeRubric)', 
   assert.deepEqual(r.parts.WP04P1, rubric.parts.WP04P1);
   assert.deepEqual(r.parts.WP04P9, { must: ['sphere'] });
   assert.equal(rubric.thresholds.roundness, 0.09, 'the default is left as it was');
+});
+
+// Issue 40, item 3: a number that decides a verdict lives in the rubric, or is a constant of
+// mathematics, of the slides or of a unit. Every number literal in grader/core/ and check/ is read,
+// and every default parameter with a number in grader/ and check/; what is left is listed below,
+// file by file, with why it is not the rubric's.
+const CONSTANTS = new Set([
+  0, 1, 2, 3, 4, 0.5, // counting, halves, x y z, RGBA; the slides' 0.5·p + 0.5
+  8, 16, 1024, 1e6, // bits, a 4×4 matrix, bytes in a KiB, millions (what a reason says)
+  90, 180, 360, // degrees
+  100, 1000, 60, // per cent, milliseconds in a second, frames a second
+  255, 765, // a channel's greatest value, three channels'
+  45, // the slides' field of view (fovy)
+  1e-6, 1e-9, 1e-12, 1e-15, // a division's guard against zero
+]);
+const MECHANICS = 'the mechanics of a fit or a search (indices, grid sizes, steps), not a bound on what a page shows';
+const PAGE = 'the check page\'s own plumbing (key codes, sizes of files, HTTP statuses, waits for the browser)';
+const TO_MOVE = 'a bound that decides a verdict, not yet in the rubric (issue 40, item 3: still to move)';
+const ALLOWED = {
+  'core/camera.js': { numbers: [5, 6, 9, 10], why: 'the 3×3 rotation inside a column-major 4×4 matrix' },
+  'core/measure/linear.js': { numbers: [12], why: MECHANICS },
+  'core/measure/directions.js': { numbers: [5, 500], why: `the golden angle's √5, and the fibonacci directions searched: ${MECHANICS}` },
+  'core/measure/tint-added.js': { numbers: [0.01, 50, 20, 6, 7], why: `${MECHANICS} (6, 7: the fit's indices); 0.01, 50, 20: ${TO_MOVE}` },
+  'core/measure/point-light.js': { numbers: [0.985, 50, 1.25, 1.5, 1.75, 2.5, 5, 7, 10, 20, 10000, 0.1, 0.005, 1.05], why: `the distance grid and its refinement (${MECHANICS}); 0.985, 50: ${TO_MOVE}` },
+  'core/measure/diffuse.js': { numbers: [20, 0.3, 0.1, 0.005], why: `the refinement steps (${MECHANICS}); 20, 0.3: ${TO_MOVE}` },
+  'core/measure/tint.js': { numbers: [0.15, 50, 0.05, 20], why: TO_MOVE },
+  'core/measure/silhouette.js': { numbers: [63, 30, 72, 1.5, 2.5, 12, 0.02, 0.98, 36, 10], why: `63: a mask's bits; 72, 36, 10: bins of the outline (${MECHANICS}); the rest: ${TO_MOVE}` },
+  'core/measure/change.js': { numbers: [0.9, 0.8, 6], why: TO_MOVE },
+  'core/measure/normals.js': { numbers: [20], why: TO_MOVE },
+  'core/measure/perspective.js': { numbers: [20], why: TO_MOVE },
+  'core/measure/samples.js': { numbers: [0.85, 4000], why: TO_MOVE },
+  'core/audits/sliders.js': { numbers: [1500], why: TO_MOVE },
+  'core/evidence.js': { numbers: [1500], why: TO_MOVE },
+  'core/views.js': { numbers: [1500], why: TO_MOVE },
+  'core/gather/index.js': { numbers: [20, 10], why: `frames waited for a first frame: ${TO_MOVE}` },
+  'core/gather/probes.js': { numbers: [10], why: `a slider's range when it has none: ${TO_MOVE}` },
+  'core/gather/session.js': { numbers: [10, 400, 500], why: `a real wait of 10 ms for the page's promises; 400, 500: frames' time, ${TO_MOVE}` },
+  'core/gather/visible.js': { numbers: [0.98], why: `white, read while gathering: ${TO_MOVE} (one clipped level: clippedLevel)` },
+  '../check/files.js': { numbers: [5000, 10, 7, 5], why: PAGE },
+  '../check/frame-page.js': { numbers: [37, 38, 39, 40, 33, 34, 187, 189, 32, 13, 27], why: PAGE },
+  '../check/frame-watch.js': { numbers: [20, 1023], why: `${PAGE}; 20: the rubric's loadSeconds where none is given: ${TO_MOVE}` },
+  '../check/guard.js': { numbers: [20], why: `the stand-in guard's loadSeconds: ${TO_MOVE}` },
+  '../check/host.js': { numbers: [400, 500, 5000, 50], why: PAGE },
+  '../check/runner.js': { numbers: [200, 500, 5000, 30], why: PAGE },
+  '../check/serve.js': { numbers: [200, 404], why: PAGE },
+  '../check/sw.js': { numbers: [15000, 2000, 503], why: PAGE },
+};
+// a number a default parameter gives, allowed where it is not the rubric's (in grader/ outside core/ too)
+const DEFAULTS_ALLOWED = {
+  'core/measure/samples.js': [0.85, 4000],
+  'core/measure/change.js': [0.8],
+  'browser/mesh.js': [60000, 65536],
+  'node/browser-version.js': [5000],
+  '../check/host.js': [500, 5000],
+  '../check/sw.js': [15000],
+};
+
+/** The number literals of `src` that are neither constants nor allowed: [{ value, line }]. */
+function bareNumbers(src, allowed = []) {
+  const out = [];
+  for (const t of acorn.tokenizer(src, { ecmaVersion: 'latest', sourceType: 'module', locations: true })) {
+    if (t.type === acorn.tokTypes.num && !CONSTANTS.has(t.value) && !allowed.includes(t.value)) out.push({ value: t.value, line: t.loc.start.line });
+  }
+  return out;
+}
+
+/** The default parameters (and destructuring defaults) of `src` that give a number outside CONSTANTS and `allowed`. */
+function numberDefaults(src, allowed = []) {
+  const out = [];
+  const walk = (n) => {
+    if (!n || typeof n.type !== 'string') return;
+    if (n.type === 'AssignmentPattern' && n.right.type === 'Literal' && typeof n.right.value === 'number' && !CONSTANTS.has(n.right.value) && !allowed.includes(n.right.value)) {
+      out.push({ text: src.slice(n.start, n.end), line: n.loc.start.line });
+    }
+    for (const v of Object.values(n)) {
+      if (Array.isArray(v)) v.forEach(walk);
+      else if (v && typeof v.type === 'string') walk(v);
+    }
+  };
+  walk(acorn.parse(src, { ecmaVersion: 'latest', sourceType: 'module', locations: true }));
+  return out;
+}
+
+test('the number scans find what they look for (a bare 0.7 in measure/highlight.js, loadSeconds = 20)', () => {
+  const highlight = read('core/measure/highlight.js');
+  assert.deepEqual(bareNumbers(highlight), [], 'measure/highlight.js as it is');
+  const planted = highlight.replace('T.highlightPlaceRise * rise', '0.7 * rise');
+  assert.notEqual(planted, highlight);
+  assert.deepEqual(bareNumbers(planted).map((n) => n.value), [0.7]);
+  assert.deepEqual(numberDefaults('export function open({ root, loadSeconds = 20 }, d = 2) { return [root, loadSeconds, d]; }').map((d) => d.text), ['loadSeconds = 20']);
+});
+
+test('no number decides a verdict outside the rubric in grader/core/ and check/ (constants and the listed ones aside)', () => {
+  const files = sources();
+  const found = [];
+  for (const rel of files.filter((f) => f.startsWith('core/') || f.startsWith('../check/'))) {
+    found.push(...bareNumbers(read(rel), (ALLOWED[rel] || {}).numbers).map((n) => `${rel}:${n.line}: ${n.value}`));
+  }
+  assert.deepEqual(found, [], 'numbers to put in rubric.json (or, a constant, in CONSTANTS; not a verdict\'s, in ALLOWED with why)');
+});
+
+test('no default parameter gives a number the rubric should in grader/ and check/', () => {
+  const found = sources().flatMap((rel) => numberDefaults(read(rel), DEFAULTS_ALLOWED[rel]).map((d) => `${rel}:${d.line}: ${d.text}`));
+  assert.deepEqual(found, [], 'defaults that belong in rubric.json');
 });

@@ -5,7 +5,7 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import { auditPart } from '../../grader/core/audit.js';
-import { applyAudit } from '../../grader/node/part-result.js';
+import { applyAudit } from '../../grader/core/part-result.js';
 import { mergeRubric } from '../../grader/core/rubric.js';
 import { NOT_GRADED } from '../../grader/core/verdict.js';
 

@@ -1,8 +1,7 @@
 // WP04P3: the diffuse term, brightness = max(n·w_i, 0)·kd·Le + ambient for a fitted light, in the
 // judged view and in every lit view along the orbit; a point light and its 1/r² fall-off.
 import { nearPointLight, clearlyBetter } from '../measure.js';
-
-const fmt = (x, d = 2) => (x === null || x === undefined || Number.isNaN(x) ? '–' : Number(x).toFixed(d));
+import { fmt } from '../format.js';
 
 /** The diffuse fit of the judged view (`shading`: evidence.shadingOf), with the lit views' sparse fits (`lit`). */
 export function auditDiffuse({ T, must, say, numbers }, shading, lit) {
@@ -18,10 +17,10 @@ export function auditDiffuse({ T, must, say, numbers }, shading, lit) {
     (f.r2TwoSidedAll > f.r2All + T.twoSidedGainAll && f.r2TwoSidedAll >= T.diffuseR2));
   if (fit && fit.tint && fit.tint.added) say('pass', `note: the colour is the lighting with WP04P1's normal colouring added (about ${fmt(fit.tint.added, 2)}·n, read from how the channels differ: each follows one component of the normal, the lighting is the same in all three): the lighting is judged with it taken out`);
   if (!fit) say('mistake', 'too little of the sphere to read its shading');
-  else if (fit.spread < T.litSpread / 2) say('mistake', `the sphere is evenly bright: no diffuse shading to see (in ${1 + lit.length} views${orbitFits.length ? ' along the orbit' : ''})`);
+  else if (fit.spread < T.evenSpread) say('mistake', `the sphere is evenly bright: no diffuse shading to see (in ${1 + lit.length} views${orbitFits.length ? ' along the orbit' : ''})`);
   else if (twoSided) {
     say('mistake', `the sphere is lit on both sides: brightness follows |n·w_i| (R² ${fmt(twoSided.r2TwoSided)}), not max(n·w_i, 0) (R² ${fmt(twoSided.r2)})`);
-  } else if (!must.has('highlight') && orbitFits.length && Math.min(...orbitFits.map((f) => f.r2)) < T.diffuseR2 - 0.1) {
+  } else if (!must.has('highlight') && orbitFits.length && Math.min(...orbitFits.map((f) => f.r2)) < T.orbitDiffuseR2) {
     const worst = orbitFits.reduce((a, b) => (b.r2 < a.r2 ? b : a));
     say('mistake', `brightness does not follow max(n·w_i, 0)·kd·Le + ambient at every orbit position (R² down to ${fmt(worst.r2)}): lit where it should be dark?`);
   } else if (fit.r2 >= T.diffuseR2 && fit.diffuse >= T.diffuseMin) {

@@ -4,8 +4,7 @@
 import { highlightOffset } from '../measure.js';
 import { highlightEvidence } from '../evidence.js';
 import { fullFit, lightAngle } from '../views.js';
-
-const fmt = (x, d = 2) => (x === null || x === undefined || Number.isNaN(x) ? '–' : Number(x).toFixed(d));
+import { fmt } from '../format.js';
 
 /**
  * Whether a highlight shows, and where it is placed. Returns the place to judge at the end (the

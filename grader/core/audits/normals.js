@@ -2,11 +2,9 @@
 // (how far those normals reach at the rim), and (P2) the normals facing the viewer: front faces
 // only, the depth test and back-face culling enabled, or the slide's clockwise experiment. P3–P5:
 // the same colours where lighting is asked are not lighting.
-import { analyse, samples, normalColours, pictureChange, addedTintFit, addedClearly } from '../measure.js';
+import { analyse, samples, normalColours, facesViewer, pictureChange, addedTintFit, addedClearly } from '../measure.js';
 import { rimAngle } from '../measure/perspective.js';
-import { facesViewer } from '../gather/probes.js';
-
-const fmt = (x, d = 2) => (x === null || x === undefined || Number.isNaN(x) ? '–' : Number(x).toFixed(d));
+import { fmt } from '../format.js';
 
 /**
  * The normals as colours, on the judged picture (`judged`: { img, an }) or the one the page's face
@@ -72,7 +70,7 @@ export function auditPerspective({ T, must, say, numbers }, seen) {
   if (!smoothUnitNormals(nc, T)) return;
   const far = nc.det < 0;
   if (!far && nc.det < T.facingDeterminant) return;
-  const rim = rimAngle(samples(img, an, { maxRho: 0.9 }), far);
+  const rim = rimAngle(samples(img, an, { maxRho: T.rimSampleRadius }), far);
   if (!rim || rim.rms > T.perspectiveFitDegrees) return;
   numbers.perspective = rim;
   const short = Math.abs(90 - rim.rimDegrees);

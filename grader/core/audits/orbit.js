@@ -2,8 +2,8 @@
 // camera orbits (a light that stays in the world), and a control starts and stops the orbit.
 import { describe } from '../controls.js';
 import { cameraRotations, rotationsTurn, staysInWorld } from '../camera.js';
+import { fmt } from '../format.js';
 
-const fmt = (x, d = 2) => (x === null || x === undefined || Number.isNaN(x) ? '–' : Number(x).toFixed(d));
 const signedAngle = (a, b) => (180 / Math.PI) * Math.acos(Math.max(-1, Math.min(1, (a[0] * b[0] + a[1] * b[1] + a[2] * b[2]) / (Math.hypot(...a) * Math.hypot(...b)))));
 const angle = (a, b) => (180 / Math.PI) * Math.acos(Math.min(1, Math.abs(a[0] * b[0] + a[1] * b[1] + a[2] * b[2])));
 

@@ -2,8 +2,7 @@
 // many GPUs; a note, since the slides do not ask for s = 0), and WP04P5's shading per fragment,
 // seen at a coarse level.
 import { analyse, darkSpots, shadingChange, unnormalisedInputs } from '../measure.js';
-
-const fmt = (x, d = 2) => (x === null || x === undefined || Number.isNaN(x) ? '–' : Number(x).toFixed(d));
+import { fmt } from '../format.js';
 
 /** The picture at the least s against the judged one (`judged`: { img, an }; the same view). */
 export function auditLeastShininess({ facts, images, T, say, numbers, imagesShown }, judged, shading) {

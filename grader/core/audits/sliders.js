@@ -2,8 +2,8 @@
 // sliding), and ks used in the specular term.
 import { analyse, samples, shadeFit, perspectiveSamples, highlightAbove } from '../measure.js';
 import { sliderActed } from '../controls.js';
+import { fmt } from '../format.js';
 
-const fmt = (x, d = 2) => (x === null || x === undefined || Number.isNaN(x) ? '–' : Number(x).toFixed(d));
 const SLIDERS = ['kd', 'ks', 's', 'Le', 'La'];
 
 /**

@@ -1,6 +1,6 @@
 // "Draw a solid sphere": the subdivision controls, a round closed outline at the judged level, and
 // the outline getting rounder with each level.
-const fmt = (x, d = 2) => (x === null || x === undefined || Number.isNaN(x) ? '–' : Number(x).toFixed(d));
+import { fmt } from '../format.js';
 
 /** The slide's Subdivide and Coarsen buttons, as found by their effect. */
 export function auditLevelControls({ facts, must, say }) {

@@ -7,8 +7,7 @@ import { describe, named, trialOrder, isClickable, sentChanges } from '../contro
 import { litView } from '../views.js';
 import { readGeometry, readSent } from './geometry.js';
 import { cameraOf, cameraTurn } from '../camera.js';
-
-const fmt = (x, d) => Number(x).toFixed(d);
+import { fmt } from '../format.js';
 
 /** Is `img` a lit view? Lit views are kept (`orbiting`: seen while the camera orbits). */
 export function look(S, img, { orbiting = true, keep = true } = {}) {

@@ -2,7 +2,7 @@
 // culling and winding controls, and a frame with culling off), the highlight (the page's own ks and
 // s sliders, and a view farther along the orbit), the sliders, s at its least. Each records the
 // pictures it took for the audits; the decisions read the same evidence the audits do.
-import { samples, normalColours, shadeFit, highlightSeen, pictureChange } from '../measure.js';
+import { samples, normalColours, facesViewer, shadeFit, highlightSeen, pictureChange } from '../measure.js';
 import { nameRole, parameterGroups, describeGroup, sentChanges, sliderActed } from '../controls.js';
 import { readSent } from './geometry.js';
 import { lightAngle } from '../views.js';
@@ -10,9 +10,6 @@ import { searchOrbit } from './orbit.js';
 
 const role = (S, c) => nameRole(c, S.P);
 const free = (S, controls, r, pred = () => true) => controls.find((x) => !S.taken.has(x.index) && pred(x) && role(S, x) === r);
-
-/** Do the judged picture's colours show normals facing the viewer? */
-export const facesViewer = (nc, T) => !!nc && nc.det >= T.facingDeterminant && nc.residual <= T.facingResidual;
 
 /**
  * P2: the page may start with the depth test off or culling on the wrong side: its own controls

@@ -67,7 +67,7 @@ export function brightnessSpread(img, an) {
 
 /**
  * The judged picture `img` (outline `an`) is too dim to show diffuse shading (its brightness
- * spread under litSpread / 2, where the diffuse audit says "evenly bright"): the page's own Le
+ * spread under evenSpread, where the diffuse audit says "evenly bright"): the page's own Le
  * slider (else kd) set to its greatest, and left there; read again where that spreads its
  * brightness to litSpread at least. facts.brightened: { before, after, steps: [{ role, control,
  * value }], image }; returns the picture to read the shading from, or null.
@@ -75,7 +75,7 @@ export function brightnessSpread(img, an) {
 export async function brighten(S, controls, img, an) {
   const { T, facts } = S;
   const before = brightnessSpread(img, an);
-  if (before >= T.litSpread / 2) return null;
+  if (before >= T.evenSpread) return null;
   const [g] = numericGroups(S, controls, ['Le', 'kd']);
   if (!g || g.controls.every((c) => Number(S.now(c)) >= greatest(c))) return null;
   S.step('raising the page\'s own light: the picture is too dim to show its shading');

@@ -21,31 +21,24 @@ function flat(pts, use) {
   return { m, nx, ny, nz, y, sy, syy };
 }
 
-/** The line fit ({ a, b, sse }) of the samples F's brightness against max(n·l, 0) (or |n·l|). */
-function fitDirection(F, l, twoSided = false) {
-  // brightness ≈ a + b max(n·l, 0) (or a + b |n·l|, lit on both sides): linear in (a, b) for a given l;
+/** The line fit ({ a, b, sse }) of the samples F's brightness against max(n·l, 0). */
+function fitDirection(F, l) {
+  // brightness ≈ a + b max(n·l, 0): linear in (a, b) for a given l;
   // one pass: at the least-squares (a, b) the residual is Σy² − a Σy − b Σxy
   const { m, nx, ny, nz, y } = F;
   const l0 = l[0], l1 = l[1], l2 = l[2];
   let sx = 0, sxx = 0, sxy = 0;
-  if (twoSided) {
-    for (let i = 0; i < m; i++) {
-      const x = Math.abs(nx[i] * l0 + ny[i] * l1 + nz[i] * l2);
-      sx += x; sxx += x * x; sxy += x * y[i];
-    }
-  } else {
-    for (let i = 0; i < m; i++) {
-      const x = nx[i] * l0 + ny[i] * l1 + nz[i] * l2;
-      if (x > 0) { sx += x; sxx += x * x; sxy += x * y[i]; }
-    }
+  for (let i = 0; i < m; i++) {
+    const x = nx[i] * l0 + ny[i] * l1 + nz[i] * l2;
+    if (x > 0) { sx += x; sxx += x * x; sxy += x * y[i]; }
   }
   return lineFit(F.m, F.sy, F.syy, sx, sxx, sxy);
 }
 
 /**
- * fitDirection(F, l, true) and fitDirection(Fall, l, true) at once, F being the samples of Fall
- * that `use` picks, in the same order: |n·l| computed once a sample, each sum added up in the
- * order either fit alone adds it (the same numbers to the last bit).
+ * The two-sided line fits of brightness against |n·l| (lit on both sides: a + b |n·l|) of F and
+ * of Fall at once, F being the samples of Fall that `use` picks, in the same order: |n·l|
+ * computed once a sample, each sum added up in the order a fit of either alone would add it.
  */
 function fitTwoSided(Fall, F, use, l) {
   const { m, nx, ny, nz, y } = Fall;
@@ -71,11 +64,10 @@ export function diffuseFit(pts, T) {
   const sst = pts.reduce((a, s) => a + (s.y - meanY) ** 2, 0);
   // a pixel clipped at white (a channel at 1) says only "at least this bright": left out of the fit
   // while enough are left (a washed-out material), kept for the highlight above it
-  const unclipped = Uint8Array.from(pts, (s) => !s.clipped && Math.max(...s.c) < 0.99);
+  const unclipped = Uint8Array.from(pts, (s) => !s.clipped && Math.max(...s.c) < T.clippedLevel);
   let use = unclipped.reduce((a, v) => a + v, 0) >= Math.max(20, 0.3 * pts.length) ? unclipped : new Uint8Array(pts.length).fill(1);
   const use0 = use;
   let best = null, sseAll = null, F = null;
-  const highlightMargin = T.highlightMargin;
   for (let pass = 0; pass < 2; pass++) {
     best = null;
     F = flat(pts, use);
@@ -93,7 +85,7 @@ export function diffuseFit(pts, T) {
     }
     if (pass === 0) {
       sseAll = best.sse;
-      const left = Uint8Array.from(pts, (s, i) => use0[i] && s.y - (best.a + best.b * Math.max(0, s.n[0] * best.l[0] + s.n[1] * best.l[1] + s.n[2] * best.l[2])) < highlightMargin * 0.7);
+      const left = Uint8Array.from(pts, (s, i) => use0[i] && s.y - (best.a + best.b * Math.max(0, s.n[0] * best.l[0] + s.n[1] * best.l[1] + s.n[2] * best.l[2])) < T.highlightFitMargin);
       // no pixel above the fit: the second pass would fit the same pixels to the same numbers
       if (sameMask(left, use)) break;
       use = left;

@@ -18,16 +18,16 @@ export function highlightOf(pts, predict, T) {
     const r = luminance(s.c) - pred;
     rises[i] = r;
     if (r < T.highlightMinRise) continue;
-    const share = Math.min(1, r / Math.max(0.1, 1 - pred));
+    const share = Math.min(1, r / Math.max(T.highlightHeadroom, 1 - pred));
     peak = Math.max(peak, share);
     rise = Math.max(rise, r);
-    if (r > margin || share > 0.8) bright++;
+    if (r > margin || share > T.highlightBrightShare) bright++;
   }
-  // where it is: the mean normal of the pixels that rise most (within 70% of the largest rise)
+  // where it is: the mean normal of the pixels that rise most (highlightPlaceRise of the largest rise or more)
   let normal = null;
   if (rise > 0) {
     const m = [0, 0, 0];
-    for (let i = 0; i < pts.length; i++) if (rises[i] >= 0.7 * rise) for (let k = 0; k < 3; k++) m[k] += pts[i].n[k] * rises[i];
+    for (let i = 0; i < pts.length; i++) if (rises[i] >= T.highlightPlaceRise * rise) for (let k = 0; k < 3; k++) m[k] += pts[i].n[k] * rises[i];
     const len = Math.hypot(...m);
     if (len > 0) normal = m.map((v) => v / len);
   }

@@ -33,3 +33,6 @@ export function normalColours(pts) {
   }
   return { unitError: lenErr / pts.length, spread, residual: Math.sqrt(res / pts.length), det: det3(M) };
 }
+
+/** Do the colours read by normalColours (`nc`) show normals facing the viewer (a rotation, fitted well)? */
+export const facesViewer = (nc, T) => !!nc && nc.det >= T.facingDeterminant && nc.residual <= T.facingResidual;

@@ -12,7 +12,7 @@ import { leastSquares, symmetricEigenvalues3 } from './linear.js';
 const dot = (a, b) => a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
 const cross = (a, b) => [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]];
 const det = (A) => dot(A[0], cross(A[1], A[2]));
-const clipped = (s) => Math.min(...s.c) <= 0.01 || Math.max(...s.c) >= 0.99;
+const clipped = (s, T) => Math.min(...s.c) <= 0.01 || Math.max(...s.c) >= T.clippedLevel;
 
 /**
  * The normal colouring's turn R (3×3, rows) and share α from the channels' differences from
@@ -80,7 +80,7 @@ function channelsR2(use, lit, turned, { alpha = null, times = false } = {}) {
  * null where it cannot be fitted.
  */
 export function addedTintFit(pts, T) {
-  const use0 = pts.filter((s) => !clipped(s));
+  const use0 = pts.filter((s) => !clipped(s, T));
   if (use0.length < 50) return null;
   const nt = normalTurn(use0);
   if (!nt) return null;
@@ -88,12 +88,12 @@ export function addedTintFit(pts, T) {
   const turned = (n) => R.map((r) => dot(r, n));
   let alpha = nt.alpha, fit = null, lit = null, use = null;
   for (let round = 0; round < T.addedRounds; round++) {
-    const rest = pts.map((s) => { const m = turned(s.n); return { ...s, clipped: clipped(s), c: s.c.map((v, k) => v - alpha * m[k]) }; });
+    const rest = pts.map((s) => { const m = turned(s.n); return { ...s, clipped: clipped(s, T), c: s.c.map((v, k) => v - alpha * m[k]) }; });
     fit = diffuseFit(rest, T);
     if (!fit) return null;
     const l = fit.light, f = fit;
     lit = (n) => Math.max(0, dot(n, l));
-    use = pts.filter((s, i) => !rest[i].clipped && rest[i].y - (f.ambient + f.diffuse * lit(s.n)) < T.highlightMargin * 0.7);
+    use = pts.filter((s, i) => !rest[i].clipped && rest[i].y - (f.ambient + f.diffuse * lit(s.n)) < T.highlightFitMargin);
     if (use.length < 20) return null;
     const { x } = channelsR2(use, lit, turned);
     if (!x) return null;
@@ -110,7 +110,7 @@ export function addedTintFit(pts, T) {
  * of at least addedShare, of a turned normal (its two singular values within addedEven), the
  * channels explained to addedR2, what is left unexplained shrunk addedShrink-fold from nothing added, a part that multiplies
  * the lighting (`times`) within addedTimesShare of it, and lighting left when it is taken out (the
- * rest shaded by half litSpread, as a lit picture must be, fitted to diffuseR2: WP04P1's colours alone leave a flat rest)?
+ * rest shaded by evenSpread at least, as a lit picture must be, fitted to diffuseR2: WP04P1's colours alone leave a flat rest)?
  */
 export const addedClearly = (fit, T) => !!fit && fit.added.share >= T.addedShare && fit.added.even >= T.addedEven && fit.added.r2 >= T.addedR2 &&
-  1 - fit.added.r2Without >= T.addedShrink * (1 - fit.added.r2) && Math.abs(fit.added.times) <= T.addedTimesShare && fit.spread >= T.litSpread / 2 && fit.r2 >= T.diffuseR2;
+  1 - fit.added.r2Without >= T.addedShrink * (1 - fit.added.r2) && Math.abs(fit.added.times) <= T.addedTimesShare && fit.spread >= T.evenSpread && fit.r2 >= T.diffuseR2;

@@ -11,7 +11,8 @@ import { highlightSeen } from './highlight.js';
 import { leastSquares, solveNormal, symmetricEigenvalues3 } from './linear.js';
 import { addedTintFit, addedClearly } from './tint-added.js';
 
-const usable = (s) => Math.max(...s.c) < 0.99 && s.c[0] + s.c[1] + s.c[2] > 0.15;
+// a pixel clipped at white (a channel at clippedLevel) or nearly black says little of its hue
+const usable = (s, T) => Math.max(...s.c) < T.clippedLevel && s.c[0] + s.c[1] + s.c[2] > 0.15;
 
 /**
  * Does the hue follow the normal? Each channel's share of the brightness (c_k / Σc) fitted as an
@@ -22,8 +23,8 @@ const usable = (s) => Math.max(...s.c) < 0.99 && s.c[0] + s.c[1] + s.c[2] > 0.15
  * the normal in two directions (the shares sum to 1: at most two), so `turn` is the second
  * singular value of the shares' slopes.
  */
-export function hueByNormal(pts) {
-  const use = pts.filter(usable);
+export function hueByNormal(pts, T) {
+  const use = pts.filter((s) => usable(s, T));
   if (use.length < 50) return null;
   const rows = use.map((s) => [1, s.n[0], s.n[1], s.n[2]]);
   let sse = 0, sst = 0;
@@ -102,7 +103,7 @@ export function detintedFit(pts, T, plain = diffuseFit(pts, T)) {
     if (!fit) return null;
     const L = (n) => fit.ambient + fit.diffuse * Math.max(0, n[0] * fit.light[0] + n[1] * fit.light[1] + n[2] * fit.light[2]);
     // the pixels the lighting fits (no highlight, nothing clipped, not black)
-    const use = pts.filter((s) => usable(s) && L(s.n) >= 0.05 && luminance(s.c) - L(s.n) * A(s.n) <= T.highlightMargin * 0.7)
+    const use = pts.filter((s) => usable(s, T) && L(s.n) >= 0.05 && luminance(s.c) - L(s.n) * A(s.n) <= T.highlightFitMargin)
       .map((s) => ({ n: s.n, y: luminance(s.c) }));
     if (use.length < 20) break;
     q = albedoAndLighting(use, fit.light, q, fit.ambient, fit.diffuse, T.tintIterations);
@@ -127,7 +128,7 @@ const angleOf = (a, b) => (180 / Math.PI) * Math.acos(Math.max(-1, Math.min(1, a
 export function shadeFit(pts, T) {
   const plain = diffuseFit(pts, T);
   if (!plain) return null;
-  const hue = hueByNormal(pts);
+  const hue = hueByNormal(pts, T);
   if (!tintedByNormal(hue, T)) return plain;
   // a normal colouring added to the lighting: its fit, read as any clean fit is
   const added = addedTintFit(pts, T);

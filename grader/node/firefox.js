@@ -1,9 +1,9 @@
-// The machine's Firefox (grader/node/find-browser.js: Debian's Firefox ESR on this one), driven by
+// The machine's Firefox (find-browser.js: Debian's Firefox ESR on this one), driven by
 // puppeteer-core over WebDriver BiDi (Playwright cannot drive a stock Firefox): how to launch it so
 // that headless WebGL works on a machine without a GPU (Mesa's llvmpipe through EGL, in the content
 // process). Never downloads a browser.
 import puppeteer from 'puppeteer-core';
-import { findHere } from '../grader/node/find-browser.js';
+import { findHere } from './find-browser.js';
 
 const FOUND = findHere('firefox');
 /** The Firefox to drive, or null when the machine has none (FIREFOX_MISSING says what to run). */
