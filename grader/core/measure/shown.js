@@ -48,5 +48,5 @@ export function shownDifference(two, T) {
     }
   }
   if (!best) return { compared: false, why: 'no opaque pixel of the canvas is in view' };
-  return { compared: true, opaque: best.opaque, share: Math.round((best.differ / best.opaque) * 1e4) / 1e4 };
+  return { compared: true, opaque: best.opaque, share: best.differ / best.opaque };
 }
