@@ -22,18 +22,26 @@ export function pixelsScript() {
     return all.length ? all.reduce((a, b) => (size(b).width * size(b).height > size(a).width * size(a).height ? b : a)) : null;
   };
 
-  /** The target canvas (the largest visible one), composited over white: a PNG data URL with format 'png' (the grader, which sends it out of the page: a tenth of the raw bytes, lossless), else its RGBA bytes (the check page, in the page). */
-  const pixels = (format) => {
-    const canvas = target();
-    if (!canvas) return null;
+  /** A 2D canvas of `canvas`'s size with `canvas` drawn on it, over `background` if one is given: { copy, c2, width, height }. */
+  const copyOf = (canvas, background) => {
     const { width, height } = size(canvas);
     const copy = N.createElement.call(document, 'canvas');
     N.width.set.call(copy, width);
     N.height.set.call(copy, height);
     const c2 = N.getContext.call(copy, '2d');
-    N.fillStyle.set.call(c2, '#fff');
-    N.fillRect.call(c2, 0, 0, width, height);
+    if (background) {
+      N.fillStyle.set.call(c2, background);
+      N.fillRect.call(c2, 0, 0, width, height);
+    }
     N.drawImage.call(c2, canvas, 0, 0);
+    return { copy, c2, width, height };
+  };
+
+  /** The target canvas (the largest visible one), composited over white: a PNG data URL with format 'png' (the grader, which sends it out of the page: a tenth of the raw bytes, lossless), else its RGBA bytes (the check page, in the page). */
+  const pixels = (format) => {
+    const canvas = target();
+    if (!canvas) return null;
+    const { copy, c2, width, height } = copyOf(canvas, '#fff');
     const api = N.getAttribute.call(canvas, 'data-grade-api');
     if (format === 'png') return { width, height, api, png: N.toDataURL.call(copy, 'image/png') };
     return { width, height, api, data: N.getImageData.call(c2, 0, 0, width, height).data };
@@ -50,11 +58,7 @@ export function pixelsScript() {
   const readBack = () => {
     const canvas = target();
     if (!canvas) return null;
-    const { width, height } = size(canvas);
-    const copy = N.createElement.call(document, 'canvas');
-    N.width.set.call(copy, width);
-    N.height.set.call(copy, height);
-    N.drawImage.call(N.getContext.call(copy, '2d'), canvas, 0, 0);
+    const { copy, width, height } = copyOf(canvas, null);
     // the canvas's own picture lies inside its border (a CSS border shows around it, not over it)
     const r = N.getBoundingClientRect.call(canvas), read = (k) => N[k].get.call(canvas);
     return {
