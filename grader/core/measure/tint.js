@@ -25,7 +25,7 @@ const usable = (s, T) => Math.max(...s.c) < T.clippedLevel && s.c[0] + s.c[1] + 
  */
 export function hueByNormal(pts, T) {
   const use = pts.filter((s) => usable(s, T));
-  if (use.length < 50) return null;
+  if (use.length < T.minModelSamples) return null;
   const rows = use.map((s) => [1, s.n[0], s.n[1], s.n[2]]);
   let sse = 0, sst = 0;
   const slopes = [];
@@ -105,7 +105,7 @@ export function detintedFit(pts, T, plain = diffuseFit(pts, T)) {
     // the pixels the lighting fits (no highlight, nothing clipped, not black)
     const use = pts.filter((s) => usable(s, T) && L(s.n) >= 0.05 && luminance(s.c) - L(s.n) * A(s.n) <= T.highlightFitMargin)
       .map((s) => ({ n: s.n, y: luminance(s.c) }));
-    if (use.length < 20) break;
+    if (use.length < T.minFitSamples) break;
     q = albedoAndLighting(use, fit.light, q, fit.ambient, fit.diffuse, T.tintIterations);
   }
   const fit = fitWith(albedo());
