@@ -29,7 +29,7 @@ export function auditNormals({ facts, images, T, must, say, numbers }, judged) {
       const s = probe.image && probe.draws !== 0 ? images[probe.image] : null;
       const sAn = s && analyse(s, T);
       const nc2 = s && !sAn.blank ? normalColours(samples(s, sAn)) : null;
-      nearest = nc2 ? nc2.det < 0 && pictureChange(s, img) <= T.noCullSame : null;
+      nearest = nc2 ? nc2.det < 0 && pictureChange(s, img, T) <= T.noCullSame : null;
     } else if (probe.faces.depthTest) nearest = true;
   }
   numbers.normals = nc;

@@ -131,12 +131,12 @@ export async function trySliders(S, controls) {
     // what the page sent differently (sentChanges) decides where the picture moves by itself
     const sent = { input: sentChanges(sentBefore, await readSent(S), animated), change: null };
     let how = 'input';
-    if (!sliderActed({ moving: S.moving, picture: pictureChange(base, after) > T.sliderChange, sent: sent.input })) {
+    if (!sliderActed({ moving: S.moving, picture: pictureChange(base, after, T) > T.sliderChange, sent: sent.input })) {
       await setGroup(S, g, target, ['change']);
       await S.tick(100);
       after = await S.page.snap();
       sent.change = sentChanges(sentBefore, await readSent(S), animated);
-      how = sliderActed({ moving: S.moving, picture: pictureChange(base, after) > T.sliderChange, sent: sent.change }) ? 'change' : 'none';
+      how = sliderActed({ moving: S.moving, picture: pictureChange(base, after, T) > T.sliderChange, sent: sent.change }) ? 'change' : 'none';
     }
     const r = k && k !== 'levelSlider' ? k : null;
     S.act(`set ${describeGroup(g)} to ${vs[0]} (${how === 'none' ? 'no visible change' : `the picture changed on the ${how} event`})`);
