@@ -141,7 +141,7 @@ const ALLOWED = {
   'core/gather/visible.js': { numbers: [0.98], why: `white, read while gathering: ${TO_MOVE} (one clipped level: clippedLevel)` },
   '../check/files.js': { numbers: [5000, 10, 7, 5], why: PAGE },
   '../check/frame-page.js': { numbers: [37, 38, 39, 40, 33, 34, 187, 189, 32, 13, 27], why: PAGE },
-  '../check/frame-watch.js': { numbers: [20, 1023], why: `${PAGE}; 20: the rubric's loadSeconds where none is given: ${TO_MOVE}` },
+  '../check/frame-watch.js': { numbers: [1023], why: PAGE },
   '../check/guard.js': { numbers: [20], why: `the stand-in guard's loadSeconds: ${TO_MOVE}` },
   '../check/host.js': { numbers: [400, 500, 5000, 50], why: PAGE },
   '../check/runner.js': { numbers: [200, 500, 5000, 30], why: PAGE },
