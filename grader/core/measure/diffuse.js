@@ -65,7 +65,7 @@ export function diffuseFit(pts, T) {
   // a pixel clipped at white (a channel at 1) says only "at least this bright": left out of the fit
   // while enough are left (a washed-out material), kept for the highlight above it
   const unclipped = Uint8Array.from(pts, (s) => !s.clipped && Math.max(...s.c) < T.clippedLevel);
-  let use = unclipped.reduce((a, v) => a + v, 0) >= Math.max(T.minFitSamples, 0.3 * pts.length) ? unclipped : new Uint8Array(pts.length).fill(1);
+  let use = unclipped.reduce((a, v) => a + v, 0) >= Math.max(T.minFitSamples, T.minUnclippedShare * pts.length) ? unclipped : new Uint8Array(pts.length).fill(1);
   const use0 = use;
   let best = null, sseAll = null, F = null;
   for (let pass = 0; pass < 2; pass++) {

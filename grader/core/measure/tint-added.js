@@ -12,7 +12,7 @@ import { leastSquares, symmetricEigenvalues3 } from './linear.js';
 const dot = (a, b) => a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
 const cross = (a, b) => [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]];
 const det = (A) => dot(A[0], cross(A[1], A[2]));
-const clipped = (s, T) => Math.min(...s.c) <= 0.01 || Math.max(...s.c) >= T.clippedLevel;
+const clipped = (s, T) => Math.min(...s.c) <= T.blackLevel || Math.max(...s.c) >= T.clippedLevel;
 
 /**
  * The normal colouring's turn R (3×3, rows) and share α from the channels' differences from
