@@ -21,7 +21,7 @@ const free = (S, controls, r, pred = () => true) => controls.find((x) => !S.take
 export async function probeFaces(S, controls, judged) {
   const { T, facts } = S;
   let { img, an } = judged;
-  let nc = normalColours(samples(img, an));
+  let nc = normalColours(samples(img, an), T);
   if (nc && !facesViewer(nc, T)) {
     for (const [r, want] of [['depth', true], ['cull', true], ['clockwise', false]]) {
       const c = free(S, controls, r);
@@ -31,7 +31,7 @@ export async function probeFaces(S, controls, judged) {
       if (!s || s.an.blank) break;
       ({ img, an } = s);
       facts.facesImage = S.keep('faces', img);
-      nc = normalColours(samples(img, an));
+      nc = normalColours(samples(img, an), T);
       if (facesViewer(nc, T)) break;
     }
   }
