@@ -133,8 +133,6 @@ const ALLOWED = {
   'core/measure/silhouette.js': { numbers: [63, 30, 72, 1.5, 2.5, 12, 0.02, 0.98, 36, 10], why: `63: a mask's bits; 72, 36, 10: bins of the outline (${MECHANICS}); the rest: ${TO_MOVE}` },
   'core/measure/change.js': { numbers: [0.8], why: TO_MOVE },
   'core/measure/samples.js': { numbers: [0.85, 4000], why: TO_MOVE },
-  'core/gather/index.js': { numbers: [20, 10], why: `frames waited for a first frame: ${TO_MOVE}` },
-  'core/gather/probes.js': { numbers: [10], why: `a slider's range when it has none: ${TO_MOVE}` },
   'core/gather/session.js': { numbers: [10, 400, 500], why: `a real wait of 10 ms for the page's promises; 400, 500: frames' time, ${TO_MOVE}` },
   'core/gather/visible.js': { numbers: [0.98], why: `white, read while gathering: ${TO_MOVE} (one clipped level: clippedLevel)` },
   '../check/files.js': { numbers: [5000, 10, 7, 5], why: PAGE },

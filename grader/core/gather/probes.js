@@ -87,7 +87,8 @@ const groupFacts = (g, vs) => ({ control: g.controls[0].index, ...(g.controls.le
 export async function raiseHighlight(S, controls) {
   const { T } = S;
   const set = [];
-  const s10 = (c) => Math.max(Number(c.min || 0) + 1, Math.min(10, Number(c.max || 10)));
+  // s raised to raisedShininess, within the slider's range
+  const s10 = (c) => Math.max(Number(c.min || 0) + 1, Math.min(T.raisedShininess, Number(c.max || T.raisedShininess)));
   const raised = S.facts.raised = [];
   const groups = groupsOf(S, controls).filter((g) => g.controls.every((c) => c.type === 'range' || c.type === 'number' || (g.role === 'ks' && c.type === 'color')));
   for (const [r, to] of [['ks', (c) => (c.type === 'color' ? greatest(c) : Number(c.max === '' || c.max === undefined ? 1 : c.max))], ['s', s10]]) {
