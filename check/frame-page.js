@@ -5,12 +5,23 @@
 // (grader/browser/webgpu-capture.js), window.__checkClock (grader/browser/clock.js), window.__checkWatch
 // (check/frame-watch.js).
 
+/** keydown, keypress (a character), keyup of `key` at the focused element (or the body) of the frame's window `W`. */
+function pressKey(W, key) {
+  const doc = W.document;
+  const target = doc.activeElement && doc.activeElement !== doc.documentElement ? doc.activeElement : doc.body || doc.documentElement;
+  const code = /^[a-z]$/i.test(key) ? `Key${key.toUpperCase()}` : /^[0-9]$/.test(key) ? `Digit${key}` : { '+': 'Equal', '-': 'Minus', ' ': 'Space' }[key] || key;
+  const keyCode = { ArrowLeft: 37, ArrowUp: 38, ArrowRight: 39, ArrowDown: 40, PageUp: 33, PageDown: 34, '+': 187, '-': 189, ' ': 32, Enter: 13, Escape: 27 }[key] ?? key.toUpperCase().charCodeAt(0);
+  const init = { key, code, keyCode, which: keyCode, bubbles: true, cancelable: true, composed: true, view: W };
+  target.dispatchEvent(new W.KeyboardEvent('keydown', init));
+  if (key.length === 1) target.dispatchEvent(new W.KeyboardEvent('keypress', { ...init, charCode: key.charCodeAt(0), keyCode: key.charCodeAt(0), which: key.charCodeAt(0) }));
+  target.dispatchEvent(new W.KeyboardEvent('keyup', init));
+}
+
 /**
  * @param {HTMLIFrameElement} frame a part's frame, loaded
  * @param {{ errors: string[], blocked: string[], notes: string[] }} log what the check page's
  *   server and the frame report (the frame's own errors are read from window.__checkWatch)
  */
-// eslint-disable-next-line max-lines-per-function -- over 80 lines: still to split into named parts (issue 40)
 export function framePage(frame, log) {
   const win = () => frame.contentWindow;
   const g = () => win().__grade;
@@ -49,14 +60,7 @@ export function framePage(frame, log) {
     /** keydown, keypress (a character), keyup of `key` at the focused element (or the body). */
     async press(key) {
       newTask();
-      const W = win(), doc = W.document;
-      const target = doc.activeElement && doc.activeElement !== doc.documentElement ? doc.activeElement : doc.body || doc.documentElement;
-      const code = /^[a-z]$/i.test(key) ? `Key${key.toUpperCase()}` : /^[0-9]$/.test(key) ? `Digit${key}` : { '+': 'Equal', '-': 'Minus', ' ': 'Space' }[key] || key;
-      const keyCode = { ArrowLeft: 37, ArrowUp: 38, ArrowRight: 39, ArrowDown: 40, PageUp: 33, PageDown: 34, '+': 187, '-': 189, ' ': 32, Enter: 13, Escape: 27 }[key] ?? key.toUpperCase().charCodeAt(0);
-      const init = { key, code, keyCode, which: keyCode, bubbles: true, cancelable: true, composed: true, view: W };
-      target.dispatchEvent(new W.KeyboardEvent('keydown', init));
-      if (key.length === 1) target.dispatchEvent(new W.KeyboardEvent('keypress', { ...init, charCode: key.charCodeAt(0), keyCode: key.charCodeAt(0), which: key.charCodeAt(0) }));
-      target.dispatchEvent(new W.KeyboardEvent('keyup', init));
+      pressKey(win(), key);
     },
     /** Frozen time advances: a jump to 16·frames before `ms`, then `frames` frames at 60 Hz; returns state() after them. */
     async tick(ms, frames = 2) {

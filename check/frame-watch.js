@@ -56,7 +56,7 @@ export function frameWatchScript(options) {
   watch.newTask = () => { beat++; };
   // loading has the rubric's loadSeconds; once loaded, a task may take up to the part's whole bound
   // (a quadratic flatten() at a high level takes tens of seconds on a slow machine, as under the grader)
-  let limit = 1000 * (options.loopSeconds || 20);
+  let limit = 1000 * options.loopSeconds;
   watch.setLoopSeconds = (seconds) => { limit = 1000 * seconds; };
   Object.defineProperty(window, '__checkLoop', {
     enumerable: false,

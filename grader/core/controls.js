@@ -51,7 +51,7 @@ export function nameRole(c, patterns) {
  * drawn), 'blank' (nothing drawn after it), 'none'.
  */
 export function effectOf({ before, after, later, wasMoving }, T) {
-  const moving = pictureChange(after.img, later.img) > T.pictureMoves;
+  const moving = pictureChange(after.img, later.img, T) > T.pictureMoves;
   if (!wasMoving && moving) return 'starts';
   if (wasMoving && !moving) return 'stops';
   if (wasMoving) return 'none'; // whatever else it did cannot be told while the picture moves
@@ -65,9 +65,9 @@ export function effectOf({ before, after, later, wasMoving }, T) {
     return rounder > 0 ? 'finer' : 'coarser';
   }
   // at a high level: a few outline pixels flip, all of them at the outline, and the area moves with them
-  const f = outlineFlips(before.an, after.an);
+  const f = outlineFlips(before.an, after.an, T);
   if (f && f.flips >= T.outlineFlips && f.atOutline >= T.outlineFlipsAtEdge * f.flips && Math.abs(f.area) >= Math.max(2, 0.5 * f.flips)) return f.area > 0 ? 'finer' : 'coarser';
-  return pictureChange(before.img, after.img) > T.pictureChanged ? 'shading' : 'none';
+  return pictureChange(before.img, after.img, T) > T.pictureChanged ? 'shading' : 'none';
 }
 
 /**

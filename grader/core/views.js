@@ -5,14 +5,14 @@ import { analyse, samples, shadeFit } from './measure.js';
 import { memo } from './memo.js';
 
 /**
- * { an, fit, lit } for a picture: `fit` over a sparse 1500 samples. A light from the eye's side
+ * { an, fit, lit } for a picture: `fit` over a sparse fitSamples samples. A light from the eye's side
  * spreads brightness little over the disc (n·w_i from 0.5 to 1 in the samples): a clean fit with
  * a clear diffuse term is lit too. A silhouette too coarse to read shading from is never lit.
  */
 export const litView = memo((img, T) => {
   const an = analyse(img, T);
   if (an.blank) return { an, fit: null, lit: false };
-  const fit = shadeFit(samples(img, an, { max: 1500 }), T);
+  const fit = shadeFit(samples(img, an, { max: T.fitSamples }), T);
   const lit = !!fit && an.roundness < T.orbitCoarseRoundness && (fit.spread >= T.clearlyLitSpread ||
     (fit.spread >= T.evenSpread && fit.r2 >= T.diffuseR2 && fit.diffuse >= T.diffuseMin));
   return { an, fit, lit };

@@ -143,7 +143,6 @@ function readRubric(file) {
   return mergeRubric(load(DEFAULT_RUBRIC), file ? load(file) : null);
 }
 
-// eslint-disable-next-line max-lines-per-function -- over 80 lines: still to split into named parts (issue 40)
 async function main() {
   const o = parseArgs(process.argv.slice(2));
   const rubric = readRubric(o.rubric);
@@ -180,51 +179,61 @@ async function main() {
     const { audited, without } = await auditAgain(out, rubric, (k, n) => { if (process.stdout.isTTY) process.stdout.write(`\rgrade: audited ${k} of ${n} parts`); });
     console.log(`\rgrade: audited ${audited} parts from their artifacts in ${((Date.now() - t0) / 1000).toFixed(1)} s${without.length ? `; ${without.length} without an artifact kept their verdict (${without.join(', ')})` : ''}`);
   } else if (!o.reportOnly && !o.similarityOnly && submissions.length) {
-    const browser = o.browser || 'chromium';
-    if (browser === 'firefox' && !FIREFOX) fail(`${FIREFOX_MISSING}\n(or grade in Chromium: leave out --browser firefox)`);
-    if (browser === 'chromium' && !CHROMIUM) fail(CHROMIUM_MISSING);
-    const executable = browser === 'firefox' ? FIREFOX : CHROMIUM;
-    // the browser's own name ("Chromium", "Google Chrome", "Mozilla Firefox"): the report adds the version that ran
-    const browserName = nameOfVersionLine(versionOfExecutable(executable), browser === 'firefox' ? 'Firefox' : 'Chromium');
-    const items = [];
-    for (const s of submissions) {
-      const parts = findParts(s.root, o.batch ? {} : o.parts);
-      for (const part of PARTS) {
-        const cfg = rubric.parts[part] || {};
-        const page = parts[part] && existsSync(path.join(s.root, parts[part])) ? parts[part] : null;
-        // a page that only links to another part's page is graded once, as that part
-        const linksTo = page ? linkedPart(readFileSync(path.join(s.root, page), 'utf8'), page, parts) : null;
-        items.push({ name: s.name, part, root: s.root, page, ...(linksTo ? { linksTo } : {}), referenceQuery: cfg.referenceQuery || {}, ...partFiles(out, s.name, part) });
-      }
-    }
-    // the parts that try the most first (the sliders, then the orbit's), so that the workers end
-    // together on the short ones: a class's time is then near its sum over the workers
-    const FIRST = ['WP04P4', 'WP04P3', 'WP04P5', 'WP04P2', 'WP04P1'];
-    items.sort((a, b) => FIRST.indexOf(a.part) - FIRST.indexOf(b.part));
-    const planFile = path.join(out, 'plan.json');
-    const plan = { repo, out, browser, browserName, browserPath: executable, rubric, timeoutSeconds: rubric.timeoutSeconds, referenceSeconds: REFERENCE_SECONDS, items };
-    writeFileSync(planFile, JSON.stringify(plan, null, 1));
-    console.log(`grade: ${submissions.length} submission(s), ${items.length} parts in ${browserName} (${executable}${browser === 'chromium' ? `, found by ${CHROMIUM_HOW}` : ''}); ${o.workers || 2} at a time, at most ${rubric.timeoutSeconds} s for each student page, and ${REFERENCE_SECONDS} s more for our reference`);
-    if (browser === 'firefox') {
-      // (--shard I/N: every N-th part from the I-th, as a class is split over machines)
-      const [i, n] = (o.shard || '1/1').split('/').map(Number);
-      if (!(n >= 1 && i >= 1 && i <= n)) fail(`--shard takes I/N with 1 ≤ I ≤ N\n\n${HELP}`, 2);
-      try {
-        await gradeInFirefox({ ...plan, items: items.filter((_, k) => k % n === i - 1) }, { workers: Number(o.workers || 2) });
-      } catch (err) {
-        fail(`could not grade in Firefox: ${err.message.split('\n')[0]}`);
-      }
-    } else {
-      const args = ['test', '-c', path.join(here, 'playwright.config.js')];
-      if (o.shard) args.push('--shard', o.shard);
-      rmSync(path.join(out, 'blob-report'), { recursive: true, force: true });
-      const run = spawnSync(process.execPath, [path.join(repo, 'node_modules/@playwright/test/cli.js'), ...args], {
-        cwd: here, stdio: 'inherit', env: { ...process.env, GRADE_PLAN: planFile, GRADE_WORKERS: o.workers || '2' },
-      });
-      if (run.error) fail(`could not start Playwright: ${run.error.message}`);
-    }
+    await gradeParts(o, out, rubric, submissions);
   }
 
+  await reportClass(o, out, rubric, labels, submissions);
+}
+
+/** The parts of `submissions` graded in the browser the options name (Chromium through Playwright, or Firefox), into `out`. */
+async function gradeParts(o, out, rubric, submissions) {
+  const browser = o.browser || 'chromium';
+  if (browser === 'firefox' && !FIREFOX) fail(`${FIREFOX_MISSING}\n(or grade in Chromium: leave out --browser firefox)`);
+  if (browser === 'chromium' && !CHROMIUM) fail(CHROMIUM_MISSING);
+  const executable = browser === 'firefox' ? FIREFOX : CHROMIUM;
+  // the browser's own name ("Chromium", "Google Chrome", "Mozilla Firefox"): the report adds the version that ran
+  const browserName = nameOfVersionLine(versionOfExecutable(executable), browser === 'firefox' ? 'Firefox' : 'Chromium');
+  const items = [];
+  for (const s of submissions) {
+    const parts = findParts(s.root, o.batch ? {} : o.parts);
+    for (const part of PARTS) {
+      const cfg = rubric.parts[part] || {};
+      const page = parts[part] && existsSync(path.join(s.root, parts[part])) ? parts[part] : null;
+      // a page that only links to another part's page is graded once, as that part
+      const linksTo = page ? linkedPart(readFileSync(path.join(s.root, page), 'utf8'), page, parts) : null;
+      items.push({ name: s.name, part, root: s.root, page, ...(linksTo ? { linksTo } : {}), referenceQuery: cfg.referenceQuery || {}, ...partFiles(out, s.name, part) });
+    }
+  }
+  // the parts that try the most first (the sliders, then the orbit's), so that the workers end
+  // together on the short ones: a class's time is then near its sum over the workers
+  const FIRST = ['WP04P4', 'WP04P3', 'WP04P5', 'WP04P2', 'WP04P1'];
+  items.sort((a, b) => FIRST.indexOf(a.part) - FIRST.indexOf(b.part));
+  const planFile = path.join(out, 'plan.json');
+  const plan = { repo, out, browser, browserName, browserPath: executable, rubric, timeoutSeconds: rubric.timeoutSeconds, referenceSeconds: REFERENCE_SECONDS, items };
+  writeFileSync(planFile, JSON.stringify(plan, null, 1));
+  console.log(`grade: ${submissions.length} submission(s), ${items.length} parts in ${browserName} (${executable}${browser === 'chromium' ? `, found by ${CHROMIUM_HOW}` : ''}); ${o.workers || 2} at a time, at most ${rubric.timeoutSeconds} s for each student page, and ${REFERENCE_SECONDS} s more for our reference`);
+  if (browser === 'firefox') {
+    // (--shard I/N: every N-th part from the I-th, as a class is split over machines)
+    const [i, n] = (o.shard || '1/1').split('/').map(Number);
+    if (!(n >= 1 && i >= 1 && i <= n)) fail(`--shard takes I/N with 1 ≤ I ≤ N\n\n${HELP}`, 2);
+    try {
+      await gradeInFirefox({ ...plan, items: items.filter((_, k) => k % n === i - 1) }, { workers: Number(o.workers || 2) });
+    } catch (err) {
+      fail(`could not grade in Firefox: ${err.message.split('\n')[0]}`);
+    }
+  } else {
+    const args = ['test', '-c', path.join(here, 'playwright.config.js')];
+    if (o.shard) args.push('--shard', o.shard);
+    rmSync(path.join(out, 'blob-report'), { recursive: true, force: true });
+    const run = spawnSync(process.execPath, [path.join(repo, 'node_modules/@playwright/test/cli.js'), ...args], {
+      cwd: here, stdio: 'inherit', env: { ...process.env, GRADE_PLAN: planFile, GRADE_WORKERS: o.workers || '2' },
+    });
+    if (run.error) fail(`could not start Playwright: ${run.error.message}`);
+  }
+}
+
+/** The class graded in `out` (every shard's parts): similarity, the report, grades.csv, the teacher's files, and the summary lines. */
+async function reportClass(o, out, rubric, labels, submissions) {
   // gather every part graded in this out folder (all shards, once they are copied together)
   const partsDir = path.join(out, 'parts');
   const similar = o.batch ? await runSimilarity(submissions, out, { bound: o.similarityBound ?? undefined }) : null;

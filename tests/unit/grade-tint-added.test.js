@@ -55,7 +55,7 @@ test('auditNormalsNotLight: WP04P1\'s colours alone are no lighting; with the li
   assert.ok(a.notLight && a.said.some((s) => /normal colouring of WP04P1, not the lighting/.test(s.reason)));
   // lit brightly enough (kd 1, ambient 0.2, the light near the viewer) that 2c − 1 is near a unit vector all over
   const bright = judged(sphere((n) => n.map((p) => 0.5 * p + 0.5 * (0.2 + Math.max(dot(n, light), 0)))));
-  assert.ok(normalColours(bright.pts).unitError <= T.normalsUnitError, 'the colours decode to unit normals');
+  assert.ok(normalColours(bright.pts, T).unitError <= T.normalsUnitError, 'the colours decode to unit normals');
   const b = run(bright);
   assert.equal(b.notLight, false, b.said.map((s) => s.reason).join(' | '));
 });

@@ -40,7 +40,7 @@ export function auditSliders({ facts, images, T, must, say, rubric, part }, judg
       // 1/r² spot stays and is no highlight), or above the after picture's own directional fit
       const after = images[s.image];
       const a = analyse(after, T);
-      const f = a.blank ? null : nearModel ? { highlightPeak: highlightAbove(perspectiveSamples(after, judged.an, T.pointLightFovy, { max: 1500 }), nearModel, T) }
+      const f = a.blank ? null : nearModel ? { highlightPeak: highlightAbove(perspectiveSamples(after, judged.an, T.pointLightFovy, { max: T.fitSamples }), nearModel, T) }
         : shadeFit(samples(after, a), T);
       if (f && f.highlightPeak >= baseFit.highlightPeak * T.ksLeftShare && f.highlightPeak >= T.highlightPeak) {
         say('review', `ks${s.controls ? ` (its ${s.controls.length} sliders)` : ''} at ${target} leaves the highlight as it was (${fmt(f.highlightPeak)}): is ks used in the specular term?`);

@@ -48,8 +48,9 @@ async function gather(S) {
   for (let k = 0; k < T.firstFrameTicks; k++) {
     const s = await S.settle();
     if (s.draws > 0 && (s.api !== 'webgpu' || s.frames > 0)) break;
-    if (s.adapter === null || s.shaderErrors.length || (!s.api && k >= 20)) break;
-    if (k >= 10 && page.errors().some((e) => /^(page error|dialog)/.test(e))) break; // it threw or alerted: no need to wait longer
+    if (s.adapter === null || s.shaderErrors.length || (!s.api && k >= T.noContextTicks)) break;
+    // it threw or alerted: no need to wait longer
+    if (k >= T.errorTicks && page.errors().some((e) => /^(page error|dialog)/.test(e))) break;
     await S.tick(16);
   }
   const g = await page.state();

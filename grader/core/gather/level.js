@@ -156,7 +156,7 @@ export async function climb(S) {
     }
     return got;
   };
-  const same = (a, b) => pictureChange(a.img, b.img) <= T.pictureChanged;
+  const same = (a, b) => pictureChange(a.img, b.img, T) <= T.pictureChanged;
   // settled: the silhouette no longer changes, or it is as round as pixels allow (a teacher stops there too)
   const settledSilhouette = (a, b) => silhouetteChange(a.an, b.an) <= T.silhouetteSettled || (!b.an.blank && b.an.roundness <= T.roundEnough);
   let coarsened = false;

@@ -21,7 +21,7 @@ const free = (S, controls, r, pred = () => true) => controls.find((x) => !S.take
 export async function probeFaces(S, controls, judged) {
   const { T, facts } = S;
   let { img, an } = judged;
-  let nc = normalColours(samples(img, an));
+  let nc = normalColours(samples(img, an), T);
   if (nc && !facesViewer(nc, T)) {
     for (const [r, want] of [['depth', true], ['cull', true], ['clockwise', false]]) {
       const c = free(S, controls, r);
@@ -31,7 +31,7 @@ export async function probeFaces(S, controls, judged) {
       if (!s || s.an.blank) break;
       ({ img, an } = s);
       facts.facesImage = S.keep('faces', img);
-      nc = normalColours(samples(img, an));
+      nc = normalColours(samples(img, an), T);
       if (facesViewer(nc, T)) break;
     }
   }
@@ -87,7 +87,8 @@ const groupFacts = (g, vs) => ({ control: g.controls[0].index, ...(g.controls.le
 export async function raiseHighlight(S, controls) {
   const { T } = S;
   const set = [];
-  const s10 = (c) => Math.max(Number(c.min || 0) + 1, Math.min(10, Number(c.max || 10)));
+  // s raised to raisedShininess, within the slider's range
+  const s10 = (c) => Math.max(Number(c.min || 0) + 1, Math.min(T.raisedShininess, Number(c.max || T.raisedShininess)));
   const raised = S.facts.raised = [];
   const groups = groupsOf(S, controls).filter((g) => g.controls.every((c) => c.type === 'range' || c.type === 'number' || (g.role === 'ks' && c.type === 'color')));
   for (const [r, to] of [['ks', (c) => (c.type === 'color' ? greatest(c) : Number(c.max === '' || c.max === undefined ? 1 : c.max))], ['s', s10]]) {
@@ -131,12 +132,12 @@ export async function trySliders(S, controls) {
     // what the page sent differently (sentChanges) decides where the picture moves by itself
     const sent = { input: sentChanges(sentBefore, await readSent(S), animated), change: null };
     let how = 'input';
-    if (!sliderActed({ moving: S.moving, picture: pictureChange(base, after) > T.sliderChange, sent: sent.input })) {
+    if (!sliderActed({ moving: S.moving, picture: pictureChange(base, after, T) > T.sliderChange, sent: sent.input })) {
       await setGroup(S, g, target, ['change']);
       await S.tick(100);
       after = await S.page.snap();
       sent.change = sentChanges(sentBefore, await readSent(S), animated);
-      how = sliderActed({ moving: S.moving, picture: pictureChange(base, after) > T.sliderChange, sent: sent.change }) ? 'change' : 'none';
+      how = sliderActed({ moving: S.moving, picture: pictureChange(base, after, T) > T.sliderChange, sent: sent.change }) ? 'change' : 'none';
     }
     const r = k && k !== 'levelSlider' ? k : null;
     S.act(`set ${describeGroup(g)} to ${vs[0]} (${how === 'none' ? 'no visible change' : `the picture changed on the ${how} event`})`);

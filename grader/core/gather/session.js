@@ -152,7 +152,7 @@ export function session(page, { part, rubric, progress = () => {}, deadline = In
     async watch() {
       await S.tick(500, 2);
       const next = await S.shot();
-      S.moving = pictureChange(S.cur.img, next.img) > T.pictureMoves;
+      S.moving = pictureChange(S.cur.img, next.img, T) > T.pictureMoves;
       S.cur = next;
       return S.moving;
     },

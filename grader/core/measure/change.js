@@ -12,13 +12,13 @@ export function silhouetteChange(a, b) {
 
 /**
  * The pixels where two pictures' objects differ (one mask has it, the other not), and how many of
- * them lie at the outline (farther than 0.9 of the radius from the centre): a finer or coarser
+ * them lie at the outline (farther than outlineRadius of the radius from the centre): a finer or coarser
  * mesh at a high level moves only a few outline pixels, too few to change the area or roundness.
  */
-export function outlineFlips(a, b) {
+export function outlineFlips(a, b, T) {
   if (!a || !b || a.blank || b.blank || a.width !== b.width || a.height !== b.height) return null;
   let flips = 0, atOutline = 0;
-  const w = a.width, r = 0.9 * Math.min(a.radius, b.radius);
+  const w = a.width, r = T.outlineRadius * Math.min(a.radius, b.radius);
   for (let p = 0; p < a.mask.length; p++) {
     if (a.mask[p] === b.mask[p]) continue;
     flips++;
@@ -44,12 +44,12 @@ export function shadingChange(imgA, anA, imgB, anB, maxRho = 0.8) {
   return n ? Math.sqrt(sum / n) : null;
 }
 
-/** Whether two pictures differ anywhere (more than rounding). */
-export function pictureChange(a, b) {
+/** The share of pixels where two pictures differ by more than rounding (pixelChange, summed over the channels of 0–255). */
+export function pictureChange(a, b, T) {
   if (!a || !b || a.width !== b.width || a.height !== b.height) return 1;
   let diff = 0;
   for (let o = 0; o < a.data.length; o += 4) {
-    if (Math.abs(a.data[o] - b.data[o]) + Math.abs(a.data[o + 1] - b.data[o + 1]) + Math.abs(a.data[o + 2] - b.data[o + 2]) > 6) diff++;
+    if (Math.abs(a.data[o] - b.data[o]) + Math.abs(a.data[o + 1] - b.data[o + 1]) + Math.abs(a.data[o + 2] - b.data[o + 2]) > T.pixelChange) diff++;
   }
   return diff / (a.width * a.height);
 }

@@ -58,14 +58,14 @@ function fitTwoSided(Fall, F, use, l) {
  * (over the pixels fitted), the light direction, and the highlight those bright pixels make.
  */
 export function diffuseFit(pts, T) {
-  if (pts.length < 20) return null;
+  if (pts.length < T.minFitSamples) return null;
   for (const s of pts) s.y = luminance(s.c);
   const meanY = pts.reduce((a, s) => a + s.y, 0) / pts.length;
   const sst = pts.reduce((a, s) => a + (s.y - meanY) ** 2, 0);
   // a pixel clipped at white (a channel at 1) says only "at least this bright": left out of the fit
   // while enough are left (a washed-out material), kept for the highlight above it
   const unclipped = Uint8Array.from(pts, (s) => !s.clipped && Math.max(...s.c) < T.clippedLevel);
-  let use = unclipped.reduce((a, v) => a + v, 0) >= Math.max(20, 0.3 * pts.length) ? unclipped : new Uint8Array(pts.length).fill(1);
+  let use = unclipped.reduce((a, v) => a + v, 0) >= Math.max(T.minFitSamples, T.minUnclippedShare * pts.length) ? unclipped : new Uint8Array(pts.length).fill(1);
   const use0 = use;
   let best = null, sseAll = null, F = null;
   for (let pass = 0; pass < 2; pass++) {

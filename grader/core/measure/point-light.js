@@ -12,12 +12,12 @@ import { lineFit } from './linear.js';
  * with g = 1/‖p_ℓ − x‖² (fall-off) or g = 1 (none). Both models hold a directional light (d → ∞),
  * so a far or directional light fits both alike: only a near light tells them apart. Pixels above
  * both fits (a highlight) and clipped ones are left out. Returns the best of each model. `T`: the
- * rubric's thresholds, with `around` (a direction: only light directions within 60° of it are tried) or none.
+ * rubric's thresholds, with `around` (a direction: only light directions within the cone whose cosine is pointLightConeCosine, 60°, are tried) or none.
  */
 // eslint-disable-next-line max-lines-per-function -- over 80 lines: still to split into named parts (issue 40)
 export function pointLightFit(pts, T) {
   const use0 = pts.map((s) => Math.max(...s.c) < 0.985);
-  if (use0.filter(Boolean).length < 50) return null;
+  if (use0.filter(Boolean).length < T.minModelSamples) return null;
   for (const s of pts) s.y = luminance(s.c);
   const DIST = [1.25, 1.5, 1.75, 2, 2.5, 3, 4, 5, 7, 10, 20, 1e4];
   // the samples as flat arrays, read by every fit below
@@ -91,7 +91,7 @@ export function pointLightFit(pts, T) {
   let use = use0;
   let none = null, inv = null;
   const around = T.around || null;
-  const dirs = DIRS.filter((l) => !around || l[0] * around[0] + l[1] * around[1] + l[2] * around[2] > 0.5);
+  const dirs = DIRS.filter((l) => !around || l[0] * around[0] + l[1] * around[1] + l[2] * around[2] > T.pointLightConeCosine);
   for (let pass = 0; pass < 2; pass++) {
     const coarse = grid(use, dirs);
     none = search(use, false, coarse.none);

@@ -12,7 +12,7 @@ import { leastSquares, symmetricEigenvalues3 } from './linear.js';
 const dot = (a, b) => a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
 const cross = (a, b) => [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]];
 const det = (A) => dot(A[0], cross(A[1], A[2]));
-const clipped = (s, T) => Math.min(...s.c) <= 0.01 || Math.max(...s.c) >= T.clippedLevel;
+const clipped = (s, T) => Math.min(...s.c) <= T.blackLevel || Math.max(...s.c) >= T.clippedLevel;
 
 /**
  * The normal colouring's turn R (3×3, rows) and share α from the channels' differences from
@@ -81,7 +81,7 @@ function channelsR2(use, lit, turned, { alpha = null, times = false } = {}) {
  */
 export function addedTintFit(pts, T) {
   const use0 = pts.filter((s) => !clipped(s, T));
-  if (use0.length < 50) return null;
+  if (use0.length < T.minModelSamples) return null;
   const nt = normalTurn(use0);
   if (!nt) return null;
   const { R } = nt;
@@ -94,7 +94,7 @@ export function addedTintFit(pts, T) {
     const l = fit.light, f = fit;
     lit = (n) => Math.max(0, dot(n, l));
     use = pts.filter((s, i) => !rest[i].clipped && rest[i].y - (f.ambient + f.diffuse * lit(s.n)) < T.highlightFitMargin);
-    if (use.length < 20) return null;
+    if (use.length < T.minFitSamples) return null;
     const { x } = channelsR2(use, lit, turned);
     if (!x) return null;
     alpha = x[6];

@@ -11,8 +11,8 @@ import { highlightSeen } from './highlight.js';
 import { leastSquares, solveNormal, symmetricEigenvalues3 } from './linear.js';
 import { addedTintFit, addedClearly } from './tint-added.js';
 
-// a pixel clipped at white (a channel at clippedLevel) or nearly black says little of its hue
-const usable = (s, T) => Math.max(...s.c) < T.clippedLevel && s.c[0] + s.c[1] + s.c[2] > 0.15;
+// a pixel clipped at white (a channel at clippedLevel) or nearly black (its channels' sum at darkSum) says little of its hue
+const usable = (s, T) => Math.max(...s.c) < T.clippedLevel && s.c[0] + s.c[1] + s.c[2] > T.darkSum;
 
 /**
  * Does the hue follow the normal? Each channel's share of the brightness (c_k / Σc) fitted as an
@@ -25,7 +25,7 @@ const usable = (s, T) => Math.max(...s.c) < T.clippedLevel && s.c[0] + s.c[1] + 
  */
 export function hueByNormal(pts, T) {
   const use = pts.filter((s) => usable(s, T));
-  if (use.length < 50) return null;
+  if (use.length < T.minModelSamples) return null;
   const rows = use.map((s) => [1, s.n[0], s.n[1], s.n[2]]);
   let sse = 0, sst = 0;
   const slopes = [];
@@ -103,9 +103,9 @@ export function detintedFit(pts, T, plain = diffuseFit(pts, T)) {
     if (!fit) return null;
     const L = (n) => fit.ambient + fit.diffuse * Math.max(0, n[0] * fit.light[0] + n[1] * fit.light[1] + n[2] * fit.light[2]);
     // the pixels the lighting fits (no highlight, nothing clipped, not black)
-    const use = pts.filter((s) => usable(s, T) && L(s.n) >= 0.05 && luminance(s.c) - L(s.n) * A(s.n) <= T.highlightFitMargin)
+    const use = pts.filter((s) => usable(s, T) && L(s.n) >= T.tintLitLevel && luminance(s.c) - L(s.n) * A(s.n) <= T.highlightFitMargin)
       .map((s) => ({ n: s.n, y: luminance(s.c) }));
-    if (use.length < 20) break;
+    if (use.length < T.minFitSamples) break;
     q = albedoAndLighting(use, fit.light, q, fit.ambient, fit.diffuse, T.tintIterations);
   }
   const fit = fitWith(albedo());
