@@ -13,8 +13,6 @@ import { tamperScript } from '../browser/tamper.js';
 import { FROZEN, frameClockScript } from '../browser/clock.js';
 import { serveSubmission, urlOf } from './serve-submission.js';
 
-// the time the page sees: frozen, moving only when the grader lets frames run
-
 /**
  * Opens the parts a worker grades, one after another, in one browser context and page: each part
  * is a new document at an origin of its own (`http://p<n>.<host>`: its storage apart from the
@@ -98,9 +96,10 @@ export function partOpener(browser, host) {
   };
 }
 
-/** A PNG (bytes) as { width, height, data }. */
-const decode = (bytes) => {
-  const { width, height, data } = PNG.sync.read(Buffer.from(bytes));
+/** A PNG (bytes, or a data: URL as the page's toDataURL gives it) as { width, height, data }. */
+const decode = (png) => {
+  const bytes = typeof png === 'string' ? Buffer.from(png.slice(png.indexOf(',') + 1), 'base64') : Buffer.from(png);
+  const { width, height, data } = PNG.sync.read(bytes);
   return { width, height, data: new Uint8Array(data.buffer, data.byteOffset, data.length) };
 };
 
@@ -124,7 +123,7 @@ async function shownChannels(page) {
   if (x1 - x0 < box.width / 2 || y1 - y0 < box.height / 2) return { why: 'the canvas is mostly out of view' };
   const clip = { x: x0, y: y0, width: x1 - x0, height: y1 - y0 };
   const png = await page.screenshot({ clip, animations: 'disabled', caret: 'hide', timeout: 10_000 });
-  return { raw: decode(Buffer.from(r.png.slice(r.png.indexOf(',') + 1), 'base64')), shown: decode(png), box, clip };
+  return { raw: decode(r.png), shown: decode(png), box, clip };
 }
 
 /**
@@ -144,8 +143,8 @@ export function pageDriver(page, log) {
         return window.__grade.pixels('png');
       });
       if (!r) return null;
-      const { data } = PNG.sync.read(Buffer.from(r.png.slice(r.png.indexOf(',') + 1), 'base64'));
-      return { width: r.width, height: r.height, api: r.api, data: new Uint8Array(data.buffer, data.byteOffset, data.length) };
+      const { data } = decode(r.png);
+      return { width: r.width, height: r.height, api: r.api, data };
     },
     controls: () => page.evaluate(() => window.__grade.controls()),
     /** Clicks a control as a user would (window.__grade.click: the check page clicks the same way); { ok, why }. */
@@ -167,11 +166,11 @@ export function pageDriver(page, log) {
     /** The grader's experiment: WebGL draws with back-face culling off (true) or as the page set it (false). */
     setNoCull: (on) => page.evaluate((v) => { window.__grade.noCull = v; }, on),
     sources: () => page.evaluate(() => ({ glsl: window.__grade.glsl, wgsl: window.__grade.wgsl })),
-    /** The geometry of the last frame drawn, summed up (grader/browser/geometry.js): triangles, winding, closed, per-face attributes. */
-    /** What the page last sent for its shaders, a digest a key (grader/browser/sent.js): uniforms, constant attributes, vertex buffers. */
     /** The grader's hooks the page replaced (grader/browser/tamper.js), by name. */
     tampered: () => page.evaluate(() => (window.__tamper ? window.__tamper.read() : [])),
+    /** What the page last sent for its shaders, a digest a key (grader/browser/sent.js): uniforms, constant attributes, vertex buffers. */
     sent: () => page.evaluate(() => (window.__sent ? window.__sent.read() : null)),
+    /** The geometry of the last frame drawn, summed up (grader/browser/geometry.js): triangles, winding, closed, per-face attributes. */
     geometry: (limits) => page.evaluate((l) => (window.__geometry ? window.__geometry.read(l) : { why: 'the geometry was not recorded' }), limits),
     errors: () => log.errors,
   };

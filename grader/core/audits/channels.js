@@ -2,18 +2,14 @@
 // is read back by the page (the grader's own functions, kept from before the page ran) and taken
 // as the browser shows it (a screenshot from outside the page), and the two must agree.
 
-/** The first frame's or the last picture's two channels differed beyond the engine's rounding, or null. */
-function differed(facts, T) {
-  return (facts.shown || []).filter((d) => d.compared && d.share > T.shownDifferShare);
-}
-
 /**
  * Says review where the channels differ (the browser's picture shown to the teacher); returns true
  * when they differed at the first frame, where a read-back that shows nothing is then no reason to
  * fail the part.
  */
 export function auditShown({ facts, T, say, imagesShown }) {
-  const off = differed(facts, T);
+  // the comparisons (the first frame's, the last picture's) that differ beyond the engine's rounding
+  const off = (facts.shown || []).filter((d) => d.compared && d.share > T.shownDifferShare);
   for (const d of off) {
     const when = d.at === 'first' ? 'at the first frame' : 'at the end';
     say('review', `what the page reads back differs from what the browser shows, ${when}: ${Math.round(100 * d.share)}% of the canvas's opaque pixels in view (another canvas or an element laid over it, or a CSS filter on it?); the browser's picture is shown: a teacher looks`);
