@@ -97,3 +97,22 @@ export function tree(root) {
 
 /** A hand-in's files as zip entries, under `prefix`. */
 export const entriesOf = (root, prefix = '') => Object.entries(tree(root)).map(([rel, data]) => ({ name: prefix + rel, data: new Uint8Array(data) }));
+
+/** A built download's ids for its student number `k`: the user id and the submission id (Canvas: the file's id). */
+export const idsOf = (k) => ({ uid: String(640600 + k), sid: String(39700 + k) });
+
+/** Canvas's name for a student: the sortable name ("Last, First") with all but word characters taken out, lower-cased (canvas-lms lib/content_zipper.rb). */
+export const lastFirst = (name) => name.split(' ').reverse().join('').toLowerCase().replace(/[^\p{L}\p{N}_]/gu, '');
+
+/**
+ * Where `site`'s download puts `file` of student `s` ({ name, k, late }): Brightspace's folder
+ * "<submission id>-<user id> - <name> - <when>/", Canvas's file "<lastfirst>[_late]_<user id>_<file
+ * id>_<file>", Moodle's folder "<name>_<participant id>_assignsubmission_file/". `sid` gives
+ * another submission id (an earlier hand-in), `when` another time.
+ */
+export function siteName(site, s, file, { sid = idsOf(s.k).sid, when = 'Oct 10, 2025 1022 AM' } = {}) {
+  const { uid } = idsOf(s.k);
+  if (site === 'brightspace') return `${sid}-${uid} - ${s.name} - ${when}/${file}`;
+  if (site === 'canvas') return `${lastFirst(s.name)}${s.late ? '_late' : ''}_${uid}_${sid}_${file}`;
+  return `${s.name}_${uid}_assignsubmission_file/${file}`;
+}

@@ -13,7 +13,7 @@ import { fileURLToPath } from 'node:url';
 import { intake, readIntake } from '../../grader/node/intake/intake.js';
 import { brightspaceTime, detectSite, dueTime, groupBySite, lateOf } from '../../grader/node/intake/formats.js';
 import { decodeName, safeSegments } from '../../grader/node/intake/names.js';
-import { makeZip, cp850, tree, entriesOf } from './downloads.js';
+import { makeZip, cp850, tree, entriesOf, idsOf, lastFirst, siteName } from './downloads.js';
 
 const here = path.dirname(fileURLToPath(import.meta.url));
 const HANDINS = process.env.HANDINS_DIR || path.resolve(here, '../../../shared/handins');
@@ -49,24 +49,14 @@ const HOSTILE = [
 /** A download of `site` in `dir`: the real students and the hostile ones, as `site` names them. */
 function buildDownload(site, dir) {
   const files = [];
-  const all = [...students.map((n, k) => ({ name: `${n} Student`, zip: () => handinZip(n, k), real: n, k })), ...HOSTILE.map(([name, zip], k) => ({ name, zip, k: 100 + k }))];
+  const all = [...students.map((n, k) => ({ name: `${n} Student`, zip: () => handinZip(n, k), real: n, k, late: k === 2 })), ...HOSTILE.map(([name, zip], k) => ({ name, zip, k: 100 + k }))];
   for (const s of all) {
-    const uid = String(640600 + s.k), sid = String(39700 + s.k);
-    if (site === 'brightspace') {
-      const folder = `${sid}-${uid} - ${s.name} - Oct 10, 2025 1022 AM`;
-      if (s.k === 3) files.push(...entriesOf(path.join(HANDINS, s.real), `${folder}/`)); // loose files
-      else files.push({ name: `${folder}/handin.zip`, data: s.zip() });
-      // the first student handed in twice: an earlier, wrong hand-in the day before
-      if (s.k === 0) files.push({ name: `${Number(sid) - 50}-${uid} - ${s.name} - Oct 9, 2025 958 PM/old.zip`, data: makeZip([{ name: 'wrong.html', data: 'old' }]) });
-    } else if (site === 'canvas') {
-      const lastfirst = s.name.toLowerCase().replace(/[^a-zæøå]/g, '');
-      files.push({ name: `${lastfirst}${s.k === 2 ? '_late' : ''}_${uid}_${sid}_handin.zip`, data: s.zip() });
-    } else {
-      const folder = `${s.name}_${uid}_assignsubmission_file`;
-      if (s.k === 3) files.push(...entriesOf(path.join(HANDINS, s.real), `${folder}/`));
-      else files.push({ name: `${folder}/handin.zip`, data: s.zip() });
-      files.push({ name: `${s.name}_${uid}_assignsubmission_onlinetext/onlinetext.html`, data: '<p>text</p>' });
-    }
+    // the fourth student's files loose, where the site keeps folders
+    if (s.k === 3 && site !== 'canvas') files.push(...entriesOf(path.join(HANDINS, s.real), siteName(site, s, '')));
+    else files.push({ name: siteName(site, s, 'handin.zip'), data: s.zip() });
+    // the first student handed in twice: an earlier, wrong hand-in the day before (Brightspace keeps both)
+    if (site === 'brightspace' && s.k === 0) files.push({ name: siteName(site, s, 'old.zip', { sid: String(Number(idsOf(s.k).sid) - 50), when: 'Oct 9, 2025 958 PM' }), data: makeZip([{ name: 'wrong.html', data: 'old' }]) });
+    if (site === 'moodle') files.push({ name: `${s.name}_${idsOf(s.k).uid}_assignsubmission_onlinetext/onlinetext.html`, data: '<p>text</p>' });
   }
   if (site === 'brightspace') files.push({ name: 'index.html', data: '<table>the listing</table>' });
   files.push({ name: '.git/config', data: '[core]' }, { name: '.DS_Store', data: 'junk' }); // nobody's
@@ -91,21 +81,21 @@ for (const site of ['brightspace', 'canvas', 'moodle']) {
       assert.equal(got.site, site);
       assert.deepEqual(readIntake(out).site, site, 'intake.json says the site');
       assert.equal(got.submissions.length, all.length, got.submissions.map((s) => s.name).join(', '));
-      const byName = new Map(got.submissions.map((s) => [s.identity.name.toLowerCase().replace(/[^a-zæøå]/g, ''), s]));
-      const find = (s) => byName.get(s.name.toLowerCase().replace(/[^a-zæøå]/g, ''));
+      const byUser = new Map(got.submissions.map((s) => [s.identity.userId, s]));
+      const find = (s) => byUser.get(idsOf(s.k).uid);
       for (const s of all) {
         const sub = find(s);
         assert.ok(sub, `${s.name} is found`);
-        assert.equal(sub.identity.userId, String(640600 + s.k), `${s.name}'s user id`);
-        if (site === 'brightspace') assert.equal(sub.identity.submissionId, String(39700 + s.k), `${s.name}'s submission id`);
-        if (site === 'canvas') assert.deepEqual(sub.identity.fileIds, [String(39700 + s.k)], `${s.name}'s file id`);
+        assert.equal(sub.identity.name, site === 'canvas' ? lastFirst(s.name) : s.name, `${s.name}'s name, as the site gives it`);
+        if (site === 'brightspace') assert.equal(sub.identity.submissionId, idsOf(s.k).sid, `${s.name}'s submission id`);
+        if (site === 'canvas') assert.deepEqual(sub.identity.fileIds, [idsOf(s.k).sid], `${s.name}'s file id`);
         if (s.real) {
           assert.equal(sub.error, null, `${s.name}: ${sub.error}`);
           assert.deepEqual(tree(sub.root), tree(path.join(HANDINS, s.real)), `${s.name}'s unpacked tree is its folder, file for file`);
         }
       }
-      for (const [name, , want] of HOSTILE) {
-        const sub = find({ name });
+      for (const [k, [name, , want]] of HOSTILE.entries()) {
+        const sub = find({ k: 100 + k });
         if (want.error) assert.match(String(sub.error), want.error, name);
         else assert.equal(sub.error, null, `${name}: ${sub.error}`);
         if (want.note) assert.ok(sub.notes.some((n) => want.note.test(n)), `${name}: ${sub.notes.join(' | ')}`);
@@ -135,16 +125,16 @@ test('the download unpacked by the teacher (a folder) is read as the zip is', { 
     // Brightspace's folders, unpacked into "Assignment 4 Download ..." with the hand-ins loose
     const root = path.join(dir, 'Assignment 4 Download Oct 11, 2025 803 PM');
     for (const [k, n] of students.entries()) {
-      const folder = path.join(root, `${39700 + k}-${640600 + k} - ${n} Student - Oct 10, 2025 1022 AM`);
-      mkdirSync(folder, { recursive: true });
-      writeFileSync(path.join(folder, 'handin.zip'), handinZip(n, k));
+      const file = path.join(root, siteName('brightspace', { name: `${n} Student`, k }, 'handin.zip'));
+      mkdirSync(path.dirname(file), { recursive: true });
+      writeFileSync(file, handinZip(n, k));
     }
     const out = path.join(dir, 'out');
     mkdirSync(out);
     const got = intake(dir, out, BOUNDS);
     assert.equal(got.site, 'brightspace');
     for (const [k, n] of students.entries()) {
-      const sub = got.submissions.find((s) => s.identity.userId === String(640600 + k));
+      const sub = got.submissions.find((s) => s.identity.userId === idsOf(k).uid);
       assert.deepEqual(tree(sub.root), tree(path.join(HANDINS, n)), n);
     }
   } finally {
