@@ -8,13 +8,17 @@ import { CheckInputError, entriesFromDrop, entriesFromInput, handInFrom, partsOf
 import { openSession, startHost, unsupported } from './host.js';
 import { checkPart, drawReference, frameScript } from './runner.js';
 import { handInSource, siteSource } from './serve.js';
-import { missedSlides, stepLink } from './slides.js';
+import { missedSlides, findingsOfResult, stepLink } from './slides.js';
+import { AUDITS } from '../grader/core/audits/index.js';
 import { NOT_CHECKED, NO_WEBGPU_HERE } from './not-checked.js';
 import { PARTS } from '../grader/core/part-names.js';
+import { withFindings } from '../grader/core/part-result.js';
+import { missingPage } from '../grader/core/audits/page.js';
 
 const $ = (id) => document.getElementById(id);
-const el = (tag, props = {}, ...children) => {
+const el = (tag, { dataset, ...props } = {}, ...children) => {
   const e = Object.assign(document.createElement(tag), props);
+  if (dataset) Object.assign(e.dataset, dataset);
   e.append(...children.filter((c) => c !== null && c !== undefined));
   return e;
 };
@@ -48,7 +52,8 @@ const CAPTIONS = { first: 'first frame', coarse: 'a coarse level', judged: 'judg
 const BADGES = { [NOT_CHECKED]: 'not checked here' };
 
 function card(r, index, total, file) {
-  const slides = r.verdict === 'pass' || r.verdict === NOT_CHECKED ? [] : missedSlides(r.reasons || []);
+  const findings = findingsOfResult(r);
+  const slides = r.verdict === 'pass' || r.verdict === NOT_CHECKED ? [] : missedSlides(findings);
   const list = (title, items) => (items && items.length ? el('details', {}, el('summary', { textContent: `${title} (${items.length})` }),
     el('ul', {}, ...items.map((t) => el('li', { textContent: t })))) : null);
   const images = Object.entries(r.images || {}).filter(([k, im]) => CAPTIONS[k] && im && im.data);
@@ -56,8 +61,10 @@ function card(r, index, total, file) {
   return el('article', { className: `card ${kind}`, id: `card-${r.part}` },
     el('h2', {}, el('span', { textContent: r.part }), el('span', { className: `badge ${kind}`, textContent: BADGES[r.verdict] || r.verdict }),
       el('small', { textContent: `${file || 'not found'}${r.api ? ` · ${r.api}` : ''}${r.seconds ? ` · ${r.seconds.toFixed(0)} s` : ''} · part ${index + 1} of ${total}` })),
-    el('ul', { className: 'reasons' }, ...(r.reasons || []).map((t) => el('li', { textContent: t }))),
-    ...slides.map((s) => el('p', { className: 'slide' }, el('b', { textContent: 'The slide asks: ' }), `${s.slide} `,
+    // each reason with its audit's id (the grader's README lists them, with the sentence each checks)
+    el('ul', { className: 'reasons' }, ...findings.map((f) => el('li', { dataset: { audit: f.id || '' } }, `${f.reason} `,
+      f.id ? el('code', { className: 'audit', textContent: f.id, title: AUDITS[f.id] ? AUDITS[f.id].title : '' }) : null))),
+    ...slides.map((s) => el('p', { className: 'slide', dataset: { audit: s.id } }, el('b', { textContent: 'The slide asks: ' }), `${s.slide} `,
       s.note ? el('i', { textContent: `(${s.note}) ` }) : null, el('a', { href: stepLink(r.part), textContent: `See our ${r.part}` }))),
     images.length ? el('div', { className: 'pictures' }, ...images.map(([k, im]) => el('figure', {},
       el('img', { src: pictureURL(im), alt: `${r.part}: ${CAPTIONS[k]}`, width: im.width, height: im.height }), el('figcaption', { textContent: CAPTIONS[k] })))) : null,
@@ -96,7 +103,7 @@ async function run(gather) {
         const where = `part ${k + 1} of ${PARTS.length}: ${part}${file ? ` (${file})` : ''}`;
         $('progress').textContent = where;
         const r = file ? await checkPart({ part, page: file, session, rubric, stage: $('stage'), webgpuHere, progress: (what) => { $('progress').textContent = `${where}: ${what}`; } })
-          : { part, verdict: 'fail', reasons: [`no page for ${part} was found in the submission`], api: null };
+          : withFindings({ part, verdict: 'fail', api: null }, [missingPage(part)]);
         // said once, at the top: the browser, not the student's work
         if (r.notChecked === 'webgpu' && !results.some((x) => x.notChecked === 'webgpu')) say(NO_WEBGPU_HERE, 'notice');
         if (file && REFERENCE && r.verdict !== NOT_CHECKED) {
@@ -116,7 +123,7 @@ async function run(gather) {
     const passes = results.filter((r) => r.verdict === 'pass').length, unchecked = results.filter((r) => r.verdict === NOT_CHECKED).length;
     $('progress').textContent = `done in ${((performance.now() - started) / 1000).toFixed(0)} s: ${passes} of ${PARTS.length} parts pass` +
       `${unchecked ? `, ${unchecked} not checked here` : ''}`;
-    window.check = { done: true, parts: results.map(({ part, verdict, reasons, api }) => ({ part, verdict, reasons, api })) };
+    window.check = { done: true, parts: results.map(({ part, verdict, reasons, findings, api }) => ({ part, verdict, reasons, findings, api })) };
   } catch (err) {
     $('progress').textContent = '';
     say(err instanceof CheckInputError ? err.message : `The check stopped: ${err.message}. Reload the page and try again; if it happens again, tell your teacher.`);

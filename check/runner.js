@@ -17,6 +17,7 @@ import { tamperScript } from '../grader/browser/tamper.js';
 import { webgpuCaptureScript } from '../grader/browser/webgpu-capture.js';
 import { gradePart } from '../grader/core/grade-part.js';
 import { judgement, notJudgedHere } from '../grader/core/part-result.js';
+import { timedOut, notOpened, graderTrouble } from '../grader/core/audits/page.js';
 import { referenceQuery } from '../grader/core/reference-state.js';
 import { deadlineOf } from '../grader/core/deadline.js';
 import { NOT_CHECKED, notCheckedHere } from './not-checked.js';
@@ -59,8 +60,11 @@ async function load(stage, src, seconds) {
   return { frame, how };
 }
 
-/** The grader's words for a part stopped by the time bound (as harness.js's). */
-const timedOut = (rubric, why) => `the page did not finish within the rubric's bound of ${rubric.timeoutSeconds} s (it never returns, or is far too slow)${why ? `: ${why}` : ''}`;
+/** A part stopped by the time bound fails with the grader's reason (`why`: what stopped it). */
+const stopped = (rubric, why) => {
+  const f = timedOut(rubric, why);
+  return { fail: f.reason, failId: f.id };
+};
 
 /**
  * Checks one part. Returns what report.json says of it ({ part, verdict, reasons, api, actions,
@@ -82,8 +86,8 @@ export async function checkPart({ part, page, session, rubric, stage, progress =
     if (how === 'load' && !fp.hung() && !frame.contentWindow.__checkWatch) {
       broken.push('the self-check\'s own script did not run in the page');
     } else if (how !== 'load' || fp.hung()) {
-      const notLoaded = `the page could not be opened: it did not finish loading in ${loadSeconds} s (a script that never returns?)`;
-      graded.fail = fp.hung() ? `${notLoaded}: ${fp.hung()}` : notLoaded;
+      const notLoaded = `it did not finish loading in ${loadSeconds} s (a script that never returns?)`;
+      Object.assign(graded, notOpened(fp.hung() ? `${notLoaded}: ${fp.hung()}` : notLoaded));
     } else {
       await session.idle(500, 5000);
       frame.contentWindow.__checkWatch.setLoopSeconds(rubric.timeoutSeconds);
@@ -96,15 +100,15 @@ export async function checkPart({ part, page, session, rubric, stage, progress =
       grading.catch(() => {}); // after the time bound the frame is gone, and so is the grading
       try {
         const r = await Promise.race([grading, bound]);
-        if (r === 'timeout') graded.fail = timedOut(rubric);
+        if (r === 'timeout') Object.assign(graded, stopped(rubric));
         else graded = r;
       } catch (err) {
         // the grader's own trouble with this page: never a pass on it, a teacher looks (as harness.js)
-        if (!fp.hung()) graded.checks = [{ level: 'review', reason: `the grader could not finish on this page: ${err.message.split('\n')[0]}` }];
+        if (!fp.hung()) graded.checks = [graderTrouble(err)];
       } finally {
         clearTimeout(timer);
       }
-      if (fp.hung()) graded.fail = timedOut(rubric, fp.hung());
+      if (fp.hung()) Object.assign(graded, stopped(rubric, fp.hung()));
     }
   } finally {
     frame.remove();
@@ -119,7 +123,7 @@ export async function checkPart({ part, page, session, rubric, stage, progress =
   // what the grader would have said stays below, for the student to read, but is no verdict
   const usedWebGPU = session.log.webgpu || graded.api === 'webgpu' || errors.some((e) => /requestAdapter|navigator\.gpu|\bgpu is (undefined|null)/.test(e));
   const not = notCheckedHere({ webgpuHere, usedWebGPU, api: graded.api, broken: [...broken, ...fp.broken()] });
-  if (not) Object.assign(notJudgedHere(result, NOT_CHECKED, not.reason, (r) => `(the check saw: ${r})`), { notChecked: not.why });
+  if (not) Object.assign(notJudgedHere(result, NOT_CHECKED, not.reason, (r) => `(the check saw: ${r})`, 'not-checked'), { notChecked: not.why });
   return result;
 }
 

@@ -21,6 +21,6 @@ export function judged(artifact, rubric) {
   const a = auditPart(artifact, rubric);
   const shown = {};
   for (const [k, name] of Object.entries(a.shown)) if (images[name]) shown[k] = images[name];
-  return { artifact, fail: a.fail, checks: a.checks, numbers: a.numbers, tooSlow: a.tooSlow, tooHeavy: a.tooHeavy, notGraded: a.notGraded || null, images: shown, shown: a.shown,
+  return { artifact, fail: a.fail, failId: a.failId, checks: a.checks, numbers: a.numbers, tooSlow: a.tooSlow, tooHeavy: a.tooHeavy, notGraded: a.notGraded || null, notGradedId: a.notGradedId, images: shown, shown: a.shown,
     actions: facts.actions, controls: facts.roles, api: facts.api, canvas: facts.canvas };
 }

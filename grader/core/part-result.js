@@ -5,19 +5,28 @@
 // cannot drift apart. A part not judged here (the browser could not run it, or it was too slow or
 // too heavy) gets no verdict of pass, review or fail: the grader's NOT_GRADED, the check page's
 // NOT_CHECKED (check/not-checked.js), one idea in each place's own word.
-import { verdictOf, reasonsOf, NOT_GRADED } from './verdict.js';
+import { verdictOf, findingsOf, NOT_GRADED } from './verdict.js';
 
-/** The verdict and its reasons from a part's judging ({ fail, checks }) and the page's errors. */
+/**
+ * `result`'s reasons set from `findings` ({ id, level, reason }): `reasons` their words (what a
+ * teacher reads, labels and comparisons match), `findings` each with its audit's id and level (what
+ * the check page, the feedback pages and grades.csv go by).
+ */
+export const withFindings = (result, findings) => Object.assign(result, { reasons: findings.map((f) => f.reason), findings });
+
+/** The verdict and its reasons from a part's judging ({ fail, failId, checks }) and the page's errors. */
 export function judgement(judged, errors = []) {
-  return {
-    verdict: verdictOf(judged.checks, judged.fail),
-    reasons: reasonsOf({ fail: judged.fail, checks: judged.checks, pageErrors: errors.filter((e) => /page error/.test(e)) }),
-  };
+  const findings = findingsOf({ fail: judged.fail, failId: judged.failId, checks: judged.checks, pageErrors: errors.filter((e) => /page error/.test(e)) });
+  return withFindings({ verdict: verdictOf(judged.checks, judged.fail) }, findings);
 }
 
-/** `result` given no verdict here: `verdict` (not pass, review nor fail), `reason` first, what was seen kept below in `seen`'s words. */
-export function notJudgedHere(result, verdict, reason, seen) {
-  return Object.assign(result, { verdict, reasons: [reason, ...result.reasons.map(seen)] });
+/**
+ * `result` given no verdict here: `verdict` (not pass, review nor fail), `reason` (said by the
+ * audit `id`) first, what was seen kept below in `seen`'s words (level 'seen': no verdict, no slide).
+ */
+export function notJudgedHere(result, verdict, reason, seen, id) {
+  const kept = (result.findings || []).map((f) => ({ id: f.id, level: 'seen', reason: seen(f.reason) }));
+  return withFindings(Object.assign(result, { verdict }), [{ id, level: verdict, reason }, ...kept]);
 }
 
 /**
@@ -32,7 +41,7 @@ export function applyAudit(result, judged, files = {}) {
   result.status = judged.fail ? 'failed' : judged.tooSlow ? slow : 'ok';
   if (judged.notGraded) {
     // the browser could not run it (WebGPU in Firefox ESR): no verdict; what was seen stays below
-    notJudgedHere(result, NOT_GRADED, judged.notGraded, (r) => `(seen here: ${r})`);
+    notJudgedHere(result, NOT_GRADED, judged.notGraded, (r) => `(seen here: ${r})`, judged.notGradedId || 'not-graded');
     result.status = judged.tooSlow ? slow : NOT_GRADED;
   }
   result.pass = result.verdict === 'pass';

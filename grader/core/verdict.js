@@ -15,14 +15,15 @@ export const tooSlowWords = (rubric, doing) => `too slow on this machine: the ru
 export const tooHeavyWords = (rubric, doing, work) => `too heavy to grade: the page's own work over the grading (${(work / 1e6).toFixed(0)} million vertices, draw calls at ${rubric.thresholds.drawCallWork} each) passed the rubric's budget of ${(rubric.thresholds.gatherWork / 1e6).toFixed(0)} million (gatherWork) while ${doing}; nothing was judged (what was done is listed under what the grader did; grade it with a larger gatherWork, or at a level the sphere needs)`;
 
 /**
- * A list of checks with the rubric's cost of a mistake: say('pass' | 'review' | 'fail' |
- * 'mistake', reason). A 'mistake' (the page draws but misses a point of the slide's step) costs
- * the rubric's mistakeVerdict: review by default (a careful reader calls such a part partial).
+ * A list of checks with the rubric's cost of a mistake: sayAs(id) gives the audit `id`'s
+ * say('pass' | 'review' | 'fail' | 'mistake', reason), each check { id, level, reason }. A
+ * 'mistake' (the page draws but misses a point of the slide's step) costs the rubric's
+ * mistakeVerdict: review by default (a careful reader calls such a part partial).
  */
 export function checkList(rubric) {
   const checks = [];
-  const say = (level, reason) => checks.push({ level: level === 'mistake' ? rubric.mistakeVerdict || 'review' : level, reason });
-  return { checks, say };
+  const sayAs = (id) => (level, reason) => checks.push({ id, level: level === 'mistake' ? rubric.mistakeVerdict || 'review' : level, reason });
+  return { checks, sayAs };
 }
 
 /** fail if anything failed (or the part could not be judged: `fail`), else review if any check asks for it, else pass. */
@@ -34,14 +35,20 @@ export function verdictOf(checks, fail) {
 }
 
 /**
- * The reasons in the order a teacher reads them: why it could not be judged, then FAIL: …,
- * REVIEW: …, then what passed; then page errors, which change no verdict. (How long a part took
- * is never a reason: it depends on the machine; the report shows it beside the part.)
+ * The reasons in the order a teacher reads them, each with its audit's id and its level ({ id,
+ * level, reason }): why it could not be judged (level fail, the audit `failId`), then FAIL: …,
+ * REVIEW: …, then what passed; then page errors (level note), which change no verdict. (How long
+ * a part took is never a reason: it depends on the machine; the report shows it beside the part.)
  */
-export function reasonsOf({ fail, checks = [], pageErrors = [] }) {
-  const reasons = [];
-  if (fail) reasons.push(fail);
-  for (const lvl of ['fail', 'review', 'pass']) for (const c of checks) if (c.level === lvl) reasons.push(lvl === 'pass' ? c.reason : `${lvl.toUpperCase()}: ${c.reason}`);
-  if (!fail && pageErrors.length) reasons.push(`the page reported errors: ${pageErrors[0]}`);
-  return reasons;
+export function findingsOf({ fail, failId, checks = [], pageErrors = [] }) {
+  const out = [];
+  if (fail) out.push({ id: failId, level: 'fail', reason: fail });
+  for (const lvl of ['fail', 'review', 'pass']) {
+    for (const c of checks) if (c.level === lvl) out.push({ id: c.id, level: lvl, reason: lvl === 'pass' ? c.reason : `${lvl.toUpperCase()}: ${c.reason}` });
+  }
+  if (!fail && pageErrors.length) out.push({ id: 'page-errors', level: 'note', reason: `the page reported errors: ${pageErrors[0]}` });
+  return out;
 }
+
+/** The reasons' words alone, in findingsOf's order. */
+export const reasonsOf = (judged) => findingsOf(judged).map((f) => f.reason);

@@ -4,6 +4,7 @@
 import { existsSync, readFileSync, readdirSync } from 'node:fs';
 import path from 'node:path';
 import { PARTS } from './parts.js';
+import { withFindings } from '../core/part-result.js';
 
 /** The students graded under `partsDir` (OUT/parts): [{ name, parts: [result, ...] }], parts in order. */
 export function readClass(partsDir) {
@@ -19,7 +20,7 @@ export function readClass(partsDir) {
   }
   for (const s of byName.values()) {
     for (const part of PARTS) {
-      if (!s.parts.some((p) => p.part === part)) s.parts.push({ name: s.name, part, status: 'not graded here', verdict: 'fail', reasons: ['not graded in this run'], api: null, actions: [], mismatch: null, rmse: null, pass: false, errors: [], blocked: [] });
+      if (!s.parts.some((p) => p.part === part)) s.parts.push({ ...withFindings({ name: s.name, part, status: 'not graded here', verdict: 'fail' }, [{ id: 'not-graded-in-run', level: 'fail', reason: 'not graded in this run' }]), api: null, actions: [], mismatch: null, rmse: null, pass: false, errors: [], blocked: [] });
     }
     s.parts.sort((a, b) => a.part.localeCompare(b.part));
   }

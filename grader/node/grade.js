@@ -9,6 +9,7 @@ import { PARTS, findParts } from './parts.js';
 import { linkedPart } from './linked-part.js';
 import { readLabels, agreementText } from './labels.js';
 import { writeReport } from './report.js';
+import { gradesCsv } from './grades-csv.js';
 import { partFiles } from './layout.js';
 import { mergeRubric } from '../core/rubric.js';
 import { CHROMIUM, CHROMIUM_HOW, CHROMIUM_INSTALL, CHROMIUM_MISSING } from './chromium.js';
@@ -252,10 +253,7 @@ async function reportClass(o, out, rubric, labels, submissions) {
   }
   const { rows, agreed } = writeReport(out, graded, labels, similar);
   if (o.batch) {
-    const csv = ['name,passes,' + PARTS.join(',') + ',' + PARTS.map((p) => `${p}_reasons`).join(',')]
-      .concat(rows.map((s) => [JSON.stringify(s.name), s.passes, ...PARTS.map((p) => s.parts.find((x) => x.part === p).verdict),
-        ...PARTS.map((p) => JSON.stringify((s.parts.find((x) => x.part === p).reasons || []).filter((r) => /^(FAIL|REVIEW)|nothing|timeout|not |no /i.test(r)).join('; ')))].join(','))).join('\n') + '\n';
-    writeFileSync(path.join(out, 'grades.csv'), csv);
+    writeFileSync(path.join(out, 'grades.csv'), gradesCsv(rows, PARTS));
   }
   for (const s of rows) {
     console.log(`${s.name}: ${s.passes} of ${PARTS.length} pass · ` + s.parts.map((p) => `${p.part} ${p.verdict}${p.api ? ` (${p.api})` : ''}`).join(', '));

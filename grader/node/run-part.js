@@ -10,8 +10,8 @@ import { PNG } from 'pngjs';
 import { compareImages } from './compare.js';
 import { writeArtifact, pngOf } from './artifacts.js';
 import { hrefOf } from './layout.js';
-import { applyAudit } from '../core/part-result.js';
-import { NOT_GRADED, tooSlowWords } from '../core/verdict.js';
+import { applyAudit, withFindings } from '../core/part-result.js';
+import { missingPage, timedOut, stoppedAtFirstFrame, tooSlow, linkedPage, notOpened, graderTrouble } from '../core/audits/page.js';
 import { deadlineOf } from '../core/deadline.js';
 import { FIRST_FRAME } from '../core/gather/index.js';
 import { gradePart, addTime } from '../core/grade-part.js';
@@ -33,18 +33,16 @@ export async function runPart({ item, plan, openers, browserVersion = null, more
     mkdirSync(path.dirname(item.resultFile), { recursive: true });
     writeFileSync(item.resultFile, JSON.stringify(result, null, 1));
   };
-  const result = { name: item.name, part: item.part, file: item.page, status: 'timeout', verdict: 'fail', api: null,
-    reasons: [`the page did not finish within the rubric's bound of ${rubric.timeoutSeconds} s (it never returns, or is far too slow)`], actions: [], controls: {},
-    numbers: {}, mismatch: null, rmse: null, pass: false, comparison: null, notes: [], errors: [], blocked: [], images: null,
-    ...(plan.browser && plan.browser !== 'chromium' ? { browser: plan.browser } : {}), ...(browserVersion ? { browserVersion } : {}) };
+  const result = withFindings({ name: item.name, part: item.part, file: item.page, status: 'timeout', verdict: 'fail', api: null }, [timedOut(rubric)]);
+  Object.assign(result, { actions: [], controls: {}, numbers: {}, mismatch: null, rmse: null, pass: false, comparison: null, notes: [], errors: [], blocked: [], images: null,
+    ...(plan.browser && plan.browser !== 'chromium' ? { browser: plan.browser } : {}), ...(browserVersion ? { browserVersion } : {}) });
   save(result); // what stays if the page never lets go: a timeout
   if (!item.page) {
-    Object.assign(result, { status: 'missing', reasons: [`no page for ${item.part} was found in the submission`] });
+    withFindings(Object.assign(result, { status: 'missing' }), [missingPage(item.part)]);
     return save(result);
   }
   if (item.linksTo) {
-    const { part, page } = item.linksTo;
-    Object.assign(result, { status: 'linked', verdict: 'review', reasons: [`REVIEW: the page for ${item.part} (${item.page}) has no canvas and no script of its own: it links to ${part}'s page (${page}), graded as ${part}; a part is not graded twice (does that page do ${item.part}'s step too? a teacher looks)`] });
+    withFindings(Object.assign(result, { status: 'linked', verdict: 'review' }), [linkedPage(item.part, item.page, item.linksTo)]);
     return save(result);
   }
   const started = Date.now();
@@ -58,18 +56,17 @@ export async function runPart({ item, plan, openers, browserVersion = null, more
     const t0 = Date.now();
     const opened = await openers.student.open({ root: item.root, rel: item.page, loadSeconds: rubric.loadSeconds, log: result });
     phase('open', t0);
-    if (opened.why) graded.fail = `the page could not be opened: ${opened.why}`;
+    if (opened.why) Object.assign(graded, notOpened(opened.why));
     else {
       // what has been done so far stays in the result if the time bound stops the part
       const deadline = deadlineOf(started, rubric);
       graded = await gradePart(opened.driver, { part: item.part, rubric, deadline, timing, progress: (what) => {
         // what stays if the time bound stops the part now: past its first frame the page draws, and
         // a page that draws is too slow here, not broken (the rubric's tooSlowVerdict)
-        if (what === FIRST_FRAME) result.reasons = [`the page did not finish within the rubric's bound of ${rubric.timeoutSeconds} s: stopped while ${what} (a frame that never returns?)`];
+        if (what === FIRST_FRAME) withFindings(result, [stoppedAtFirstFrame(rubric, what)]);
         else {
-          const why = tooSlowWords(rubric, what);
-          Object.assign(result, rubric.tooSlowVerdict === NOT_GRADED ? { verdict: NOT_GRADED, status: 'too slow', reasons: [`${NOT_GRADED}: ${why}`] }
-            : { verdict: rubric.tooSlowVerdict, status: 'too slow', reasons: [why] });
+          const slow = tooSlow(rubric, what);
+          withFindings(Object.assign(result, { verdict: slow.level, status: 'too slow' }), [slow]);
         }
         save(result);
       } });
@@ -84,7 +81,7 @@ export async function runPart({ item, plan, openers, browserVersion = null, more
   } catch (err) {
     if (over() || CLOSED.test(err.message)) throw err; // the time bound: stays 'timeout'
     // the grader's own trouble with this page: never a pass on it, a teacher looks
-    graded.checks = [{ level: 'review', reason: `the grader could not finish on this page: ${err.message.split('\n')[0]}` }];
+    graded.checks = [graderTrouble(err)];
     if (process.env.GRADE_DEBUG) console.error(err);
   } finally {
     const t0 = Date.now();

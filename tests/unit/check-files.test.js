@@ -50,32 +50,30 @@ test('the frame script goes first; every loop gets the guard, shaders and other 
   assert.equal(guardInlineScripts(html), `<script type="x-shader/x-vertex">for (int i = 0; i < 3; i++) {}</script><script>${STAND_IN}do {__checkLoop(); i++ } while (i < 3)</script>`);
 });
 
-test('a review or a fail names the slide sentence it misses', async () => {
+test('a review or a fail names the slide sentence its audit checks, found by the audit id', async () => {
   const { missedSlides } = await import('../../check/slides.js');
-  const slide = (reason) => missedSlides([reason]).map((m) => m.slide.split(' ').slice(0, 4).join(' '))[0];
-  assert.equal(slide('REVIEW: the colours are not 0.5·n + 0.5: 2c − 1 is not a unit vector'), 'Get the normal from');
-  assert.equal(slide('REVIEW: the orbit does not show in the shading: the light moves with the camera (light and normals in different spaces?)'), 'Add a tick function');
-  assert.equal(slide('REVIEW: 2 slider(s) update the picture only on the change event, not while sliding'), 'Use the input event');
-  assert.equal(slide('drew nothing: the canvas is one colour, no draw call'), 'Draw a solid sphere');
-  assert.equal(slide('REVIEW: the highlight follows the triangles at a coarse level (RMS 0.043 from the finest): shading is per vertex, not per fragment'), 'We implement it by');
-  assert.equal(slide('REVIEW: nothing found that makes the sphere finer: 2 controls tried'), 'Insert buttons for subdividing');
-  assert.equal(slide('REVIEW: back faces show through the front (normals do not vary smoothly): depth test or culling missing'), 'Now, enable the depth');
-  assert.equal(slide('REVIEW: no specular highlight: nothing brighter than the diffuse fit'), 'Update your reflection model');
-  assert.equal(slide('REVIEW: not in perspective view (the slide: "Draw a solid sphere in perspective view"): the inside of the far side, whose normals reach 90°'), 'Draw a solid sphere');
-  assert.equal(slide('REVIEW: shows the normal colouring of WP04P1, not the lighting: its colours decode to unit normals 2c − 1'), 'Given other parameters k_d,');
-  // a highlight's place names the light and the eye: its sentence is ω_o's, not the orbit's
-  assert.equal(slide('REVIEW: the highlight sits at the light, not halfway between the light and the viewer: 3° from the light, 25° from the halfway normal: is w_o the direction from the surface to the eye, in the same space as n and w_i?'), 'ω_o is the direction');
-  assert.equal(slide('REVIEW: the highlight is 31° from where the model puts it (at the normal halfway between the light, fitted at 0.1, 0.2, 0.9, and the viewer): is w_o the direction from the surface to the eye?'), 'ω_o is the direction');
-  // a hole's reason may name the vertex shader, a link page's 'links to': neither is a shader that does not compile
-  assert.equal(slide("REVIEW: a hole shows from some side: looked at 25 positions along the orbit (the mesh could not be read from what the page sent (the vertex shader's position attribute was not found))"), 'Draw a solid sphere');
-  assert.equal(slide("REVIEW: the page for WP04P5 (uge4/del5/index.html) has no canvas and no script of its own: it links to WP04P4's page"), 'Draw a solid sphere');
-  assert.equal(slide('FAIL: program does not link: ERROR: missing main()'), 'Upload parameters (k_d, L_e,');
-  assert.equal(slide('FAIL: WGSL does not compile (line 3): expected ;'), 'Upload parameters (k_d, L_e,');
-  // a part not graded here (too slow, too heavy) was not judged: no sentence, whatever it was doing
-  assert.deepEqual(missedSlides(["not graded here: too slow on this machine: the rubric's bound of 90 s ran out while sampling the orbit; nothing was judged"]), []);
-  assert.deepEqual(missedSlides(['a round closed sphere (radius 80 px)']), []); // what passed names nothing
-  // a hostile page's reasons are about the page, not the step ('a teacher looks' is no k_s slider)
-  assert.deepEqual(missedSlides(["REVIEW: what the page reads back differs from what the browser shows, at the first frame: 56% of the canvas's opaque pixels in view (another canvas or an element laid over it, or a CSS filter on it?); the browser's picture is shown: a teacher looks"]), []);
-  assert.deepEqual(missedSlides(["REVIEW: the page replaced or probed what the grader reads it through: toDataURL (a hand-in must not change the browser's own functions or the grader's, nor draw otherwise under a test driver): what it showed may not be what the grader saw, a teacher looks"]), []);
-  assert.equal(slide('REVIEW: raising ks showed no highlight'), 'Upload remaining parameters for');
+  const { AUDITS } = await import('../../grader/core/audits/index.js');
+  const { SLIDE } = await import('../../grader/core/audits/slides.js');
+  const slide = (id, level = 'review') => missedSlides([{ id, level, reason: 'words' }]).map((m) => m.slide.split(' ').slice(0, 4).join(' '))[0];
+  const want = {
+    'normal-colours': 'Get the normal from', 'per-face': 'Get the normal from', 'orbit-light': 'Add a tick function', 'orbit-toggle': 'Add a tick function',
+    'input-event': 'Use the input event', 'per-fragment': 'We implement it by', 'level-controls': 'Insert buttons for subdividing',
+    'front-faces': 'Now, enable the depth', 'depth-culling': 'Now, enable the depth', highlight: 'Update your reflection model',
+    perspective: 'Draw a solid sphere', 'normals-not-light': 'Given other parameters k_d,', 'all-round': 'Draw a solid sphere',
+    // a highlight's place names the light and the eye: its sentence is ω_o's, not the orbit's
+    'highlight-place': 'ω_o is the direction', 'linked-page': 'Draw a solid sphere', 'shaders-compile': 'Upload parameters (k_d, L_e,',
+    // a sphere that is not round is the sphere's sentence (its words name 'round', which once gave the buttons')
+    sphere: 'Draw a solid sphere', growth: 'Recycle the vertex buffer', 'ks-used': 'Upload remaining parameters for', 'point-light': 'L_i = V I',
+  };
+  for (const [id, words] of Object.entries(want)) assert.equal(slide(id), words, id);
+  assert.equal(slide('first-frame', 'fail'), 'Draw a solid sphere');
+  assert.match(missedSlides([{ id: 'perspective', level: 'review', reason: '' }])[0].note, /orthographic/);
+  // a part not graded here was not judged; what passed names nothing; a hostile page's reasons are about the page, not the step
+  assert.deepEqual(missedSlides([{ id: 'too-slow', level: 'not graded here', reason: 'not graded here: too slow' }]), []);
+  assert.deepEqual(missedSlides([{ id: 'sphere', level: 'pass', reason: 'a round closed sphere' }]), []);
+  assert.deepEqual(missedSlides([{ id: 'shown-channels', level: 'review', reason: 'x' }, { id: 'tamper', level: 'review', reason: 'y' }]), []);
+  // one card a sentence, however many reasons miss it
+  assert.equal(missedSlides([{ id: 'front-faces', level: 'review', reason: 'a' }, { id: 'depth-culling', level: 'review', reason: 'b' }]).length, 1);
+  // every audit's sentence is one of the slides' (audits/slides.js), or none
+  for (const a of Object.values(AUDITS)) assert.ok(a.slide === null || Object.values(SLIDE).includes(a.slide), a.id);
 });

@@ -10,7 +10,7 @@ import { serveSubmission } from '../../grader/node/serve-submission.js';
 import { analyse, diffuseFit, samples, highlightSeen, highlightOffset, openMask } from '../../grader/core/measure.js';
 import { effectOf, nameRole, trialOrder } from '../../grader/core/controls.js';
 import { normalAngle } from '../../grader/core/measure/perspective.js';
-import { checkList, verdictOf, reasonsOf } from '../../grader/core/verdict.js';
+import { checkList, verdictOf, reasonsOf, findingsOf } from '../../grader/core/verdict.js';
 import { parseLabels, agreement, agreementText } from '../../grader/node/labels.js';
 import { memo } from '../../grader/core/memo.js';
 import { readFileSync } from 'node:fs';
@@ -200,19 +200,21 @@ test('a highlight at w_h is never read as one at the light (highlightAtLightDegr
   }
 });
 
-test('verdicts from findings: a fail wins, then a review; a mistake costs what the rubric says; reasons worst first', () => {
-  const { checks, say } = checkList({ mistakeVerdict: 'review' });
-  say('pass', 'round');
+test('verdicts from findings: a fail wins, then a review; a mistake costs what the rubric says; reasons worst first, each with its audit id', () => {
+  const { checks, sayAs } = checkList({ mistakeVerdict: 'review' });
+  sayAs('sphere')('pass', 'round');
   assert.equal(verdictOf(checks), 'pass');
-  say('mistake', 'no highlight');
-  assert.deepEqual(checks.at(-1), { level: 'review', reason: 'no highlight' });
+  sayAs('highlight')('mistake', 'no highlight');
+  assert.deepEqual(checks.at(-1), { id: 'highlight', level: 'review', reason: 'no highlight' });
   assert.equal(verdictOf(checks), 'review');
   assert.equal(verdictOf(checks, 'drew nothing'), 'fail');
   const strict = checkList({ mistakeVerdict: 'fail' });
-  strict.say('mistake', 'no highlight');
+  strict.sayAs('highlight')('mistake', 'no highlight');
   assert.equal(verdictOf(strict.checks), 'fail');
   const reasons = reasonsOf({ checks, pageErrors: ['page error: x'] });
   assert.deepEqual(reasons, ['REVIEW: no highlight', 'round', 'the page reported errors: page error: x']);
+  assert.deepEqual(findingsOf({ fail: 'drew nothing', failId: 'first-frame', checks }).map((f) => [f.id, f.level]),
+    [['first-frame', 'fail'], ['highlight', 'review'], ['sphere', 'pass']]);
 });
 
 test("a teacher's labels against the verdicts: agreement, the label × verdict table, the disagreements", () => {

@@ -48,7 +48,7 @@ test('the P1 colour alone, as the material, and a plain material are not a colou
 test('auditNormalsNotLight: WP04P1\'s colours alone are no lighting; with the lighting added they are judged as lighting', () => {
   const run = (j) => {
     const said = [];
-    const C = { T, must: new Set(['diffuse']), numbers: {}, say: (level, reason) => said.push({ level, reason }) };
+    const C = { T, must: new Set(['diffuse']), numbers: {}, sayAs: () => (level, reason) => said.push({ level, reason }) };
     return { notLight: auditNormalsNotLight(C, j), said };
   };
   const a = run(p1);

@@ -119,7 +119,7 @@ test('a highlight at the light is a review on a plain material, and a note where
   const judge = (img) => {
     const checks = [];
     const an = analyse(img, T);
-    auditHighlight({ facts: {}, images: {}, T, must: new Set(['highlight']), numbers: {}, say: (level, reason) => checks.push({ level, reason }) }, shadingOf(img, an, T), []);
+    auditHighlight({ facts: {}, images: {}, T, must: new Set(['highlight']), numbers: {}, sayAs: () => (level, reason) => checks.push({ level, reason }) }, shadingOf(img, an, T), []);
     return checks;
   };
   const plain = judge(sphere((n) => atLight(n, [0.8, 0.5, 0.3])));

@@ -32,10 +32,10 @@ test('the view matrix: read from the animated uniforms, its turn between views',
 test('the orbit\'s audit: the lit side\'s turn against the camera\'s', () => {
   // (a camera that goes round to +α sees a light fixed in the world turn the other way: -α about y)
   const judge = (lightTurn, cameraDegrees, up = 0) => {
-    const { checks, say } = checkList(rubric);
+    const { checks, sayAs } = checkList(rubric);
     const lit = [0, 1].map((k) => ({ orbiting: true, fit: { light: [-Math.sin(k * lightTurn * DEG) * Math.cos(up * DEG), Math.sin(up * DEG), Math.cos(k * lightTurn * DEG) * Math.cos(up * DEG)] },
       camera: cameraDegrees === null ? undefined : cameraOf(sent(view(k * cameraDegrees)), ['uniform V']) }));
-    auditOrbit({ facts: { orbit: {} }, T, must: new Set(['diffuse']), say, numbers: {} }, lit);
+    auditOrbit({ facts: { orbit: {} }, T, must: new Set(['diffuse']), sayAs, numbers: {} }, lit);
     return checks.map((c) => `${c.level}: ${c.reason}`).join('\n');
   };
   assert.match(judge(40, 40), /^pass: the lit side turns as the camera orbits \(the fitted light turns 40\.0° over 2 views, where a light in the world would have turned 39\.\d° on screen \(the camera turns 40\.0°/);
@@ -45,9 +45,9 @@ test('the orbit\'s audit: the lit side\'s turn against the camera\'s', () => {
   assert.match(judge(0, 40, 89.9), /^pass: note: the camera turned too little .* a light in the world would have turned 6\.4° on screen/);
   // a fit that turns clearly where the camera cannot tell (a near point light above, fitted as a direction): no light that moves with the camera
   const wanders = (() => {
-    const { checks, say } = checkList(rubric);
+    const { checks, sayAs } = checkList(rubric);
     const lit = [[0, 0.996, 0.087], [0, 0.985, -0.174]].map((light, k) => ({ orbiting: true, fit: { light }, camera: cameraOf(sent(view(40 * k)), ['uniform V']) }));
-    auditOrbit({ facts: { orbit: {} }, T, must: new Set(['diffuse']), say, numbers: {} }, lit);
+    auditOrbit({ facts: { orbit: {} }, T, must: new Set(['diffuse']), sayAs, numbers: {} }, lit);
     return checks.map((c) => `${c.level}: ${c.reason}`).join('\n');
   })();
   assert.match(wanders, /^pass: the lit side turns as the camera orbits \(the fitted light turns 15\.\d°/);

@@ -134,8 +134,8 @@ test('a colour per face: an attribute constant over each triangle, with many val
 
 test('the audits: culled near side, a hole from some side, the slide\'s clockwise experiment, an unreadable mesh', () => {
   const judge = (facts, part = 'WP04P3') => {
-    const { checks, say } = checkList(rubric);
-    const C = { facts: { api: 'webgl', faces: { culling: true }, ...facts }, T, must: new Set(rubric.parts[part].must), say, numbers: {} };
+    const { checks, sayAs } = checkList(rubric);
+    const C = { facts: { api: 'webgl', faces: { culling: true }, ...facts }, T, must: new Set(rubric.parts[part].must), sayAs, numbers: {} };
     auditWinding(C);
     auditClosed(C);
     auditPerFace(C);
@@ -163,8 +163,8 @@ test('the audits: culled near side, a hole from some side, the slide\'s clockwis
 
 test('the audits: a page that draws more every frame while nothing is touched', () => {
   const judge = (frames) => {
-    const { checks, say } = checkList(rubric);
-    auditGrowth({ facts: { geometryAtFirst: { frames } }, T, say, numbers: {} });
+    const { checks, sayAs } = checkList(rubric);
+    auditGrowth({ facts: { geometryAtFirst: { frames } }, T, sayAs, numbers: {} });
     return checks.map((c) => `${c.level}: ${c.reason}`).join('\n');
   };
   assert.match(judge([192, 384, 576, 768, 960]), /^review: the page draws more every frame \(192 → 960 vertices over 5 frames/);

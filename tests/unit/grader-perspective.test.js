@@ -51,8 +51,8 @@ function sphere({ w = 160, d = 3, fovy = 45, share = 0.8, far = false, shade = (
 
 const judgedOf = (img) => ({ img, an: analyse(img, T) });
 function context(mustList, facts = {}) {
-  const { checks, say } = checkList(rubric);
-  return { C: { facts, images: {}, T, must: new Set(mustList), say, numbers: {} }, checks };
+  const { checks, sayAs } = checkList(rubric);
+  return { C: { facts, images: {}, T, must: new Set(mustList), sayAs, numbers: {} }, checks };
 }
 
 test('normalAngle: orthographic reaches 90° at the rim, a perspective view acos(1/d), the inside of the far side 180° − acos(1/d)', () => {

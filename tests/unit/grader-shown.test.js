@@ -42,7 +42,7 @@ test('a black disc shown over the sphere read back: the share that differs; tran
 
 test('the audit: review where the channels differ, the browser\'s picture shown; a first frame that differed is no reason to fail', () => {
   const said = [];
-  const C = (shown) => ({ facts: { shown }, T, say: (level, reason) => said.push([level, reason]), imagesShown: {} });
+  const C = (shown) => ({ facts: { shown }, T, sayAs: () => (level, reason) => said.push([level, reason]), imagesShown: {} });
   const same = C([{ at: 'first', compared: true, opaque: 900, share: 0.001 }, { at: 'last', compared: false, why: 'not read' }]);
   assert.equal(auditShown(same), false);
   assert.deepEqual(said, []);

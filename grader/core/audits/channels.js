@@ -2,12 +2,18 @@
 // is read back by the page (the grader's own functions, kept from before the page ran) and taken
 // as the browser shows it (a screenshot from outside the page), and the two must agree.
 
+/** This module's audits: id → title, the slide's sentence it checks, the artifacts it reads. */
+export const META = {
+  'shown-channels': { title: 'What the page reads back is what the browser shows', slide: null, reads: ['facts.shown'] },
+};
+
 /**
  * Says review where the channels differ (the browser's picture shown to the teacher); returns true
  * when they differed at the first frame, where a read-back that shows nothing is then no reason to
  * fail the part.
  */
-export function auditShown({ facts, T, say, imagesShown }) {
+export function auditShown({ facts, T, sayAs, imagesShown }) {
+  const say = sayAs('shown-channels');
   // the comparisons (the first frame's, the last picture's) that differ beyond the engine's rounding
   const off = (facts.shown || []).filter((d) => d.compared && d.share > T.shownDifferShare);
   for (const d of off) {

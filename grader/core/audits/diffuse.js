@@ -2,9 +2,19 @@
 // judged view and in every lit view along the orbit; a point light and its 1/r² fall-off.
 import { nearPointLight, clearlyBetter } from '../measure.js';
 import { fmt } from '../format.js';
+import { SLIDE } from './slides.js';
+
+/** This module's audits: id → title, the slide's sentence it checks, the artifacts it reads. */
+export const META = {
+  diffuse: { title: 'Brightness follows max(n·w_i, 0)·kd·Le + ambient', slide: SLIDE.diffuse, reads: ['images.judged', 'facts.shadingImage', 'facts.views'] },
+  'point-light': { title: 'A point light with the 1/r² fall-off', slide: SLIDE.pointLight, reads: ['images.judged'] },
+  unclipped: { title: 'A picture clipped to white, read with the sliders lowered', slide: SLIDE.diffuse, reads: ['facts.unclipped'] },
+  brightened: { title: 'A picture too dim, read with the light raised', slide: SLIDE.diffuse, reads: ['facts.brightened'] },
+};
 
 /** The diffuse fit of the judged view (`shading`: evidence.shadingOf), with the lit views' sparse fits (`lit`). */
-export function auditDiffuse({ T, must, say, numbers }, shading, lit) {
+export function auditDiffuse({ T, must, sayAs, numbers }, shading, lit) {
+  const say = sayAs('diffuse');
   if (!must.has('diffuse') && !must.has('highlight')) return;
   const { fit, pointLight } = shading;
   if (pointLight) numbers.pointLight = pointLight;
@@ -32,7 +42,8 @@ export function auditDiffuse({ T, must, say, numbers }, shading, lit) {
 }
 
 /** A point light: with the 1/r² fall-off, or clearly without it. */
-export function auditPointLight({ T, say }, shading) {
+export function auditPointLight({ T, sayAs }, shading) {
+  const say = sayAs('point-light');
   const { pointLight } = shading;
   if (!pointLight) return;
   if (clearlyBetter(pointLight, 'none', 'falloff', T)) {
@@ -46,7 +57,8 @@ export function auditPointLight({ T, say }, shading) {
 const settings = (steps) => steps.map((x) => `${x.role} to ${x.value}`).join(', then ');
 
 /** Where the picture clipped to white, the sliders the gatherer lowered to read its shading (facts.unclipped). */
-export function auditUnclipped({ facts, say, imagesShown }) {
+export function auditUnclipped({ facts, sayAs, imagesShown }) {
+  const say = sayAs('unclipped');
   const u = facts.unclipped;
   if (!u) return;
   imagesShown.unclipped = u.image;
@@ -54,7 +66,8 @@ export function auditUnclipped({ facts, say, imagesShown }) {
 }
 
 /** Where the picture was too dim to show its shading, the slider the gatherer raised to read it (facts.brightened). */
-export function auditBrightened({ facts, say, imagesShown }) {
+export function auditBrightened({ facts, sayAs, imagesShown }) {
+  const say = sayAs('brightened');
   const b = facts.brightened;
   if (!b) return;
   imagesShown.brightened = b.image;

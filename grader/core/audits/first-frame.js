@@ -3,17 +3,30 @@
 // A part that asked for WebGPU in a browser without it (Firefox ESR) is not graded here at all.
 import { analyse } from '../measure.js';
 import { NOT_GRADED } from '../verdict.js';
+import { SLIDE } from './slides.js';
+
+/** This module's audits: id → title, the slide's sentence it checks, the artifacts it reads. */
+export const META = {
+  'first-frame': { title: 'The page draws its first frame', slide: SLIDE.sphere, reads: ['facts.first', 'images.first', 'facts.errors'] },
+  'shaders-compile': { title: 'The shaders compile and link', slide: SLIDE.uniforms, note: 'the shaders must compile first: the error above gives the line', reads: ['facts.first'] },
+  'webgpu-adapter': { title: 'WebGPU starts', slide: SLIDE.sphere, note: 'this browser has no WebGPU adapter: try the WebGL view, or a browser with WebGPU', reads: ['facts.first'] },
+  'not-graded': { title: 'A part this browser cannot run (WebGPU here without it)', slide: null, reads: ['facts.first'] },
+};
 
 /** auditFirstFrame's answer where it has said why nothing more is judged, and the part is not broken. */
 export const STOP = Symbol('nothing more to judge');
 
-/** Says the shader and adapter failures; returns the reason the part cannot be judged (it fails), STOP, or null. */
-export function auditFirstFrame({ facts, images, T, say }) {
+/**
+ * Says the shader and adapter failures; returns the reason the part cannot be judged (it fails:
+ * the audit 'first-frame''s), STOP, or null.
+ */
+export function auditFirstFrame({ facts, images, T, sayAs }) {
+  const say = sayAs('first-frame');
   const g = facts.first;
   if (!g) return 'the page never finished its first frame';
   if (!images.first) return 'no canvas on the page';
-  for (const e of g.shaderErrors) say('fail', e);
-  if (g.api === 'webgpu' && g.adapter === null) say('fail', 'no WebGPU adapter: the page could not start WebGPU');
+  for (const e of g.shaderErrors) sayAs('shaders-compile')('fail', e);
+  if (g.api === 'webgpu' && g.adapter === null) sayAs('webgpu-adapter')('fail', 'no WebGPU adapter: the page could not start WebGPU');
   if (!analyse(images.first, T).blank) {
     if (g.orbitStarted) say('pass', `note: the canvas stayed one colour${g.waited ? ` for ${g.waited} frames more` : ''} (the unlit side toward the camera?); the orbit, started by ${g.orbitStarted}, showed the sphere, and it was judged from there`);
     return null;

@@ -5,6 +5,17 @@
 // (WP04P1/P2), and a page that draws more every frame while nothing is touched.
 
 const pct = (x) => `${Math.round(100 * x)}%`;
+import { SLIDE } from './slides.js';
+
+/** This module's audits: id → title, the slide's sentence it checks, the artifacts it reads. */
+export const META = {
+  winding: { title: 'The triangles wound so that the culling keeps the near side', slide: SLIDE.depthCulling, reads: ['facts.geometry', 'facts.geometryAtFirst', 'facts.faces'] },
+  closed: { title: 'A closed mesh: every edge in two triangles', slide: SLIDE.sphere, reads: ['facts.geometry'] },
+  'per-face': { title: 'n = p at each vertex, not a colour per face', slide: SLIDE.normalColour, reads: ['facts.geometry'] },
+  growth: { title: 'The mesh not built again every frame', slide: SLIDE.recycle, reads: ['facts.geometryAtFirst'] },
+  'picture-not-geometry': { title: 'A sphere of triangles, not a picture', slide: SLIDE.sphere, reads: ['facts.geometry', 'images.judged'] },
+  'all-round': { title: 'Closed from every side seen along the orbit', slide: SLIDE.sphere, reads: ['facts.allRound'] },
+};
 
 /** The geometry judged: the judged level's, else the first level's (where the page went blank later). */
 const judgedGeometry = (facts) => [facts.geometry, facts.geometryAtFirst].find((g) => g && !g.why && g.analysed > 0) || null;
@@ -18,7 +29,8 @@ function culledOutward(cull, cw) {
 }
 
 /** Every step that culls: the triangles wound against the culling show the inside of the far side, or a hole. */
-export function auditWinding({ facts, T, must, say, numbers }) {
+export function auditWinding({ facts, T, must, sayAs, numbers }) {
+  const say = sayAs('winding');
   const g = judgedGeometry(facts);
   const any = facts.geometry || facts.geometryAtFirst;
   if (!g) {
@@ -42,7 +54,8 @@ export function auditWinding({ facts, T, must, say, numbers }) {
 }
 
 /** A sphere is closed: every edge of its mesh belongs to two triangles. */
-export function auditClosed({ facts, T, say }) {
+export function auditClosed({ facts, T, sayAs }) {
+  const say = sayAs('closed');
   const g = judgedGeometry(facts);
   if (!g || !g.closed || !g.closed.edges) return;
   const { open, edges } = g.closed;
@@ -50,7 +63,8 @@ export function auditClosed({ facts, T, say }) {
 }
 
 /** WP04P1/P2: n = p at each vertex, not a colour or normal per face. */
-export function auditPerFace({ facts, T, must, say }) {
+export function auditPerFace({ facts, T, must, sayAs }) {
+  const say = sayAs('per-face');
   if (!must.has('normalColours')) return;
   const g = judgedGeometry(facts);
   if (!g || !g.perFace) return;
@@ -59,7 +73,8 @@ export function auditPerFace({ facts, T, must, say }) {
 }
 
 /** A page whose vertices a frame grow while no control is touched builds its mesh again and appends it. */
-export function auditGrowth({ facts, T, say, numbers }) {
+export function auditGrowth({ facts, T, sayAs, numbers }) {
+  const say = sayAs('growth');
   const g = facts.geometryAtFirst;
   const f = g && g.frames;
   if (!f || f.length < T.growthFrames) return;
@@ -71,7 +86,8 @@ export function auditGrowth({ facts, T, say, numbers }) {
 }
 
 /** A round sphere in the picture drawn with no more than a few triangles is a picture, not geometry (a textured quad, a sphere traced per pixel). */
-export function auditPictureNotGeometry({ facts, T, say }, judged) {
+export function auditPictureNotGeometry({ facts, T, sayAs }, judged) {
+  const say = sayAs('picture-not-geometry');
   // (the triangles are counted whether or not their positions could be read)
   const g = [facts.geometry, facts.geometryAtFirst].find((x) => x && Number.isFinite(x.triangles));
   if (!g || !g.draws || 3 * g.triangles + (g.otherVertices || 0) > 3 * T.pictureTriangles || judged.an.blank || !(judged.an.roundness <= T.roundness)) return;
@@ -83,7 +99,8 @@ export function auditPictureNotGeometry({ facts, T, say }, judged) {
  * orbit (gather/all-round.js): a round outline with a gap in it is a hole on that side. Views whose
  * outline is not round (an unlit side merging with the background) tell nothing and are left out.
  */
-export function auditAllRound({ facts, T, say, numbers, imagesShown }) {
+export function auditAllRound({ facts, T, sayAs, numbers, imagesShown }) {
+  const say = sayAs('all-round');
   const r = facts.allRound;
   if (!r) return;
   const round = r.views.filter((v) => !v.blank && v.roundness <= T.roundness);

@@ -5,13 +5,21 @@ import { highlightOffset } from '../measure.js';
 import { highlightEvidence } from '../evidence.js';
 import { fullFit, lightAngle } from '../views.js';
 import { fmt } from '../format.js';
+import { SLIDE } from './slides.js';
+
+/** This module's audits: id → title, the slide's sentence it checks, the artifacts it reads. */
+export const META = {
+  highlight: { title: 'A specular highlight', slide: SLIDE.highlight, reads: ['images.judged', 'facts.views', 'facts.raised'] },
+  'highlight-place': { title: 'The highlight at w_h, halfway between the light and the viewer', slide: SLIDE.eye, reads: ['facts.views', 'facts.raised', 'facts.placeFarther'] },
+};
 
 /**
  * Whether a highlight shows, and where it is placed. Returns the place to judge at the end (the
  * gatherer looked farther along the orbit for it), or null.
  */
 export function auditHighlight(C, shading, views) {
-  const { facts, images, T, must, say, numbers } = C;
+  const { facts, images, T, must, sayAs, numbers } = C;
+  const say = sayAs('highlight');
   if (!must.has('highlight') || !shading.fit) return null;
   const fit = shading.judgedFit;
   const { seen, place } = highlightEvidence(shading, views, facts.raised, images, T);
@@ -19,7 +27,7 @@ export function auditHighlight(C, shading, views) {
   if (seen) say('pass', `a specular highlight in ${seen.where} (up to ${fmt(100 * seen.fit.highlightPeak, 0)}% of the way from the diffuse fit to white, ${fmt(seen.fit.highlightRise, 2)} above it)`);
   let later = null;
   if (seen && !shading.nearModel) {
-    if (!place) say('pass', 'note: the highlight\'s place is not judged: it shows only with s lowered to 10 by the page\'s own slider, which makes it too broad to place');
+    if (!place) sayAs('highlight-place')('pass', 'note: the highlight\'s place is not judged: it shows only with s lowered to 10 by the page\'s own slider, which makes it too broad to place');
     else if (facts.placeFarther) later = place;
     else judgePlace(C, place);
   }
@@ -37,7 +45,8 @@ export function auditPlaceFarther(C, near) {
 }
 
 /** Says whether the highlight sits at w_h in `place` ({ fit, where }). */
-function judgePlace({ T, say, numbers }, place) {
+function judgePlace({ T, sayAs, numbers }, place) {
+  const say = sayAs('highlight-place');
   const offset = highlightOffset(place.fit.highlightNormal, place.fit.light);
   if (offset === null) return;
   const light = lightAngle(place.fit);

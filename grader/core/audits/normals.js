@@ -5,12 +5,23 @@
 import { analyse, samples, normalColours, facesViewer, pictureChange, addedTintFit, addedClearly } from '../measure.js';
 import { rimAngle } from '../measure/perspective.js';
 import { fmt } from '../format.js';
+import { SLIDE } from './slides.js';
+
+/** This module's audits: id → title, the slide's sentence it checks, the artifacts it reads. */
+export const META = {
+  'normal-colours': { title: 'Colours that are the normals, 0.5·n + 0.5', slide: SLIDE.normalColour, reads: ['images.judged', 'facts.facesImage'] },
+  'front-faces': { title: 'The normals facing the viewer: front faces only', slide: SLIDE.depthCulling, reads: ['images.judged', 'facts.noCull', 'facts.faces'] },
+  perspective: { title: 'In perspective view (how far the normals reach at the rim)', slide: SLIDE.sphere, note: 'an orthographic view shows the normals out to 90° at the rim', reads: ['images.judged'] },
+  'normals-not-light': { title: 'A lit step that shows the normal colouring, not lighting', slide: SLIDE.gouraud, reads: ['images.judged'] },
+  'depth-culling': { title: 'The depth test and back-face culling enabled', slide: SLIDE.depthCulling, reads: ['facts.faces'] },
+};
 
 /**
  * The normals as colours, on the judged picture (`judged`: { img, an }) or the one the page's face
  * controls gave. Returns what was read ({ img, an, nc }) for auditPerspective, or null.
  */
-export function auditNormals({ facts, images, T, must, say, numbers }, judged) {
+export function auditNormals({ facts, images, T, must, sayAs, numbers }, judged) {
+  const say = sayAs('normal-colours');
   if (!must.has('normalColours') && !must.has('frontFaces')) return null;
   let { img, an } = judged;
   if (facts.facesImage) {
@@ -38,13 +49,14 @@ export function auditNormals({ facts, images, T, must, say, numbers }, judged) {
   else if (nc.unitError > T.normalsUnitError) {
     say('mistake', `the colours are not 0.5·n + 0.5: 2c − 1 is not a unit vector (off by ${fmt(nc.unitError)} on average)`);
   } else say('pass', `colours decode to unit normals 2c − 1 (off by ${fmt(nc.unitError, 3)})`);
+  const sayFaces = sayAs('front-faces');
   if (must.has('frontFaces') && nc && nc.spread >= T.normalsSpread) {
-    if (facesViewer(nc, T)) say('pass', 'the visible colours are the normals facing the viewer: front faces only');
-    else if (nearest) say('pass', 'the visible faces are the nearest ones (the depth test is on, and culling off draws the same picture): the view looks along +z (clip space without a view matrix?), so their normals point away from +z');
+    if (facesViewer(nc, T)) sayFaces('pass', 'the visible colours are the normals facing the viewer: front faces only');
+    else if (nearest) sayFaces('pass', 'the visible faces are the nearest ones (the depth test is on, and culling off draws the same picture): the view looks along +z (clip space without a view matrix?), so their normals point away from +z');
     else if (nc.det < 0 && nc.residual <= T.facingResidual) {
-      if (clockwiseExperiment(facts)) say('pass', `note: the back side of the sphere shows, as the slide's clockwise experiment asks ("Try changing the convention to having clockwise wound triangles being front facing … You should now see the back side of the sphere"): ${facts.api === 'webgpu' ? "frontFace: 'cw'" : 'gl.frontFace(gl.CW)'} with back-face culling on; the default, counter-clockwise, shows the front`);
-      else say('mistake', 'the inside of the far side shows (the normals face away from the viewer): the front faces are culled, or the depth test is off and the far side is drawn last');
-    } else say('mistake', `back faces show through the front (normals do not vary smoothly across the picture, misfit ${fmt(nc.residual)}): depth test or culling missing`);
+      if (clockwiseExperiment(facts)) sayFaces('pass', `note: the back side of the sphere shows, as the slide's clockwise experiment asks ("Try changing the convention to having clockwise wound triangles being front facing … You should now see the back side of the sphere"): ${facts.api === 'webgpu' ? "frontFace: 'cw'" : 'gl.frontFace(gl.CW)'} with back-face culling on; the default, counter-clockwise, shows the front`);
+      else sayFaces('mistake', 'the inside of the far side shows (the normals face away from the viewer): the front faces are culled, or the depth test is off and the far side is drawn last');
+    } else sayFaces('mistake', `back faces show through the front (normals do not vary smoothly across the picture, misfit ${fmt(nc.residual)}): depth test or culling missing`);
   }
   return { img, an, nc };
 }
@@ -64,7 +76,8 @@ const smoothUnitNormals = (nc, T) => !!nc && !(nc.spread < T.normalsSpread || nc
  * orthographic view shows normals out to 90° from the view direction, a perspective view from a
  * distance d none past acos(1/d). Where front and back faces mix, the picture cannot tell: not said.
  */
-export function auditPerspective({ T, must, say, numbers }, seen) {
+export function auditPerspective({ T, must, sayAs, numbers }, seen) {
+  const say = sayAs('perspective');
   if (!must.has('perspective') || !seen || !seen.nc) return;
   const { img, an, nc } = seen;
   if (!smoothUnitNormals(nc, T)) return;
@@ -90,7 +103,8 @@ export function auditPerspective({ T, must, say, numbers }, seen) {
  * (addedClearly), and the shading is judged with the colouring taken out. Returns true when it
  * says the picture is no lighting (the shading is then not judged as lighting).
  */
-export function auditNormalsNotLight({ T, must, say, numbers }, judged) {
+export function auditNormalsNotLight({ T, must, sayAs, numbers }, judged) {
+  const say = sayAs('normals-not-light');
   if (!must.has('diffuse') && !must.has('highlight')) return false;
   const pts = samples(judged.img, judged.an);
   const nc = normalColours(pts, T);
@@ -102,7 +116,8 @@ export function auditNormalsNotLight({ T, must, say, numbers }, judged) {
 }
 
 /** P2: the depth test and back-face culling enabled (the slide: "no visible effect of the back face culling"). */
-export function auditDepthCulling({ facts, must, say, numbers }) {
+export function auditDepthCulling({ facts, must, sayAs, numbers }) {
+  const say = sayAs('depth-culling');
   if (!must.has('depthCulling')) return;
   const faces = facts.faces || {};
   const api = facts.api === 'webgpu' ? { depth: 'depthStencil with a depthCompare', cull: "cullMode: 'back'" } : { depth: 'gl.enable(gl.DEPTH_TEST)', cull: 'gl.enable(gl.CULL_FACE)' };

@@ -3,17 +3,27 @@
 import { describe } from '../controls.js';
 import { cameraRotations, rotationsTurn, staysInWorld } from '../camera.js';
 import { fmt } from '../format.js';
+import { SLIDE } from './slides.js';
+
+/** This module's audits: id → title, the slide's sentence it checks, the artifacts it reads. */
+export const META = {
+  'orbit-stops': { title: 'The orbit stops, and stops again', slide: SLIDE.orbit, reads: ['facts.stopped', 'facts.orbitKeptMoving'] },
+  'orbit-light': { title: 'The lit side turns as the camera orbits', slide: SLIDE.orbit, reads: ['facts.views'] },
+  'orbit-toggle': { title: 'A button toggles the orbit', slide: SLIDE.orbit, reads: ['facts.orbit', 'facts.controls', 'facts.roles'] },
+};
 
 const signedAngle = (a, b) => (180 / Math.PI) * Math.acos(Math.max(-1, Math.min(1, (a[0] * b[0] + a[1] * b[1] + a[2] * b[2]) / (Math.hypot(...a) * Math.hypot(...b)))));
 const angle = (a, b) => (180 / Math.PI) * Math.acos(Math.min(1, Math.abs(a[0] * b[0] + a[1] * b[1] + a[2] * b[2])));
 
 /** The orbit restarted to look at the shading would not stop again. */
-export function auditOrbitStopsAgain({ facts, say }) {
+export function auditOrbitStopsAgain({ facts, sayAs }) {
+  const say = sayAs('orbit-stops');
   if (facts.orbitKeptMoving) say('review', 'the orbit did not stop again: the pictures were judged as it moves');
 }
 
 /** The lit side turning with the orbit (the lit views' sparse fits, `lit`), and the orbit's control. */
-export function auditOrbit({ facts, T, must, say, numbers }, lit) {
+export function auditOrbit({ facts, T, must, sayAs, numbers }, lit) {
+  const say = sayAs('orbit-light');
   const orbiting = lit.filter((v) => v.orbiting), orbitFits = orbiting.map((v) => v.fit);
   if (must.has('diffuse') && orbitFits.length >= 2) {
     let turn = 0;
@@ -42,16 +52,18 @@ export function auditOrbit({ facts, T, must, say, numbers }, lit) {
     } else say('pass', `the lit side turns as the camera orbits (${rs ? words : `${fmt(turn, 0)}° over ${orbitFits.length} views`}): the light stays in the world`);
   }
   if (must.has('orbitToggle')) {
+    const sayToggle = sayAs('orbit-toggle');
     const o = facts.orbit;
     const control = o.control === null ? null : facts.controls.find((c) => c.index === o.control);
-    if (o.toggles) say('pass', `a control toggles the orbit on and off (${facts.roles.orbit})`);
-    else if (control) say('review', `${describe(control)} starts the orbit, but nothing found stops it`);
-    else if (o.movedAtFirst) say('review', `the camera orbits, but no button toggles the orbit: none of the ${facts.level.trials} controls tried stops it (the slide asks for one)`);
-    else say('review', 'no orbit: the picture never moved, and no control named for the orbit starts it');
+    if (o.toggles) sayToggle('pass', `a control toggles the orbit on and off (${facts.roles.orbit})`);
+    else if (control) sayToggle('review', `${describe(control)} starts the orbit, but nothing found stops it`);
+    else if (o.movedAtFirst) sayToggle('review', `the camera orbits, but no button toggles the orbit: none of the ${facts.level.trials} controls tried stops it (the slide asks for one)`);
+    else sayToggle('review', 'no orbit: the picture never moved, and no control named for the orbit starts it');
   }
 }
 
 /** The orbit could not be stopped: said as a note. */
-export function auditNotStopped({ facts, say }) {
+export function auditNotStopped({ facts, sayAs }) {
+  const say = sayAs('orbit-stops');
   if (!facts.stopped) say('pass', 'note: the orbit could not be stopped: the pictures were judged as it moves');
 }

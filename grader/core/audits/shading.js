@@ -3,9 +3,17 @@
 // seen at a coarse level.
 import { analyse, darkSpots, shadingChange, unnormalisedInputs } from '../measure.js';
 import { fmt } from '../format.js';
+import { SLIDE } from './slides.js';
+
+/** This module's audits: id → title, the slide's sentence it checks, the artifacts it reads. */
+export const META = {
+  'least-s': { title: 's at its least: pow(0, 0) guarded', slide: SLIDE.guardPow, reads: ['facts.leastS', 'images.judged'] },
+  'per-fragment': { title: 'The Phong model per fragment, its vectors normalised there', slide: SLIDE.phongShading, reads: ['facts.ladder', 'facts.sources', 'images.judged'] },
+};
 
 /** The picture at the least s against the judged one (`judged`: { img, an }; the same view). */
-export function auditLeastShininess({ facts, images, T, say, numbers, imagesShown }, judged, shading) {
+export function auditLeastShininess({ facts, images, T, sayAs, numbers, imagesShown }, judged, shading) {
+  const say = sayAs('least-s');
   const least = facts.leastS;
   if (!least || !shading || !shading.fit) return;
   const after = images[least.image];
@@ -34,7 +42,8 @@ export function fragmentPow(sources) {
 }
 
 /** P5: the highlight per fragment: as smooth at a coarse level as at the finest; else pow() in the fragment shader. */
-export function auditPerFragment({ facts, images, T, must, say, numbers, imagesShown }, judged, shading) {
+export function auditPerFragment({ facts, images, T, must, sayAs, numbers, imagesShown }, judged, shading) {
+  const say = sayAs('per-fragment');
   if (!must.has('perFragment') || !shading || !shading.fit) return;
   const raw = facts.sources ? unnormalisedInputs(facts.sources) : [];
   if (raw.length) say('mistake', `the fragment shader takes the interpolated ${raw.join(' and ')} into dot() or reflect() without normalising ${raw.length > 1 ? 'them' : 'it'}: interpolated directions are shorter than 1 between the vertices (the slides: "most importantly, we must normalize the direction vectors in the fragment shader")`);

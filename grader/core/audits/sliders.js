@@ -3,6 +3,14 @@
 import { analyse, samples, shadeFit, perspectiveSamples, highlightAbove } from '../measure.js';
 import { sliderActed } from '../controls.js';
 import { fmt } from '../format.js';
+import { SLIDE } from './slides.js';
+
+/** This module's audits: id → title, the slide's sentence it checks, the artifacts it reads. */
+export const META = {
+  sliders: { title: 'Sliders for the material and light parameters', slide: SLIDE.sliders, reads: ['facts.sliders', 'facts.slidersFound'] },
+  'input-event': { title: 'Sliders that act on the input event', slide: SLIDE.inputEvent, reads: ['facts.sliders'] },
+  'ks-used': { title: 'ks used in the specular term', slide: SLIDE.sliders, reads: ['facts.sliders', 'images.judged'] },
+};
 
 const SLIDERS = ['kd', 'ks', 's', 'Le', 'La'];
 
@@ -17,8 +25,9 @@ function eventOf(s) {
 }
 
 /** The sliders tried (facts.sliders), against the judged view (`judged`: { an }) and its shading. */
-export function auditSliders({ facts, images, T, must, say, rubric, part }, judged, shading) {
+export function auditSliders({ facts, images, T, must, sayAs, rubric, part }, judged, shading) {
   if (!must.has('sliders')) return;
+  const say = sayAs('sliders'), sayEvent = sayAs('input-event'), sayKs = sayAs('ks-used');
   const looked = (rubric.parts[part] || {}).sliders || SLIDERS;
   const required = (rubric.parts[part] || {}).requiredSliders || [];
   const baseFit = shading && shading.judgedFit;
@@ -43,7 +52,7 @@ export function auditSliders({ facts, images, T, must, say, rubric, part }, judg
       const f = a.blank ? null : nearModel ? { highlightPeak: highlightAbove(perspectiveSamples(after, judged.an, T.pointLightFovy, { max: T.fitSamples }), nearModel, T) }
         : shadeFit(samples(after, a), T);
       if (f && f.highlightPeak >= baseFit.highlightPeak * T.ksLeftShare && f.highlightPeak >= T.highlightPeak) {
-        say('review', `ks${s.controls ? ` (its ${s.controls.length} sliders)` : ''} at ${target} leaves the highlight as it was (${fmt(f.highlightPeak)}): is ks used in the specular term?`);
+        sayKs('review', `ks${s.controls ? ` (its ${s.controls.length} sliders)` : ''} at ${target} leaves the highlight as it was (${fmt(f.highlightPeak)}): is ks used in the specular term?`);
       }
     }
   }
@@ -51,9 +60,9 @@ export function auditSliders({ facts, images, T, must, say, rubric, part }, judg
   const missing = looked.filter((k) => !found[k]);
   const changeOnlyWords = `${changeOnly} slider(s) update the picture only on the change event, not while sliding (the slide asks for the input event)`;
   if (inputOk) say('pass', `${inputOk} slider(s) change the material or light on the input event${named.length ? ` (${named.join(', ')})` : ''}`);
-  else if (changeOnly) say('review', changeOnlyWords);
+  else if (changeOnly) sayEvent('review', changeOnlyWords);
   else say('review', `no slider changes the material or light (${facts.slidersFound} tried; the slide asks for sliders for the parameters)`);
-  if (inputOk && changeOnly) say('review', changeOnlyWords);
+  if (inputOk && changeOnly) sayEvent('review', changeOnlyWords);
   const requiredMissing = required.filter((k) => !found[k]);
   if (requiredMissing.length) say('review', `no slider found for ${requiredMissing.join(', ')} (this rubric asks for each)`);
   else if (missing.length && inputOk) say('pass', `note: no slider found for ${missing.join(', ')}`);

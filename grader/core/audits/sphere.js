@@ -1,9 +1,18 @@
 // "Draw a solid sphere": the subdivision controls, a round closed outline at the judged level, and
 // the outline getting rounder with each level.
 import { fmt } from '../format.js';
+import { SLIDE } from './slides.js';
+
+/** This module's audits: id → title, the slide's sentence it checks, the artifacts it reads. */
+export const META = {
+  'level-controls': { title: 'Controls that subdivide and coarsen the sphere', slide: SLIDE.buttons, reads: ['facts.level', 'facts.roles'] },
+  'heavy-level': { title: 'The level climb ended by a heavy frame', slide: SLIDE.buttons, reads: ['facts.heavyLevel', 'facts.ladder'] },
+  sphere: { title: 'A round closed sphere, rounder with each level', slide: SLIDE.sphere, reads: ['images.judged', 'images.first', 'facts.ladder'] },
+};
 
 /** The slide's Subdivide and Coarsen buttons, as found by their effect. */
-export function auditLevelControls({ facts, must, say }) {
+export function auditLevelControls({ facts, must, sayAs }) {
+  const say = sayAs('level-controls');
   const L = facts.level;
   if (!must.has('subdivideControls') || !L) return;
   const hasLevel = L.subdivide || L.slider;
@@ -14,7 +23,8 @@ export function auditLevelControls({ facts, must, say }) {
 }
 
 /** A level with heavy work a frame ended the climb: said as a note. */
-export function auditHeavyLevel({ facts, say }) {
+export function auditHeavyLevel({ facts, sayAs }) {
+  const say = sayAs('heavy-level');
   const last = facts.ladder[facts.ladder.length - 1];
   if (facts.heavyLevel) say('pass', `note: the last level reached draws ${fmt(facts.heavyLevel / 1000, 0)}k vertices a frame; with the sphere round to ${fmt(100 * last.roundness, 1)}% there, no finer level was tried (each has four times the triangles)`);
 }
@@ -23,7 +33,8 @@ export function auditHeavyLevel({ facts, say }) {
  * A round closed sphere at the judged level (`judged`: { an, circleArc }), and rounder with each
  * level (`ladder`: each level's roundness, as climbed; `firstRoundness`: the first frame's).
  */
-export function auditSphere({ T, say, numbers }, judged, ladder, firstRoundness) {
+export function auditSphere({ T, sayAs, numbers }, judged, ladder, firstRoundness) {
+  const say = sayAs('sphere');
   const { an, circleArc } = judged;
   Object.assign(numbers, { radius: an.radius, roundness: an.roundness, fill: an.fill, coverage: an.coverage, firstRoundness, levelsSeen: ladder.length });
   if (circleArc) say('pass', `part of the sphere is as dark as the background: its outline was fitted to the lit edge (${circleArc}° of a circle)`);

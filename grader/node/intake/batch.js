@@ -7,6 +7,7 @@ import { intake } from './intake.js';
 import { IntakeError } from './zip.js';
 import { PARTS } from '../parts.js';
 import { safeName } from '../layout.js';
+import { withFindings } from '../../core/part-result.js';
 
 /** The status of a part whose hand-in could not be unpacked. */
 export const NOT_UNPACKED = 'not unpacked';
@@ -43,6 +44,6 @@ function writeNotUnpacked(out, s) {
   const dir = path.join(out, 'parts', safeName(s.name));
   mkdirSync(dir, { recursive: true });
   for (const part of PARTS) {
-    writeFileSync(path.join(dir, `${part}.json`), JSON.stringify({ name: s.name, part, status: NOT_UNPACKED, verdict: 'fail', pass: false, reasons: [s.error], api: null, actions: [], mismatch: null, rmse: null, errors: [], blocked: [] }, null, 1));
+    writeFileSync(path.join(dir, `${part}.json`), JSON.stringify({ ...withFindings({ name: s.name, part, status: NOT_UNPACKED, verdict: 'fail', pass: false }, [{ id: 'not-unpacked', level: 'fail', reason: s.error }]), api: null, actions: [], mismatch: null, rmse: null, errors: [], blocked: [] }, null, 1));
   }
 }

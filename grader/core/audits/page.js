@@ -1,0 +1,49 @@
+// What is said of a part before or around its audits (the page missing, not opened, stopped by the
+// time bound, linked to another part's page, the grader's own trouble, a hand-in not unpacked) and
+// of the grading as a whole (a page that replaced what the grader reads through, a part too slow
+// on this machine): ids as the audits' are, so that every reason carries one.
+import { SLIDE } from './slides.js';
+import { NOT_GRADED, tooSlowWords } from '../verdict.js';
+
+/** These reasons' ids: id → title, the slide's sentence a miss quotes (or null), what it reads. */
+export const META = {
+  'page-missing': { title: 'A page for the part in the hand-in', slide: null, reads: ['the hand-in'] },
+  'page-opens': { title: 'The page opens', slide: SLIDE.sphere, reads: ['the page'] },
+  'page-finishes': { title: 'The page finishes within the rubric\'s bound', slide: SLIDE.sphere, reads: ['the page'] },
+  'linked-page': { title: 'A page of its own, not a link to another part\'s', slide: SLIDE.sphere, reads: ['the hand-in'] },
+  'not-unpacked': { title: 'The hand-in could be unpacked', slide: null, reads: ['the download'] },
+  'not-graded-in-run': { title: 'A part this run did not grade', slide: null, reads: [] },
+  'grader-trouble': { title: 'The grader finished on this page', slide: null, reads: ['the page'] },
+  'page-errors': { title: 'Errors the page reported (no verdict changes)', slide: null, reads: ['facts.errors'] },
+  tamper: { title: 'The page left what the grader reads through alone', slide: null, reads: ['facts.tampered'] },
+  'too-slow': { title: 'Gathered within the rubric\'s bounds', slide: null, reads: ['facts.tooSlow', 'facts.tooHeavy'] },
+  'level-ladder': { title: 'The level ladder climbed and judged at the last level that drew', slide: SLIDE.buttons, reads: ['facts.ladder', 'facts.blankAtHigherLevel'] },
+  'not-checked': { title: 'A part the check page cannot check in this browser', slide: null, reads: [] },
+};
+
+/** A reason `id` said at `level`, as findingsOf gives one ({ id, level, reason }). */
+const finding = (id, level, reason) => ({ id, level, reason });
+
+/** No page for `part` in the hand-in. */
+export const missingPage = (part) => finding('page-missing', 'fail', `no page for ${part} was found in the submission`);
+
+/** The page did not finish within the rubric's bound (`why`: what stopped it, if known). */
+export const timedOut = (rubric, why) => finding('page-finishes', 'fail', `the page did not finish within the rubric's bound of ${rubric.timeoutSeconds} s (it never returns, or is far too slow)${why ? `: ${why}` : ''}`);
+
+/** The bound ran out at the first frame: a frame that never returns. */
+export const stoppedAtFirstFrame = (rubric, what) => finding('page-finishes', 'fail', `the page did not finish within the rubric's bound of ${rubric.timeoutSeconds} s: stopped while ${what} (a frame that never returns?)`);
+
+/** The bound ran out past the first frame: a page that draws is too slow here, not broken (the rubric's tooSlowVerdict). */
+export const tooSlow = (rubric, what) => {
+  const why = tooSlowWords(rubric, what);
+  return rubric.tooSlowVerdict === NOT_GRADED ? finding('too-slow', NOT_GRADED, `${NOT_GRADED}: ${why}`) : finding('too-slow', rubric.tooSlowVerdict, why);
+};
+
+/** A part's page that only links to another part's page (`to`: { part, page }). */
+export const linkedPage = (part, page, to) => finding('linked-page', 'review', `REVIEW: the page for ${part} (${page}) has no canvas and no script of its own: it links to ${to.part}'s page (${to.page}), graded as ${to.part}; a part is not graded twice (does that page do ${part}'s step too? a teacher looks)`);
+
+/** The page could not be opened: the reason a part fails, its audit 'page-opens'. */
+export const notOpened = (why) => ({ fail: `the page could not be opened: ${why}`, failId: 'page-opens' });
+
+/** The grader's own trouble with a page (`err`): never a pass on it, a teacher looks. A check. */
+export const graderTrouble = (err) => ({ id: 'grader-trouble', level: 'review', reason: `the grader could not finish on this page: ${err.message.split('\n')[0]}` });
