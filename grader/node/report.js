@@ -7,6 +7,7 @@ import { PARTS } from './parts.js';
 import { safeName } from './layout.js';
 import { agreement, agreementHtml } from './labels.js';
 import { NOT_GRADED } from '../core/verdict.js';
+import { findingsOfResult } from '../../check/slides.js';
 import { similarityJson, similarityBadges, similarityHtml, SIMILARITY_CSS } from '../similarity/run.js';
 import { identityHtml, teacherMark, TEACHER_CSS } from './report-teacher.js';
 import { itemAnalysis, itemAnalysisHtml } from './item-analysis.js';
@@ -50,7 +51,8 @@ export function writeReport(out, submissions, labels = null, similar = null) {
   const details = rows.map((s) => `<section id="${esc(safeName(s.name))}"><h2>${esc(s.name)} · ${s.passes} of ${PARTS.length} pass</h2>${identityHtml(s)}` +
     s.parts.map((r) => `<div class="part" id="${esc(anchor(s, r))}"><h3>${r.part} ${badge(r.verdict)}${teacherMark(r, true)} <small>${esc(r.api || 'no API')}${r.browserVersion || r.browser ? ` in ${esc(r.browserVersion || r.browser)}` : ''} · ${esc(r.status)}${r.seconds ? ` · ${r.seconds.toFixed(0)} s` : ''}</small></h3>` +
       `<p class="file">${r.file ? esc(r.file) : 'no file'}</p>` +
-      list('Reasons:', r.reasons, 'reasons') +
+      // each reason with its audit's id (the grader README's sentence table lists them)
+      (r.reasons && r.reasons.length ? `<p>Reasons:</p><ul class="reasons">${findingsOfResult(r).map((f) => `<li>${esc(f.reason)}${f.id ? ` <code class="audit">${esc(f.id)}</code>` : ''}</li>`).join('')}</ul>` : '') +
       (r.images ? `<div class="images">${['first', 'coarse', 'highlightPlace', 'leastS', 'unclipped', 'brightened', 'allRoundGap', 'shownFirst', 'shownLast', 'judged', 'reference', 'diff'].filter((k) => r.images[k]).map((k) => `<figure>${img(s, r, k)}<figcaption>${{ first: 'first frame', coarse: 'a coarse level', highlightPlace: 'the highlight, the light away from the viewer', leastS: 's at its least', unclipped: 'its own sliders lowered (it clipped to white)', brightened: 'its own light raised (it was too dim)', allRoundGap: 'from another side along the orbit: a hole', shownFirst: 'first frame, as the browser shows it', shownLast: 'at the end, as the browser shows it', judged: 'judged (submission)', reference: 'our reference', diff: 'difference' }[k]}</figcaption></figure>`).join('')}</div>` : '') +
       (r.numbers && Object.keys(r.numbers).length ? `<details><summary>numbers</summary><pre>${esc(JSON.stringify(r.numbers, (k, v) => (typeof v === 'number' ? Number(v.toFixed(4)) : v), 1))}</pre></details>` : '') +
       (r.mismatch !== null && r.mismatch !== undefined ? `<p>Against our reference: ${(100 * r.mismatch).toFixed(1)}% of pixels differ (${esc(r.comparison)}), RMSE ${(255 * r.rmse).toFixed(1)}/255 (evidence only).</p>` : '') +
@@ -77,7 +79,7 @@ th[data-sort]{cursor:pointer;text-decoration:underline dotted}.num{text-align:ri
 .badge{display:inline-block;padding:0 .4rem;border-radius:.6rem;font-size:.8rem;font-weight:600;color:#fff}.badge.pass{background:#2a7d2a}.badge.review{background:#a66b00}.badge.fail{background:#b3261e}.badge.not-graded{background:#667}
 .api{color:#556;font-size:.75rem;margin-left:.3rem}.thumbs{display:flex;gap:2px;margin-top:2px}.thumbs img{width:64px;height:64px;object-fit:contain;border:1px solid #ccd;background:#fff}
 .images{display:flex;gap:.8rem;flex-wrap:wrap}figure{margin:0}figure img{max-width:260px;border:1px solid #ccd;image-rendering:pixelated}
-.errors li{color:#a00}.confusion td.agree{background:#e3f6e3;font-weight:600}.file{color:#556;font-family:monospace}.part{border-top:1px solid #dde;padding:.3rem 0}${SIMILARITY_CSS}${TEACHER_CSS}</style></head><body>
+.errors li{color:#a00}.confusion td.agree{background:#e3f6e3;font-weight:600}.file{color:#556;font-family:monospace}code.audit{font-size:.75rem;color:#556;background:#eef0f4;padding:0 .25rem;border-radius:.2rem}.part{border-top:1px solid #dde;padding:.3rem 0}${SIMILARITY_CSS}${TEACHER_CSS}</style></head><body>
 <h1>Grading report</h1><p>Each part was opened in Chromium (WebGL, or WebGPU on SwiftShader with its frames read back), or with
 --browser firefox in Firefox ESR (WebGL; a WebGPU part is not graded there), with time frozen. The grader found its controls, stopped or sampled the orbit, coarsened and subdivided until the silhouette stopped
 changing, and judged the picture by what the slide's step asks for (a round sphere; normals as colours; diffuse shading for a
