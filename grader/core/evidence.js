@@ -31,7 +31,7 @@ export const shadingOf = memo((img, an, T) => {
   const fit = shadeFit(samples(img, an), T);
   let pointLight = null;
   if (fit && fit.spread >= T.litSpread) {
-    pointLight = pointLightFit(perspectiveSamples(img, an, T.pointLightFovy, { max: T.fitSamples }), { ...T, around: fit.light });
+    pointLight = pointLightFit(perspectiveSamples(img, an, T.pointLightFovy, { max: T.fitSamples }), T, fit.light);
   }
   const nearModel = clearlyNearFalloff(pointLight, T) ? pointLight.falloff.model : null;
   const judgedFit = fit && nearModel ? { ...fit, highlightPeak: pointLight.falloff.highlightPeak, highlightRise: pointLight.falloff.highlightRise } : fit;

@@ -13,7 +13,8 @@ const WORKER = fileURLToPath(new URL('./audit-worker.js', import.meta.url));
 
 /**
  * Judges the artifact in each of `dirs` under `rubric`: a Map dir → { fail, checks, numbers, shown,
- * tooSlow, api, canvas, actions, controls, files, errors } (null where there is no artifact).
+ * tooSlow, api, canvas, actions, controls, files, errors, stale } (null where there is no artifact;
+ * `stale`: the keys its gathering read that `rubric` gives other values, gather/reads.js).
  * `progress(done, total)` hears each one.
  */
 export async function auditDirs(dirs, rubric, { workers = os.availableParallelism(), progress = () => {} } = {}) {

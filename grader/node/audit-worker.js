@@ -2,6 +2,7 @@
 // judging out. It ends when the pool lets go of it (the IPC channel closes).
 import { readArtifact } from './artifacts.js';
 import { judged } from '../core/grade-part.js';
+import { staleKeys } from '../core/gather/reads.js';
 
 let rubric = null;
 process.on('message', (m) => {
@@ -15,7 +16,9 @@ process.on('message', (m) => {
     const j = judged(artifact, rubric);
     delete j.images; // (pictures stay here: the artifact's files name them)
     delete j.artifact;
-    process.send({ result: { ...j, files: artifact.files, errors: artifact.facts.errors || [] } });
+    // the keys the gathering read that this rubric gives other values: gathering again would differ
+    const stale = staleKeys(artifact.facts.gatheredWith, rubric);
+    process.send({ result: { ...j, files: artifact.files, errors: artifact.facts.errors || [], stale } });
   } catch (err) {
     process.send({ error: err.message });
   }

@@ -16,7 +16,7 @@ import { CHROMIUM, CHROMIUM_HOW, CHROMIUM_INSTALL, CHROMIUM_MISSING } from './ch
 import { FIREFOX, FIREFOX_INSTALL, FIREFOX_MISSING } from './firefox.js';
 import { versionOfExecutable, nameOfVersionLine } from './browser-version.js';
 import { gradeInFirefox } from './grade-firefox.js';
-import { auditAgain } from './audit-only.js';
+import { auditAgain, regatherLines } from './audit-only.js';
 import { takeIn } from './intake/batch.js';
 import { dueTime } from './intake/formats.js';
 import { readClass } from './class-results.js';
@@ -53,7 +53,11 @@ fail) with reasons, from what the slide's step asks for. Our reference part is d
   --report-only     rebuild the report from the parts already graded in --out
   --audit-only OUT  judge the parts graded in OUT again from their saved artifacts (OUT/artifacts/), with
                     the rubric given (--rubric) and no browser, in seconds; rewrites OUT's results and
-                    report (with --labels, the agreement too)
+                    report (with --labels, the agreement too). A part whose gathering read a key that
+                    rubric changes (a slider's change bound, how many controls to try: the keys are
+                    in its facts.json, gatheredWith) is named: its verdict stands on what was
+                    gathered under the old value
+  --regather-changed  with --audit-only: gathers those parts again in the browser, under that rubric
   --workers N       parts graded at once (default 2)
   --labels FILE     your own labels (TSV: submission, part, label = correct | partial | broken, reasons):
                     the report and stdout add the agreement per part, a label × verdict table and
@@ -115,6 +119,7 @@ function parseArgs(argv) {
     }
     else if (a === '--report-only') o.reportOnly = true;
     else if (a === '--audit-only') o.auditOnly = next();
+    else if (a === '--regather-changed') o.regatherChanged = true;
     else if (a === '--similarity-only') o.similarityOnly = true;
     else if (a === '--similarity-bound') o.similarityBound = parseBound(next()) ?? fail(`--similarity-bound takes a number in (0, 1]\n\n${HELP}`, 2);
     else if (a === '--part') {
@@ -124,6 +129,7 @@ function parseArgs(argv) {
     } else if (a.startsWith('--')) fail(`unknown option ${a}\n\n${HELP}`, 2);
     else o.positional.push(a);
   }
+  if (o.regatherChanged && !o.auditOnly) fail(`--regather-changed goes with --audit-only <out>\n\n${HELP}`, 2);
   if (o.similarityOnly && !o.batch) fail(`--similarity-only compares a class: give --batch <folder>\n\n${HELP}`, 2);
   if (!o.batch && o.positional.length !== 1 && !o.reportOnly && !o.auditOnly) fail(`give one submission folder or --batch <folder>\n\n${HELP}`, 2);
   return o;
@@ -177,8 +183,19 @@ async function main() {
   if (o.auditOnly) {
     if (!existsSync(path.join(out, 'parts'))) fail(`nothing graded in ${out}: --audit-only judges a class graded before (its artifacts/ and parts/)`);
     const t0 = Date.now();
-    const { audited, without } = await auditAgain(out, rubric, (k, n) => { if (process.stdout.isTTY) process.stdout.write(`\rgrade: audited ${k} of ${n} parts`); });
+    const progress = (k, n) => { if (process.stdout.isTTY) process.stdout.write(`\rgrade: audited ${k} of ${n} parts`); };
+    let { audited, without, stale, unknown } = await auditAgain(out, rubric, progress);
     console.log(`\rgrade: audited ${audited} parts from their artifacts in ${((Date.now() - t0) / 1000).toFixed(1)} s${without.length ? `; ${without.length} without an artifact kept their verdict (${without.join(', ')})` : ''}`);
+    if (stale.length && o.regatherChanged) {
+      // the parts whose gathering read a key this rubric changes, gathered again under it (their plan's items)
+      const planned = existsSync(path.join(out, 'plan.json')) ? JSON.parse(readFileSync(path.join(out, 'plan.json'), 'utf8')).items : [];
+      const items = planned.filter((x) => stale.some((s) => s.name === x.name && s.part === x.part));
+      console.log(`grade: --regather-changed: gathering ${items.length} of ${stale.length} part(s) again under this rubric`);
+      if (items.length) await runPlan(o, out, rubric, items, path.join(out, 'plan-regather.json'));
+      ({ stale, unknown } = await auditAgain(out, rubric, progress));
+    }
+    for (const line of regatherLines(stale)) console.log(`grade: ${line}${o.regatherChanged ? '' : ' (--regather-changed does it)'}`);
+    if (unknown.length) console.log(`grade: ${unknown.length} part(s) were gathered before artifacts kept the rubric keys their gathering read: whether this rubric would gather them otherwise is not known (grade them again to know): ${unknown.join(', ')}`);
   } else if (!o.reportOnly && !o.similarityOnly && submissions.length) {
     await gradeParts(o, out, rubric, submissions);
   }
@@ -188,12 +205,6 @@ async function main() {
 
 /** The parts of `submissions` graded in the browser the options name (Chromium through Playwright, or Firefox), into `out`. */
 async function gradeParts(o, out, rubric, submissions) {
-  const browser = o.browser || 'chromium';
-  if (browser === 'firefox' && !FIREFOX) fail(`${FIREFOX_MISSING}\n(or grade in Chromium: leave out --browser firefox)`);
-  if (browser === 'chromium' && !CHROMIUM) fail(CHROMIUM_MISSING);
-  const executable = browser === 'firefox' ? FIREFOX : CHROMIUM;
-  // the browser's own name ("Chromium", "Google Chrome", "Mozilla Firefox"): the report adds the version that ran
-  const browserName = nameOfVersionLine(versionOfExecutable(executable), browser === 'firefox' ? 'Firefox' : 'Chromium');
   const items = [];
   for (const s of submissions) {
     const parts = findParts(s.root, o.batch ? {} : o.parts);
@@ -209,10 +220,21 @@ async function gradeParts(o, out, rubric, submissions) {
   // together on the short ones: a class's time is then near its sum over the workers
   const FIRST = ['WP04P4', 'WP04P3', 'WP04P5', 'WP04P2', 'WP04P1'];
   items.sort((a, b) => FIRST.indexOf(a.part) - FIRST.indexOf(b.part));
-  const planFile = path.join(out, 'plan.json');
+  await runPlan(o, out, rubric, items, path.join(out, 'plan.json'));
+}
+
+/** `items` (a plan's parts) graded in the browser the options name, under `rubric`, into `out`; the plan written to `planFile`. */
+async function runPlan(o, out, rubric, items, planFile) {
+  const browser = o.browser || 'chromium';
+  if (browser === 'firefox' && !FIREFOX) fail(`${FIREFOX_MISSING}\n(or grade in Chromium: leave out --browser firefox)`);
+  if (browser === 'chromium' && !CHROMIUM) fail(CHROMIUM_MISSING);
+  const executable = browser === 'firefox' ? FIREFOX : CHROMIUM;
+  // the browser's own name ("Chromium", "Google Chrome", "Mozilla Firefox"): the report adds the version that ran
+  const browserName = nameOfVersionLine(versionOfExecutable(executable), browser === 'firefox' ? 'Firefox' : 'Chromium');
+  const submissions = new Set(items.map((x) => x.name));
   const plan = { repo, out, browser, browserName, browserPath: executable, rubric, timeoutSeconds: rubric.timeoutSeconds, referenceSeconds: REFERENCE_SECONDS, items };
   writeFileSync(planFile, JSON.stringify(plan, null, 1));
-  console.log(`grade: ${submissions.length} submission(s), ${items.length} parts in ${browserName} (${executable}${browser === 'chromium' ? `, found by ${CHROMIUM_HOW}` : ''}); ${o.workers || 2} at a time, at most ${rubric.timeoutSeconds} s for each student page, and ${REFERENCE_SECONDS} s more for our reference`);
+  console.log(`grade: ${submissions.size} submission(s), ${items.length} parts in ${browserName} (${executable}${browser === 'chromium' ? `, found by ${CHROMIUM_HOW}` : ''}); ${o.workers || 2} at a time, at most ${rubric.timeoutSeconds} s for each student page, and ${REFERENCE_SECONDS} s more for our reference`);
   if (browser === 'firefox') {
     // (--shard I/N: every N-th part from the I-th, as a class is split over machines)
     const [i, n] = (o.shard || '1/1').split('/').map(Number);

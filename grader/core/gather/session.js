@@ -5,6 +5,7 @@
 // clock is an outer bound only: past `deadline` a step throws TooSlow. The page's own work over the
 // gathering (vertices, and draw calls at drawCallWork each) is bounded by a count, the rubric's
 // gatherWork: past it a frame throws TooHeavy, at the same step on every machine.
+import { recording } from './reads.js';
 import { analyse, pictureChange } from '../measure.js';
 import { describe, effectOf } from '../controls.js';
 
@@ -36,14 +37,16 @@ export const effectWords = {
  */
 // eslint-disable-next-line max-lines-per-function -- over 80 lines: still to split into named parts (issue 40)
 export function session(page, { part, rubric, progress = () => {}, deadline = Infinity }) {
-  const T = rubric.thresholds;
+  // every threshold and control pattern the gathering reads, with its value (reads.js)
+  const gatheredWith = { [`parts.${part}.must`]: (rubric.parts[part] || {}).must };
+  const T = recording(rubric.thresholds, gatheredWith);
   const facts = {
     part, api: null, canvas: null, tooSlow: null,
     actions: [], roles: {}, controls: [], trials: [], views: [], ladder: [], sliders: [],
-    work: { frames: 0, draws: 0, vertices: 0 },
+    work: { frames: 0, draws: 0, vertices: 0 }, gatheredWith,
   };
   const S = {
-    page, rubric, T, P: rubric.controls, part, facts,
+    page, rubric, T, P: recording(rubric.controls, gatheredWith, 'controls.'), part, facts,
     must: new Set((rubric.parts[part] || {}).must || []),
     images: {}, // name → { width, height, data }
     cur: null, // the picture as it is now: { img, an }

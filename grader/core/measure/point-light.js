@@ -12,10 +12,11 @@ import { lineFit } from './linear.js';
  * with g = 1/‖p_ℓ − x‖² (fall-off) or g = 1 (none). Both models hold a directional light (d → ∞),
  * so a far or directional light fits both alike: only a near light tells them apart. Pixels above
  * both fits (a highlight) and clipped ones are left out. Returns the best of each model. `T`: the
- * rubric's thresholds, with `around` (a direction: only light directions within the cone whose cosine is pointLightConeCosine, 60°, are tried) or none.
+ * rubric's thresholds; `around` a direction (only light directions within the cone whose cosine is
+ * pointLightConeCosine, 60°, are tried) or null.
  */
 // eslint-disable-next-line max-lines-per-function -- over 80 lines: still to split into named parts (issue 40)
-export function pointLightFit(pts, T) {
+export function pointLightFit(pts, T, around = null) {
   const use0 = pts.map((s) => Math.max(...s.c) < 0.985);
   if (use0.filter(Boolean).length < T.minModelSamples) return null;
   for (const s of pts) s.y = luminance(s.c);
@@ -90,7 +91,6 @@ export function pointLightFit(pts, T) {
   };
   let use = use0;
   let none = null, inv = null;
-  const around = T.around || null;
   const dirs = DIRS.filter((l) => !around || l[0] * around[0] + l[1] * around[1] + l[2] * around[2] > T.pointLightConeCosine);
   for (let pass = 0; pass < 2; pass++) {
     const coarse = grid(use, dirs);

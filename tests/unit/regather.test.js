@@ -1,0 +1,75 @@
+// A rubric key the gathering reads (a slider's change bound, how many controls to try) decides what
+// is gathered, so --audit-only under another value cannot judge what was never gathered: each
+// artifact keeps the keys its gathering read (facts.gatheredWith, grader/core/gather/reads.js), and
+// --audit-only names the parts to gather again. Held on the recorded fixture class: dee's and
+// carla's WP04P4 have sliders that act only on the change event.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { cpSync, mkdirSync, mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
+import os from 'node:os';
+import path from 'node:path';
+import { spawnSync } from 'node:child_process';
+import { fileURLToPath } from 'node:url';
+import { auditDirs } from '../../grader/node/audit-pool.js';
+import { regatherLines } from '../../grader/node/audit-only.js';
+import { recording, staleKeys } from '../../grader/core/gather/reads.js';
+import { mergeRubric } from '../../grader/core/rubric.js';
+
+const here = path.dirname(fileURLToPath(import.meta.url));
+const root = path.join(here, '../..');
+const RECORDED = path.join(here, '../fixtures/artifacts');
+const read = (f) => JSON.parse(readFileSync(f, 'utf8'));
+const shipped = read(path.join(root, 'grader/core/rubric.json'));
+const rubric = mergeRubric(shipped, read(path.join(here, '../fixtures/test-rubric.json')));
+const changed = mergeRubric(rubric, { thresholds: { sliderChange: rubric.thresholds.sliderChange * 2 } });
+const PARTS = [['dee', 'WP04P4'], ['carla', 'WP04P4'], ['ada', 'WP04P1']];
+const dirOf = (name, part) => path.join(RECORDED, name, part);
+
+test('the recorder notes each key read once, with its value; staleKeys names the keys a rubric changes', () => {
+  const into = {};
+  const T = recording({ a: 1, b: [2, 3], c: 4 }, into);
+  assert.equal(T.a + T.a + T.b[1], 5);
+  assert.equal(T.missing, undefined);
+  assert.deepEqual(into, { a: 1, b: [2, 3] });
+  const P = recording({ orbit: 'orbit|spin' }, into, 'controls.');
+  assert.equal(P.orbit, 'orbit|spin');
+  assert.deepEqual(staleKeys({ ...into, 'controls.orbit': 'orbit|spin' }, { thresholds: { a: 1, b: [2, 3] }, controls: { orbit: 'orbit|spin' } }), []);
+  assert.deepEqual(staleKeys({ ...into, 'controls.orbit': 'orbit' }, { thresholds: { a: 2, b: [2, 3] }, controls: { orbit: 'orbit|spin' } }), ['a', 'controls.orbit']);
+  assert.deepEqual(staleKeys({ 'parts.WP04P1.must': ['sphere'] }, { thresholds: {}, parts: { WP04P1: { must: ['sphere', 'perspective'] } } }), ['parts.WP04P1.must']);
+  assert.equal(staleKeys(undefined, rubric), null); // gathered before artifacts kept what they read: not known
+});
+
+test('--audit-only under a changed sliderChange names the parts whose gathering read it, and no others', async () => {
+  const dee = read(path.join(dirOf('dee', 'WP04P4'), 'facts.json'));
+  assert.ok('sliderChange' in dee.gatheredWith, 'the gathering of a part with sliders reads sliderChange');
+  // a key only the audits read, and one the gathering of these parts never did: nothing to gather again
+  const auditOnlyKey = Object.keys(rubric.thresholds).find((k) => typeof rubric.thresholds[k] === 'number' &&
+    PARTS.every(([n, p]) => !(k in read(path.join(dirOf(n, p), 'facts.json')).gatheredWith)));
+  assert.ok(auditOnlyKey, 'some threshold is read by the audits alone');
+  const judged = await auditDirs(PARTS.map(([n, p]) => dirOf(n, p)), changed);
+  assert.deepEqual(PARTS.map(([n, p]) => judged.get(dirOf(n, p)).stale), [['sliderChange'], ['sliderChange'], []]);
+  const same = await auditDirs(PARTS.map(([n, p]) => dirOf(n, p)), mergeRubric(rubric, { thresholds: { [auditOnlyKey]: rubric.thresholds[auditOnlyKey] * 2 } }));
+  assert.deepEqual(PARTS.map(([n, p]) => same.get(dirOf(n, p)).stale), [[], [], []]);
+  assert.deepEqual(regatherLines([{ name: 'dee', part: 'WP04P4', keys: ['sliderChange'] }, { name: 'carla', part: 'WP04P4', keys: ['sliderChange'] }]),
+    ['re-gather these 2 parts for `sliderChange` (their gathering read it, under another value): dee WP04P4, carla WP04P4']);
+});
+
+test('npm run grade -- --audit-only OUT --rubric names them on its output and in their results', () => {
+  const out = mkdtempSync(path.join(os.tmpdir(), 'regather-'));
+  try {
+    for (const [name, part] of PARTS) {
+      cpSync(dirOf(name, part), path.join(out, 'artifacts', name, part), { recursive: true });
+      mkdirSync(path.join(out, 'parts', name), { recursive: true });
+      writeFileSync(path.join(out, 'parts', name, `${part}.json`), JSON.stringify({ name, part, status: 'ok', verdict: 'pass', reasons: [], errors: [], blocked: [], notes: [] }));
+    }
+    const file = path.join(out, 'changed.json');
+    writeFileSync(file, JSON.stringify({ ...read(path.join(here, '../fixtures/test-rubric.json')), thresholds: { sliderChange: changed.thresholds.sliderChange } }));
+    const run = spawnSync(process.execPath, [path.join(root, 'grader/node/grade.js'), '--audit-only', out, '--rubric', file], { encoding: 'utf8' });
+    assert.equal(run.status, 0, run.stderr);
+    assert.match(run.stdout, /re-gather these 2 parts for `sliderChange` \(their gathering read it, under another value\): carla WP04P4, dee WP04P4 \(--regather-changed does it\)/);
+    assert.deepEqual(read(path.join(out, 'parts', 'dee', 'WP04P4.json')).regather, ['sliderChange']);
+    assert.equal(read(path.join(out, 'parts', 'ada', 'WP04P1.json')).regather, undefined);
+  } finally {
+    rmSync(out, { recursive: true, force: true });
+  }
+});
