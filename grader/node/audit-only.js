@@ -49,5 +49,8 @@ export async function auditAgain(out, rubric, progress = () => {}) {
 export function regatherLines(stale) {
   const byKey = new Map();
   for (const s of stale) for (const k of s.keys) byKey.set(k, [...(byKey.get(k) || []), `${s.name} ${s.part}`]);
-  return [...byKey].map(([k, parts]) => `re-gather these ${parts.length} part${parts.length === 1 ? '' : 's'} for \`${k}\` (their gathering read it, under another value): ${parts.join(', ')}`);
+  return [...byKey].map(([k, parts]) => {
+    const one = parts.length === 1;
+    return `re-gather ${one ? 'this part' : `these ${parts.length} parts`} for \`${k}\` (${one ? 'its' : 'their'} gathering read it, under another value): ${parts.join(', ')}`;
+  });
 }
