@@ -70,12 +70,18 @@ export function placeView(seen, views, T) {
   return place;
 }
 
+/** Does a picture show a highlight over its own diffuse fit? (The gatherer raising ks acts on it; the audit reads it again.) */
+export const highlightIn = (img, T) => {
+  const f = img && fullFit(img, T);
+  return !!f && highlightSeen(f, T);
+};
+
 /**
- * The highlight as the page's own sliders showed it once raised (`raised`: [{ role, image, seen,
- * broad }] in the order set): { fit, broad, where } or null.
+ * The highlight as the page's own sliders showed it once raised (`raised`: [{ role, image, broad }]
+ * in the order set; each picture read again here): { fit, broad, where } or null.
  */
 export function raisedSeen(raised, images, T) {
-  const k = raised.findIndex((x) => x.seen);
+  const k = raised.findIndex((x) => x.image && highlightIn(images[x.image], T));
   if (k < 0) return null;
   const x = raised[k];
   const img = images[x.image];

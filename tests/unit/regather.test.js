@@ -73,3 +73,17 @@ test('npm run grade -- --audit-only OUT --rubric names them on its output and in
     rmSync(out, { recursive: true, force: true });
   }
 });
+
+test("the audit decides a slider's event from the picture changes the gathering recorded, under the rubric it is given", async () => {
+  const carla = dirOf('carla', 'WP04P4');
+  const facts = read(path.join(carla, 'facts.json'));
+  assert.ok(facts.sliders.every((x) => x.changed && x.changed.input <= rubric.thresholds.sliderChange), 'carla\'s sliders show nothing on input');
+  const said = async (r) => (await auditDirs([carla], r)).get(carla).checks.filter((c) => c.id === 'input-event' || c.id === 'sliders').map((c) => c.reason).join(' | ');
+  assert.match(await said(rubric), /update the picture only on the change event/);
+  // a change bound above every change recorded: no slider changes the picture (and the part is named to gather again)
+  const most = Math.max(...facts.sliders.map((x) => x.changed.change ?? 0));
+  const strict = mergeRubric(rubric, { thresholds: { sliderChange: most + 0.01 } });
+  assert.match(await said(strict), /no slider changes the material or light/);
+  assert.deepEqual((await auditDirs([carla], strict)).get(carla).stale, ['sliderChange']);
+});
+

@@ -16,12 +16,20 @@ const SLIDERS = ['kd', 'ks', 's', 'Le', 'La'];
 
 /**
  * The event a slider acted on: where the picture moved by itself while it was tried, what the page
- * sent differently on each event (s.sent) decides; elsewhere the pictures did, while gathering (s.how).
+ * sent differently on each event (s.sent) decides; elsewhere how much the picture changed on each
+ * event tried (s.changed), against sliderChange (an artifact from before those were kept: the
+ * gathering's reading, s.how). The change event was tried only where the input event showed nothing
+ * to the gathering's sliderChange: under a rubric that asks more, it is not known (the part is named
+ * to gather again).
  */
-function eventOf(s) {
-  if (!s.moving || !s.sent) return s.how;
-  if (sliderActed({ moving: true, sent: s.sent.input })) return 'input';
-  return s.sent.change && sliderActed({ moving: true, sent: s.sent.change }) ? 'change' : 'none';
+function eventOf(s, T) {
+  if (s.moving && s.sent) {
+    if (sliderActed({ moving: true, sent: s.sent.input })) return 'input';
+    return s.sent.change && sliderActed({ moving: true, sent: s.sent.change }) ? 'change' : 'none';
+  }
+  if (!s.changed) return s.how;
+  if (s.changed.input > T.sliderChange) return 'input';
+  return s.changed.change !== null && s.changed.change > T.sliderChange ? 'change' : 'none';
 }
 
 /** The sliders tried (facts.sliders), against the judged view (`judged`: { an }) and its shading. */
@@ -37,7 +45,7 @@ export function auditSliders({ facts, images, T, must, sayAs, rubric, part }, ju
   const together = {}; // role → how its sliders moved together (ks r, g, b: one parameter)
   for (const s of facts.sliders) {
     const { role, target } = s;
-    const how = eventOf(s);
+    const how = eventOf(s, T);
     if (how !== 'none' && !s.levelSlider) {
       if (role && !found[role]) found[role] = true;
       if (role && s.controls) together[role] = `${s.controls.length} sliders (${s.channels}) moved together`;

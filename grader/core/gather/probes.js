@@ -6,6 +6,7 @@ import { samples, normalColours, facesViewer, shadeFit, highlightSeen, pictureCh
 import { nameRole, parameterGroups, describeGroup, sentChanges, sliderActed } from '../controls.js';
 import { readSent } from './geometry.js';
 import { lightAngle } from '../views.js';
+import { highlightIn } from '../evidence.js';
 import { searchOrbit } from './orbit.js';
 
 const role = (S, c) => nameRole(c, S.P);
@@ -99,8 +100,7 @@ export async function raiseHighlight(S, controls) {
     set.push(g);
     await S.tick(100);
     const sh = await S.shot();
-    const f = sh && !sh.an.blank ? shadeFit(samples(sh.img, sh.an), T) : null;
-    const seen = !!f && highlightSeen(f, T);
+    const seen = !!sh && highlightIn(sh.img, T);
     raised.push({ role: r, ...groupFacts(g, vs), value: vs[0], broad: r === 's' && s10(c) < Number(S.now(c)), image: sh ? S.keep(`raised-${r}`, sh.img) : null, seen });
     S.act(`set ${describeGroup(g)} to ${vs[0]} to look for a highlight${seen ? ': one shows' : ''}`);
   }
@@ -131,18 +131,22 @@ export async function trySliders(S, controls) {
     let after = await S.page.snap();
     // what the page sent differently (sentChanges) decides where the picture moves by itself
     const sent = { input: sentChanges(sentBefore, await readSent(S), animated), change: null };
+    // how much the picture changed on each event tried (the audit decides the event from these);
+    // the change event is tried where the input event showed nothing
+    const changed = { input: pictureChange(base, after, T), change: null };
     let how = 'input';
-    if (!sliderActed({ moving: S.moving, picture: pictureChange(base, after, T) > T.sliderChange, sent: sent.input })) {
+    if (!sliderActed({ moving: S.moving, picture: changed.input > T.sliderChange, sent: sent.input })) {
       await setGroup(S, g, target, ['change']);
       await S.tick(100);
       after = await S.page.snap();
       sent.change = sentChanges(sentBefore, await readSent(S), animated);
-      how = sliderActed({ moving: S.moving, picture: pictureChange(base, after, T) > T.sliderChange, sent: sent.change }) ? 'change' : 'none';
+      changed.change = pictureChange(base, after, T);
+      how = sliderActed({ moving: S.moving, picture: changed.change > T.sliderChange, sent: sent.change }) ? 'change' : 'none';
     }
     const r = k && k !== 'levelSlider' ? k : null;
     S.act(`set ${describeGroup(g)} to ${vs[0]} (${how === 'none' ? 'no visible change' : `the picture changed on the ${how} event`})`);
     if (how !== 'none' && k !== 'levelSlider') facts.roles[r || `slider ${Object.keys(facts.roles).length}`] = `${describeGroup(g)}: changes the shading on ${how}`;
-    facts.sliders.push({ ...groupFacts(g, vs), role: r, levelSlider: k === 'levelSlider', target: vs[0], how, ...(S.moving && sent.input ? { moving: true, sent } : {}), image: S.keep(`slider-${facts.sliders.length}`, after) });
+    facts.sliders.push({ ...groupFacts(g, vs), role: r, levelSlider: k === 'levelSlider', target: vs[0], how, changed, ...(S.moving && sent.input ? { moving: true, sent } : {}), image: S.keep(`slider-${facts.sliders.length}`, after) });
     // back to where it was (drawn with the next slider's frame, or the last one below)
     await setGroup(S, g, (c) => S.now(c));
   }
