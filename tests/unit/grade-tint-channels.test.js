@@ -103,8 +103,8 @@ test('clippedShare: the share of the sphere washed out to white', () => {
   const washed = sphere((n) => { const d = Math.max(dot(n, wi), 0); return [1, 0.96, 0.9].map((c) => c * 1.44 * (0.5 + 1.5 * d)); });
   const fine = sphere((n) => { const d = Math.max(dot(n, wi), 0); return [1, 0.96, 0.9].map((c) => c * 0.72 * (0.5 + 0.75 * d)); });
   const a = analyse(washed, T), b = analyse(fine, T);
-  assert.ok(clippedShare(washed, a) >= T.clippedShare, String(clippedShare(washed, a)));
-  assert.ok(clippedShare(fine, b) <= T.unclippedShare, String(clippedShare(fine, b)));
+  assert.ok(clippedShare(washed, a, T) >= T.clippedShare, String(clippedShare(washed, a, T)));
+  assert.ok(clippedShare(fine, b, T) <= T.unclippedShare, String(clippedShare(fine, b, T)));
 });
 
 test('a highlight at the light is a review on a plain material, and a note where the tint makes the fitted light unsure', async () => {

@@ -15,10 +15,10 @@ function numericGroups(S, controls, roles) {
   return roles.map((r) => groups.find((g) => g.role === r && g.controls.every((c) => c.type !== 'color'))).filter(Boolean);
 }
 
-/** The share of the sphere's samples (the judged view's outline `an`) white (every channel clipped). */
-export function clippedShare(img, an) {
+/** The share of the sphere's samples (the judged view's outline `an`) white (every channel at clippedLevel). */
+export function clippedShare(img, an, T) {
   const pts = samples(img, an);
-  return pts.length ? pts.filter((s) => Math.min(...s.c) >= 0.98).length / pts.length : 0;
+  return pts.length ? pts.filter((s) => Math.min(...s.c) >= T.clippedLevel).length / pts.length : 0;
 }
 
 /**
@@ -29,7 +29,7 @@ export function clippedShare(img, an) {
  */
 export async function unclip(S, controls, img, an) {
   const { T, facts } = S;
-  const before = clippedShare(img, an);
+  const before = clippedShare(img, an, T);
   if (before < T.clippedShare) return null;
   const groups = numericGroups(S, controls, ['kd', 'Le', 'La']);
   if (!groups.length) return null;
@@ -47,7 +47,7 @@ export async function unclip(S, controls, img, an) {
     const sh = await S.shot();
     if (!sh || sh.an.blank) break;
     shot = sh;
-    share = clippedShare(sh.img, an);
+    share = clippedShare(sh.img, an, T);
     steps.push({ role: g.role, control: g.controls[0].index, value: vs[0] });
     S.act(`set the ${g.role} slider to ${vs[0]} (the picture clipped to white over ${Math.round(100 * before)}% of the sphere; now ${Math.round(100 * share)}%)`);
   }

@@ -17,7 +17,7 @@ import { lineFit } from './linear.js';
  */
 // eslint-disable-next-line max-lines-per-function -- over 80 lines: still to split into named parts (issue 40)
 export function pointLightFit(pts, T, around = null) {
-  const use0 = pts.map((s) => Math.max(...s.c) < 0.985);
+  const use0 = pts.map((s) => Math.max(...s.c) < T.clippedLevel); // (a channel clipped at white says nothing of the fall-off)
   if (use0.filter(Boolean).length < T.minModelSamples) return null;
   for (const s of pts) s.y = luminance(s.c);
   const DIST = [1.25, 1.5, 1.75, 2, 2.5, 3, 4, 5, 7, 10, 20, 1e4];
