@@ -18,7 +18,7 @@ import { webgpuCaptureScript } from '../grader/browser/webgpu-capture.js';
 import { gradePart } from '../grader/core/grade-part.js';
 import { judgement, notJudgedHere } from '../grader/core/part-result.js';
 import { timedOut, notOpened, graderTrouble } from '../grader/core/audits/page.js';
-import { referenceQuery } from '../grader/core/reference-state.js';
+import { referenceQuery, referencePicture } from '../grader/core/reference-state.js';
 import { deadlineOf } from '../grader/core/deadline.js';
 import { NOT_CHECKED, notCheckedHere } from './not-checked.js';
 
@@ -140,16 +140,16 @@ export async function drawReference({ result, rubric, session, stage }) {
     if (how !== 'load') return null;
     await session.idle(500, 5000);
     const fp = framePage(frame, session.log);
-    await fp.tick(500, 30);
     // our pages publish window.scene after each frame drawn: wait for one (a loaded machine is slow)
-    const drawn = () => frame.contentWindow.scene && frame.contentWindow.scene.frame >= 1;
-    for (const until = performance.now() + 1000 * rubric.firstFrameSeconds; !drawn() && performance.now() < until;) {
-      await sleep(100);
-      await fp.tick(16);
-    }
-    if (!drawn()) return null;
-    const img = await fp.snap();
-    return img && img.width === judged.width && img.height === judged.height ? img : null;
+    const shows = () => frame.contentWindow.scene && frame.contentWindow.scene.frame >= 1;
+    const drawn = async () => {
+      for (const until = performance.now() + 1000 * rubric.firstFrameSeconds; !shows() && performance.now() < until;) {
+        await sleep(100);
+        await fp.tick(16);
+      }
+      return shows();
+    };
+    return (await referencePicture(fp, judged, drawn)).img;
   } finally {
     frame.remove();
   }

@@ -36,3 +36,22 @@ export function referenceStateOf(query, scene) {
     query: query.toString(),
   };
 }
+
+/** How long our reference runs before its picture is taken: the jump, then frames at 60 Hz (our own page, not a bound on a student's). */
+const SETTLE = { ms: 500, frames: 30 };
+
+/**
+ * Our reference's picture, drawn as the grader and the check page both draw it (opened by the
+ * caller with referenceQuery's settings, through the page interface `driver`): run SETTLE, wait for
+ * `drawn` (the check page polls our page's window.scene there), then read back. { img, why }: img
+ * null where nothing comparable was drawn, `why` then says so where it is worth a note.
+ */
+export async function referencePicture(driver, judged, drawn = async () => true) {
+  await driver.tick(SETTLE.ms, SETTLE.frames);
+  if (!(await drawn())) return { img: null, why: null };
+  const img = await driver.snap();
+  if (img && (img.width !== judged.width || img.height !== judged.height)) {
+    return { img: null, why: `our reference drew ${img.width}×${img.height}, not ${judged.width}×${judged.height}: not compared` };
+  }
+  return { img: img || null, why: null };
+}

@@ -15,7 +15,7 @@ import { missingPage, timedOut, stoppedAtFirstFrame, tooSlow, linkedPage, notOpe
 import { deadlineOf } from '../core/deadline.js';
 import { FIRST_FRAME } from '../core/gather/index.js';
 import { gradePart, addTime } from '../core/grade-part.js';
-import { referenceQuery, referenceStateOf } from '../core/reference-state.js';
+import { referenceQuery, referenceStateOf, referencePicture } from '../core/reference-state.js';
 
 // the message of an error thrown because Playwright's time bound closed the part's page (the result stays 'timeout')
 const CLOSED = /Test ended|Target page, context or browser has been closed/;
@@ -108,8 +108,9 @@ async function drawReference({ item, plan, openers, result, graded }) {
   try {
     const r = await openers.reference.open({ root: plan.repo, rel: `${item.part}/index.html`, query: query.toString(), loadSeconds: plan.rubric.loadSeconds, log: refLog });
     if (!r.why) {
-      await r.driver.tick(500, 30);
-      ref = await r.driver.snap();
+      const drawn = await referencePicture(r.driver, graded.images.judged);
+      ref = drawn.img;
+      if (drawn.why) result.notes.push(drawn.why);
       const scene = await r.page.evaluate(() => window.scene || null).catch(() => null);
       result.referenceState = referenceStateOf(query, scene);
     }
@@ -118,13 +119,12 @@ async function drawReference({ item, plan, openers, result, graded }) {
     await openers.reference.done(false);
     result.notes.push(`our reference could not be drawn: ${err.message.split('\n')[0]}`);
   }
-  const { width, height } = graded.images.judged;
-  if (ref && ref.width === width && ref.height === height) {
+  if (ref) {
     const cmp = compareImages(PNG.sync.read(pngOf(ref)), PNG.sync.read(pngOf(graded.images.judged)));
     Object.assign(result, { mismatch: cmp.mismatch, rmse: cmp.rmse, comparison: cmp.comparison, mismatchFull: cmp.mismatchFull, mismatchObject: cmp.mismatchObject });
     result.notes.push(...cmp.notes, `the reference is our page at the same canvas size${result.referenceState && result.referenceState.light ? ', lit from the fitted light' : ''}; the difference is evidence, the verdict comes from the checks`);
     writeFileSync(path.join(dir, `${stem}-reference.png`), PNG.sync.write(cmp.reference));
     writeFileSync(path.join(dir, `${stem}-diff.png`), PNG.sync.write(cmp.diff));
     Object.assign(result.images, { reference: hrefOf(plan.out, path.join(dir, `${stem}-reference.png`)), diff: hrefOf(plan.out, path.join(dir, `${stem}-diff.png`)) });
-  } else if (ref) result.notes.push(`our reference drew ${ref.width}×${ref.height}, not ${width}×${height}: not compared`);
+  }
 }
