@@ -38,10 +38,24 @@ export async function gatherPart(page, { part, rubric, progress = () => {}, dead
   return { facts: S.facts, images: S.images };
 }
 
-// eslint-disable-next-line max-lines-per-function -- over 80 lines: still to split into named parts (issue 40)
+/** The part gathered in the order a teacher works: the first frame, the controls, the orbit and the level, then what the step asks to be tried. */
 async function gather(S) {
+  const first = await firstFrame(S);
+  if (!first || first.an.blank) return;
+  const controls = await S.page.controls();
+  S.facts.controls = controls;
+  S.cur = first;
+  const judged = await orbitAndLevel(S, controls);
+  if (judged) await whatTheStepAsks(S, controls, judged.img);
+}
+
+/**
+ * The first frame: frames run only once nothing the page awaits in real time is pending; a page
+ * that shows one colour has a counted number of frames more. facts.first, facts.canvas and the
+ * picture `first`; returns the first shot ({ img, an }) or null (no canvas).
+ */
+async function firstFrame(S) {
   const { page, T, facts, must } = S;
-  // ---- the first frame: frames run only once nothing the page awaits in real time is pending ----
   S.step(FIRST_FRAME);
   await S.settle();
   await S.tick(1000, 1);
@@ -58,7 +72,7 @@ async function gather(S) {
   facts.first = { api: g.api, adapter: g.adapter, draws: g.draws, shaderErrors: g.shaderErrors, gpuErrors: g.gpuErrors,
     ...(g.webgpuMissing ? { webgpuMissing: true } : {}) }; // it asked for WebGPU where the browser has none (Firefox ESR)
   let firstShot = await S.shot();
-  if (!firstShot) return;
+  if (!firstShot) return null;
   // a page that drew without an error and shows one colour (its unlit side on a background of the
   // same colour, say) has its chance: a counted number of frames more, then the picture it shows then is its first
   if (firstShot.an.blank && g.draws > 0 && !g.shaderErrors.length && !g.gpuErrors.length) {
@@ -78,12 +92,16 @@ async function gather(S) {
   facts.canvas = { width: firstShot.img.width, height: firstShot.img.height };
   S.keep('first', firstShot.img);
   await compareShown(S, 'first');
-  if (firstShot.an.blank) return;
+  return firstShot;
+}
 
-  // ---- the controls, the orbit, the level ----
-  const controls = await page.controls();
-  facts.controls = controls;
-  S.cur = firstShot;
+/**
+ * The orbit found and stopped, the sphere subdivided until round (the ladder), the orbit looked at
+ * again where the shading needs it, and the level to judge: facts.orbit, facts.ladder, facts.judged.
+ * Returns the judged level's shot, or null where it is blank.
+ */
+async function orbitAndLevel(S, controls) {
+  const { facts, must } = S;
   await findOrbit(S, controls);
   const stopped = facts.stopped = !S.moving;
   await findLevel(S, controls);
@@ -123,10 +141,13 @@ async function gather(S) {
   facts.judgedLevel = j;
   facts.geometry = await readGeometry(S);
   facts.judged = facts.ladder[j].image;
-  if (ladder[j].an.blank) return;
+  return ladder[j].an.blank ? null : ladder[j];
+}
 
-  // ---- what the step asks to be tried ----
-  const img = ladder[j].img;
+/** What the step asks to be tried on the judged picture `img`: the faces, the shading made readable, the highlight, the sliders, s at its least, the highlight's place, the view all round. */
+async function whatTheStepAsks(S, controls, img) {
+  const { page, T, facts, must, orbit } = S;
+  const stopped = facts.stopped;
   const { an } = sphereView(img, T);
   if (must.has('frontFaces')) await probeFaces(S, controls, { img, an });
   if (must.has('depthCulling')) await probeDepthCulling(S, controls);

@@ -35,7 +35,6 @@ export const effectWords = {
  * A gathering session over `page` (the page interface) for `part`. `progress(text)` hears each
  * step; `deadline` (ms since the epoch) is the outer bound.
  */
-// eslint-disable-next-line max-lines-per-function -- over 80 lines: still to split into named parts (issue 40)
 export function session(page, { part, rubric, progress = () => {}, deadline = Infinity }) {
   // every threshold and control pattern the gathering reads, with its value (reads.js)
   const gatheredWith = { [`parts.${part}.must`]: (rubric.parts[part] || {}).must };
@@ -115,6 +114,14 @@ export function session(page, { part, rubric, progress = () => {}, deadline = In
       S.taken.add(c.index);
       facts.roles[role] = `${describe(c)}${c.events && c.events.length ? ` (listens: ${c.events.join(', ')})` : ''}: ${how}`;
     },
+  };
+  return Object.assign(S, trials(S));
+}
+
+/** The session's trials: a click, an action tried and what it did to the picture, the picture watched for motion. */
+function trials(S) {
+  const { page, T, facts } = S;
+  return {
     async press(c, what) {
       const r = await page.click(c);
       if (!r.ok) {
@@ -160,5 +167,4 @@ export function session(page, { part, rubric, progress = () => {}, deadline = In
       return S.moving;
     },
   };
-  return S;
 }

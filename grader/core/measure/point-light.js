@@ -15,87 +15,18 @@ import { lineFit } from './linear.js';
  * rubric's thresholds; `around` a direction (only light directions within the cone whose cosine is
  * pointLightConeCosine, 60°, are tried) or null.
  */
-// eslint-disable-next-line max-lines-per-function -- over 80 lines: still to split into named parts (issue 40)
 export function pointLightFit(pts, T, around = null) {
   const use0 = pts.map((s) => Math.max(...s.c) < T.clippedLevel); // (a channel clipped at white says nothing of the fall-off)
   if (use0.filter(Boolean).length < T.minModelSamples) return null;
   for (const s of pts) s.y = luminance(s.c);
-  const DIST = [1.25, 1.5, 1.75, 2, 2.5, 3, 4, 5, 7, 10, 20, 1e4];
-  // the samples as flat arrays, read by every fit below
-  const m = pts.length, nx = new Float64Array(m), ny = new Float64Array(m), nz = new Float64Array(m), ys = new Float64Array(m);
-  for (let i = 0; i < m; i++) [nx[i], ny[i], nz[i], ys[i]] = [pts[i].n[0], pts[i].n[1], pts[i].n[2], pts[i].y];
-  // (`keep`: the model's term at each sample, kept for the best fit only)
-  const fit = (use, l, d, falloff, keep = false) => {
-    let n = 0, sx = 0, sy = 0, sxx = 0, sxy = 0, syy = 0;
-    const xs = keep ? new Float64Array(m) : null;
-    for (let i = 0; i < m; i++) {
-      if (!use[i]) continue;
-      const x = pointLightTerm(nx[i], ny[i], nz[i], l, d, falloff);
-      const y = ys[i];
-      if (keep) xs[i] = x;
-      n++; sx += x; sy += y; sxx += x * x; sxy += x * y; syy += y * y;
-    }
-    return { ...solve(n, sy, syy, sx, sxx, sxy, l, d, falloff), xs };
-  };
-  // the coarse grid of lights for both models at once: a sample's w_i and ‖p_ℓ − x‖² serve both, and
-  // each model's sums are added up in the order fit() adds them (the same numbers to the last bit)
-  const grid = (use, dirs) => {
-    let none = null, inv = null;
-    // the samples used, in order, and their brightness sums (the same for every light tried)
-    let n = 0, sy = 0, syy = 0;
-    const at = new Int32Array(m);
-    for (let i = 0; i < m; i++) {
-      if (!use[i]) continue;
-      at[n++] = i;
-      sy += ys[i]; syy += ys[i] * ys[i];
-    }
-    for (const d of DIST) {
-      const g = (d - 1) * (d - 1);
-      for (const l of dirs) {
-        const px = d * l[0], py = d * l[1], pz = d * l[2];
-        let sx = 0, sxx = 0, sxy = 0, ux = 0, uxx = 0, uxy = 0;
-        for (let k = 0; k < n; k++) {
-          const i = at[k], n0 = nx[i], n1 = ny[i], n2 = nz[i];
-          // (pointLightTerm's w_i and ‖p_ℓ − x‖², computed once for both models)
-          const wx = px - n0, wy = py - n1, wz = pz - n2;
-          const r2 = wx * wx + wy * wy + wz * wz;
-          const cos = Math.max(0, (n0 * wx + n1 * wy + n2 * wz) / Math.sqrt(r2));
-          const x = cos * g / r2;
-          const y = ys[i];
-          sx += cos; sxx += cos * cos; sxy += cos * y;
-          ux += x; uxx += x * x; uxy += x * y;
-        }
-        const f = lineFit(n, sy, syy, sx, sxx, sxy), h = lineFit(n, sy, syy, ux, uxx, uxy);
-        if (f.b > 0 && (!none || f.sse < none.sse)) none = { ...f, l, d, falloff: false };
-        if (h.b > 0 && (!inv || h.sse < inv.sse)) inv = { ...h, l, d, falloff: true };
-      }
-    }
-    return { none, inv };
-  };
-  // from the grid's best, the direction refined, then the distance
-  const search = (use, falloff, coarse) => {
-    let best = coarse;
-    if (!best) return null;
-    for (let step = 0.1; step > 0.005; step /= 2) { // refine the direction, then the distance
-      for (const dd of [[1, 0, 0], [-1, 0, 0], [0, 1, 0], [0, -1, 0], [0, 0, 1], [0, 0, -1]]) {
-        const l = best.l.map((v, k) => v + step * dd[k]), len = Math.hypot(...l);
-        const f = fit(use, l.map((v) => v / len), best.d, falloff);
-        if (f.b > 0 && f.sse < best.sse) best = f;
-      }
-      for (const d of [Math.max(1.05, best.d * (1 - 2 * step)), Math.min(1e4, best.d * (1 + 2 * step))]) {
-        const f = fit(use, best.l, d, falloff);
-        if (f.b > 0 && f.sse < best.sse) best = f;
-      }
-    }
-    return fit(use, best.l, best.d, falloff, true);
-  };
+  const F = flat(pts);
   let use = use0;
   let none = null, inv = null;
   const dirs = DIRS.filter((l) => !around || l[0] * around[0] + l[1] * around[1] + l[2] * around[2] > T.pointLightConeCosine);
   for (let pass = 0; pass < 2; pass++) {
-    const coarse = grid(use, dirs);
-    none = search(use, false, coarse.none);
-    inv = search(use, true, coarse.inv);
+    const coarse = grid(F, use, dirs);
+    none = search(F, use, false, coarse.none);
+    inv = search(F, use, true, coarse.inv);
     if (!none || !inv) return null;
     if (pass === 0) {
       const margin = T.highlightFitMargin;
@@ -115,6 +46,86 @@ export function pointLightFit(pts, T, around = null) {
       highlightShare: hl.bright / pts.length, highlightNormal: hl.normal };
   };
   return { falloff: brief(inv), none: brief(none), fitted: used / pts.length };
+}
+
+/** The distances tried (in sphere radii from the centre; 1e4: as good as directional). */
+const DIST = [1.25, 1.5, 1.75, 2, 2.5, 3, 4, 5, 7, 10, 20, 1e4];
+
+/** The samples as flat arrays (their normals and brightness), read by every fit below. */
+function flat(pts) {
+  const m = pts.length, nx = new Float64Array(m), ny = new Float64Array(m), nz = new Float64Array(m), ys = new Float64Array(m);
+  for (let i = 0; i < m; i++) [nx[i], ny[i], nz[i], ys[i]] = [pts[i].n[0], pts[i].n[1], pts[i].n[2], pts[i].y];
+  return { m, nx, ny, nz, ys };
+}
+
+/** One light (d·l, with or without fall-off) fitted over the samples `use` picks; `keep`: the model's term at each sample, kept for the best fit only. */
+function fit({ m, nx, ny, nz, ys }, use, l, d, falloff, keep = false) {
+  let n = 0, sx = 0, sy = 0, sxx = 0, sxy = 0, syy = 0;
+  const xs = keep ? new Float64Array(m) : null;
+  for (let i = 0; i < m; i++) {
+    if (!use[i]) continue;
+    const x = pointLightTerm(nx[i], ny[i], nz[i], l, d, falloff);
+    const y = ys[i];
+    if (keep) xs[i] = x;
+    n++; sx += x; sy += y; sxx += x * x; sxy += x * y; syy += y * y;
+  }
+  return { ...solve(n, sy, syy, sx, sxx, sxy, l, d, falloff), xs };
+}
+
+/**
+ * The coarse grid of lights for both models at once: a sample's w_i and ‖p_ℓ − x‖² serve both, and
+ * each model's sums are added up in the order fit() adds them (the same numbers to the last bit).
+ */
+function grid({ m, nx, ny, nz, ys }, use, dirs) {
+  let none = null, inv = null;
+  // the samples used, in order, and their brightness sums (the same for every light tried)
+  let n = 0, sy = 0, syy = 0;
+  const at = new Int32Array(m);
+  for (let i = 0; i < m; i++) {
+    if (!use[i]) continue;
+    at[n++] = i;
+    sy += ys[i]; syy += ys[i] * ys[i];
+  }
+  for (const d of DIST) {
+    const g = (d - 1) * (d - 1);
+    for (const l of dirs) {
+      const px = d * l[0], py = d * l[1], pz = d * l[2];
+      let sx = 0, sxx = 0, sxy = 0, ux = 0, uxx = 0, uxy = 0;
+      for (let k = 0; k < n; k++) {
+        const i = at[k], n0 = nx[i], n1 = ny[i], n2 = nz[i];
+        // (pointLightTerm's w_i and ‖p_ℓ − x‖², computed once for both models)
+        const wx = px - n0, wy = py - n1, wz = pz - n2;
+        const r2 = wx * wx + wy * wy + wz * wz;
+        const cos = Math.max(0, (n0 * wx + n1 * wy + n2 * wz) / Math.sqrt(r2));
+        const x = cos * g / r2;
+        const y = ys[i];
+        sx += cos; sxx += cos * cos; sxy += cos * y;
+        ux += x; uxx += x * x; uxy += x * y;
+      }
+      const f = lineFit(n, sy, syy, sx, sxx, sxy), h = lineFit(n, sy, syy, ux, uxx, uxy);
+      if (f.b > 0 && (!none || f.sse < none.sse)) none = { ...f, l, d, falloff: false };
+      if (h.b > 0 && (!inv || h.sse < inv.sse)) inv = { ...h, l, d, falloff: true };
+    }
+  }
+  return { none, inv };
+}
+
+/** From the grid's best (`coarse`), the direction refined, then the distance; the best fit with its terms kept. */
+function search(F, use, falloff, coarse) {
+  let best = coarse;
+  if (!best) return null;
+  for (let step = 0.1; step > 0.005; step /= 2) { // refine the direction, then the distance
+    for (const dd of [[1, 0, 0], [-1, 0, 0], [0, 1, 0], [0, -1, 0], [0, 0, 1], [0, 0, -1]]) {
+      const l = best.l.map((v, k) => v + step * dd[k]), len = Math.hypot(...l);
+      const f = fit(F, use, l.map((v) => v / len), best.d, falloff);
+      if (f.b > 0 && f.sse < best.sse) best = f;
+    }
+    for (const d of [Math.max(1.05, best.d * (1 - 2 * step)), Math.min(1e4, best.d * (1 + 2 * step))]) {
+      const f = fit(F, use, best.l, d, falloff);
+      if (f.b > 0 && f.sse < best.sse) best = f;
+    }
+  }
+  return fit(F, use, best.l, best.d, falloff, true);
 }
 
 /**
