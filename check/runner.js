@@ -8,7 +8,7 @@
 // (check/not-checked.js). Our own part can be drawn beside it (drawReference).
 import { framePage } from './frame-page.js';
 import { frameWatchScript } from './frame-watch.js';
-import { FROZEN, frameClockScript } from '../grader/browser/clock.js';
+import { FROZEN, clockScript } from '../grader/browser/clock.js';
 import { drawBatchScript } from '../grader/browser/draw-batch.js';
 import { instrumentScript } from '../grader/browser/instrument.js';
 import { recordersInit } from '../grader/browser/geometry.js';
@@ -28,12 +28,12 @@ export const VIEWPORT = 1000;
 export function frameScript(rubric) {
   return [
     `(${frameWatchScript})(${JSON.stringify({ loopSeconds: rubric.loadSeconds })});`,
-    `(${webgpuCaptureScript})();`,
-    `(${drawBatchScript})();`,
+    webgpuCaptureScript,
+    drawBatchScript,
     instrumentScript,
     `(${pixelsScript})();`,
     recordersInit,
-    `(${frameClockScript})(${FROZEN});`,
+    clockScript(FROZEN),
     `(${tamperScript})();`,
   ].join('\n');
 }

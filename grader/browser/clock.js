@@ -15,27 +15,66 @@
 /** The frozen wall time a graded page starts at, the grader's and the check page's alike (2026-01-05 09:00 UTC, ms since 1970). */
 export const FROZEN = Date.UTC(2026, 0, 5, 9, 0, 0);
 
-/** The init script. `start` is the frozen wall time (ms since 1970) at performance.now() = 0; the page
- * loads 2 s later (as the grader's clock: installed at `start`, paused at `start` + 2 s). */
-// eslint-disable-next-line max-lines-per-function -- over 80 lines: still to split into named parts (issue 40)
-export function frameClockScript(start) {
+/**
+ * The init script's body (its parts are passed in as arguments: the script is their text, see
+ * clockScript). `start` is the frozen wall time (ms since 1970) at performance.now() = 0; the page
+ * loads 2 s later (as the grader's clock: installed at `start`, paused at `start` + 2 s).
+ */
+function frameClock(start, timersOf, frozenDate) {
   if (window.__checkClock) return;
-  const NativeDate = Date, realPerformance = performance;
-  const timers = new Map();
-  let ticks = 2000, nextId = 1e12, duringTick = false;
+  const C = timersOf();
+  const { timers, add, clear, runTo } = C;
+  const api = {
+    setTimeout: (f, ms, ...args) => add('timeout', f, ms, args),
+    setInterval: (f, ms, ...args) => add('interval', f, ms, args),
+    clearTimeout: clear,
+    clearInterval: clear,
+    requestAnimationFrame: (f) => add('frame', f, 16 - (C.ticks % 16), []),
+    cancelAnimationFrame: clear,
+    requestIdleCallback: (f, opts) => add('idle', f, Math.min(opts && opts.timeout ? opts.timeout : Infinity, timers.size ? 50 : 0), []),
+    cancelIdleCallback: clear,
+  };
+  for (const [name, fn] of Object.entries(api)) window[name] = fn;
+  window.Date = frozenDate(Date, () => start + C.ticks);
+  Object.defineProperty(performance, 'now', { value: () => C.ticks, configurable: true });
+
+  Object.defineProperty(window, '__checkClock', {
+    enumerable: false,
+    value: {
+      runFor: (ms) => runTo(C.ticks + Math.max(0, ms)),
+      fastForward: (ms) => {
+        const to = C.ticks + Math.trunc(Math.max(0, ms));
+        for (const t of timers.values()) if (t.callAt < to) t.callAt = to;
+        return runTo(to);
+      },
+      now: () => C.ticks,
+      pending: () => timers.size,
+    },
+  });
+}
+
+/**
+ * The page's timers, ordered by due time, then creation: { ticks (the page's time, ms), timers,
+ * add(type, func, delay, args), clear(id), runTo(ms) } (every timer due by then fired in order, a
+ * real task between two).
+ */
+function timersOf() {
+  const C = { ticks: 2000, timers: new Map() };
+  const { timers } = C;
+  let nextId = 1e12, duringTick = false;
   const channel = new MessageChannel(), tasks = [];
   channel.port1.onmessage = () => tasks.shift()();
   const realTask = () => new Promise((resolve) => { tasks.push(resolve); channel.port2.postMessage(0); });
 
-  function add(type, func, delay, args) {
+  C.add = function add(type, func, delay, args) {
     if (typeof func !== 'function' && typeof func !== 'string') throw new TypeError(`${type}: a callback is required`);
     delay = Number.isFinite(+delay) ? Math.max(0, +delay) : 0;
     if (delay > 2 ** 31 - 1) delay = 1;
     const id = nextId++;
-    timers.set(id, { id, type, func, args, delay, createdAt: ticks, callAt: ticks + (delay || (duringTick ? 1 : 0)) });
+    timers.set(id, { id, type, func, args, delay, createdAt: C.ticks, callAt: C.ticks + (delay || (duringTick ? 1 : 0)) });
     return id;
-  }
-  const clear = (id) => { if (id) timers.delete(Number(id)); };
+  };
+  C.clear = (id) => { if (id) timers.delete(Number(id)); };
   function first(before) {
     let best = null;
     for (const t of timers.values()) {
@@ -44,18 +83,18 @@ export function frameClockScript(start) {
     }
     return best;
   }
-  async function runTo(to) {
+  C.runTo = async function runTo(to) {
     to = Math.ceil(to);
     let error;
     for (let t = first(to); t; t = first(to)) {
-      ticks = Math.max(ticks, t.callAt);
+      C.ticks = Math.max(C.ticks, t.callAt);
       if (t.type === 'interval') t.callAt += t.delay || 1;
       else timers.delete(t.id);
       duringTick = true;
       if (window.__checkWatch) window.__checkWatch.newTask(); // check/frame-watch.js: a loop is timed from here
       try {
         if (typeof t.func === 'string') (0, eval)(t.func);
-        else if (t.type === 'frame') t.func(ticks);
+        else if (t.type === 'frame') t.func(C.ticks);
         else if (t.type === 'idle') t.func({ didTimeout: false, timeRemaining: () => 0 });
         else t.func(...t.args);
       } catch (err) {
@@ -65,45 +104,25 @@ export function frameClockScript(start) {
       }
       await realTask();
     }
-    ticks = Math.max(ticks, to);
+    C.ticks = Math.max(C.ticks, to);
     if (error) throw error;
-  }
-
-  const api = {
-    setTimeout: (f, ms, ...args) => add('timeout', f, ms, args),
-    setInterval: (f, ms, ...args) => add('interval', f, ms, args),
-    clearTimeout: clear,
-    clearInterval: clear,
-    requestAnimationFrame: (f) => add('frame', f, 16 - (ticks % 16), []),
-    cancelAnimationFrame: clear,
-    requestIdleCallback: (f, opts) => add('idle', f, Math.min(opts && opts.timeout ? opts.timeout : Infinity, timers.size ? 50 : 0), []),
-    cancelIdleCallback: clear,
   };
-  for (const [name, fn] of Object.entries(api)) window[name] = fn;
+  return C;
+}
 
+/** Date as the page sees it: `now()` for "now", the native Date for everything else. */
+function frozenDate(NativeDate, now) {
   function ClockDate(...args) {
-    if (!new.target) return new NativeDate(start + ticks).toString();
-    return args.length ? new NativeDate(...args) : new NativeDate(start + ticks);
+    if (!new.target) return new NativeDate(now()).toString();
+    return args.length ? new NativeDate(...args) : new NativeDate(now());
   }
   ClockDate.prototype = NativeDate.prototype;
-  ClockDate.now = () => start + ticks;
+  ClockDate.now = now;
   ClockDate.parse = NativeDate.parse;
   ClockDate.UTC = NativeDate.UTC;
   ClockDate.toString = () => NativeDate.toString();
-  window.Date = ClockDate;
-  Object.defineProperty(realPerformance, 'now', { value: () => ticks, configurable: true });
-
-  Object.defineProperty(window, '__checkClock', {
-    enumerable: false,
-    value: {
-      runFor: (ms) => runTo(ticks + Math.max(0, ms)),
-      fastForward: (ms) => {
-        const to = ticks + Math.trunc(Math.max(0, ms));
-        for (const t of timers.values()) if (t.callAt < to) t.callAt = to;
-        return runTo(to);
-      },
-      now: () => ticks,
-      pending: () => timers.size,
-    },
-  });
+  return ClockDate;
 }
+
+/** The init script (a string) with the page's time frozen at `start` (FROZEN). */
+export const clockScript = (start) => `(${frameClock})(${JSON.stringify(start)}, ${timersOf}, ${frozenDate});`;

@@ -14,22 +14,56 @@
 // the triangles before it still show; the errors the check reads are given back to the page's
 // own getError first.
 //
-// An init script, added before instrumentScript, which sends its draws through
-// window.__drawBatch.arrays(gl, args, send): `send(gl, args)` draws at once.
-// eslint-disable-next-line max-lines-per-function -- over 80 lines: still to split into named parts (issue 40)
-export function drawBatchScript() {
+// An init script (drawBatchScript, a string), added before instrumentScript, which sends its draws
+// through window.__drawBatch.arrays(gl, args, send): `send(gl, args)` draws at once.
+
+/** The init script's body (its parts are passed in as arguments: the script is their text). */
+function drawBatch(heldDraws, flushFirst) {
   if (window.__drawBatch) return;
+  const B = heldDraws();
+  flushFirst(B);
+  const { TRIANGLES } = B;
+  Object.defineProperty(window, '__drawBatch', {
+    enumerable: false,
+    value: {
+      /** gl.drawArrays(...a) as `send(gl, a)` draws it: held while it continues a run of separate triangles. */
+      arrays(gl, a, send) {
+        const [mode, first, count] = a;
+        if (!(a.length === 3 && mode === TRIANGLES && Number.isInteger(first) && first >= 0 && Number.isInteger(count) && count > 0 && count % 3 === 0 && first + count <= 2 ** 31 - 1)) {
+          if (B.held) B.flush();
+          return send(gl, a);
+        }
+        const h = B.held;
+        if (h && h.gl === gl && h.send === send && first === h.first + h.count) {
+          h.counts.push(count);
+          h.count += count;
+          return undefined;
+        }
+        if (h) B.flush();
+        B.held = { gl, send, first, count, counts: [count] };
+        queueMicrotask(B.flush);
+        return undefined;
+      },
+    },
+  });
+}
+
+/**
+ * The held run of draws ({ gl, send, first, count, counts: each draw's count } or null) and
+ * flush(): it sent as one draw, or draw by draw where WebGL refuses the one; the errors the check
+ * took are given back to the page's own getError first (B.errors, B.getError: the real one).
+ */
+function heldDraws() {
   const TRIANGLES = 4, NO_ERROR = 0;
-  let held = null; // { gl, send, first, count, counts: each draw's count }
   const errors = new WeakMap(); // context → the errors the check took, given back to the page first
   const protos = [window.WebGLRenderingContext, window.WebGL2RenderingContext].filter(Boolean).map((c) => c.prototype);
   const realGetError = new Map(protos.map((p) => [p, p.getError]));
   const getError = (gl) => realGetError.get(Object.getPrototypeOf(gl)).call(gl);
-
-  function flush() {
-    const h = held;
+  const B = { TRIANGLES, held: null, errors, protos, getError };
+  B.flush = function flush() {
+    const h = B.held;
     if (!h) return;
-    held = null;
+    B.held = null;
     const { gl, send } = h;
     try {
       if (h.counts.length === 1) return void send(gl, [TRIANGLES, h.first, h.count]);
@@ -44,9 +78,14 @@ export function drawBatchScript() {
         first += count;
       }
     } catch { /* (a context gone meanwhile: the draws would have thrown nothing either) */ }
-  }
+  };
+  return B;
+}
+
+/** Every call on a WebGL context or its extensions, every read of a canvas and every resize of one sends the held draw first. */
+function flushFirst(B) {
   const flushing = (f) => function (...a) {
-    if (held) flush();
+    if (B.held) B.flush();
     return f.apply(this, a);
   };
   const wrapAll = (target, proto) => {
@@ -57,16 +96,16 @@ export function drawBatchScript() {
     }
   };
   const wrappedExtensions = new WeakSet();
-  for (const proto of protos) {
+  for (const proto of B.protos) {
     const { getExtension } = proto;
     wrapAll(proto, proto);
     proto.getError = function () {
-      if (held) flush();
-      const taken = errors.get(this);
-      return taken && taken.length ? taken.shift() : getError(this);
+      if (B.held) B.flush();
+      const taken = B.errors.get(this);
+      return taken && taken.length ? taken.shift() : B.getError(this);
     };
     proto.getExtension = function (...a) {
-      if (held) flush();
+      if (B.held) B.flush();
       const ext = getExtension.apply(this, a);
       if (ext && typeof ext === 'object' && !wrappedExtensions.has(ext)) {
         wrappedExtensions.add(ext);
@@ -85,28 +124,7 @@ export function drawBatchScript() {
     const d = Object.getOwnPropertyDescriptor(HTMLCanvasElement.prototype, k);
     Object.defineProperty(HTMLCanvasElement.prototype, k, { ...d, set: flushing(d.set) });
   }
-
-  Object.defineProperty(window, '__drawBatch', {
-    enumerable: false,
-    value: {
-      /** gl.drawArrays(...a) as `send(gl, a)` draws it: held while it continues a run of separate triangles. */
-      arrays(gl, a, send) {
-        const [mode, first, count] = a;
-        if (!(a.length === 3 && mode === TRIANGLES && Number.isInteger(first) && first >= 0 && Number.isInteger(count) && count > 0 && count % 3 === 0 && first + count <= 2 ** 31 - 1)) {
-          if (held) flush();
-          return send(gl, a);
-        }
-        const h = held;
-        if (h && h.gl === gl && h.send === send && first === h.first + h.count) {
-          h.counts.push(count);
-          h.count += count;
-          return undefined;
-        }
-        if (h) flush();
-        held = { gl, send, first, count, counts: [count] };
-        queueMicrotask(flush);
-        return undefined;
-      },
-    },
-  });
 }
+
+/** The init script (a string, for addInitScript / evaluateOnNewDocument, or a frame's script). */
+export const drawBatchScript = `(${drawBatch})(${heldDraws}, ${flushFirst});`;

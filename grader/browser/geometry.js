@@ -7,17 +7,32 @@
 // until the grader asks: window.__geometry.read() sums up the last frame's triangles (analyseMesh,
 // grader/browser/mesh.js, a pure function also run by the unit tests).
 // The same script starts grader/browser/sent.js's record (the uniforms), which shares its helpers.
-import { meshAnalysis } from './mesh.js';
+import { meshAnalysisScript } from './mesh.js';
 import { webgpuGeometry } from './geometry-webgpu.js';
 import { sentScript } from './sent.js';
 
 /** The init script as text: the recorders of what a page sends (its geometry, WebGL and WebGPU, and its uniforms) with the analysis in it. */
-export const recordersInit = `(${geometryScript})((${meshAnalysis})(), ${webgpuGeometry}, ${sentScript});`;
+export const recordersInit = `(${geometryScript})(${meshAnalysisScript}, ${webgpuGeometry}, ${sentScript}, ${geometryStore}, ${frameRecorder}, ${recordWebGL}, ${geometryReader});`;
 
-// eslint-disable-next-line max-lines-per-function -- over 80 lines: still to split into named parts (issue 40)
-function geometryScript(analyseMesh, recordWebGPU, recordSent) {
+/** The init script's body (its parts are passed in as arguments: the script is their text). */
+function geometryScript(analyseMesh, recordWebGPU, recordSent, geometryStore, frameRecorder, recordWebGL, geometryReader) {
   if (window.__geometry || !window.WebGLRenderingContext) return;
-  const grade = window.__grade; // (instrument.js: the culling state the page set)
+  const G = geometryStore();
+  Object.defineProperty(window, '__geometry', { value: G.rec, enumerable: false });
+  Object.assign(G, frameRecorder(G, window.__grade)); // (instrument.js: the culling state the page set)
+  recordWebGL(G);
+  const { frameOf, closeFrame, wrap, bytesIn, MAX_DRAWS, FLOAT, TRIANGLES } = G;
+  const read = geometryReader(G, analyseMesh);
+  recordWebGPU({ frameOf, closeFrame, wrap, bytesIn, vertexInputs: analyseMesh.vertexInputs, MAX_DRAWS, FLOAT, TRIANGLES });
+  recordSent({ wrap, bytesIn });
+  G.rec.read = read;
+}
+
+/**
+ * What the record keeps: the bytes each buffer holds, each context's and vertex array's state, each
+ * program's attributes, the frames (rec), and the helpers that read an upload and wrap a method.
+ */
+function geometryStore() {
   const TRIANGLES = 4, FLOAT = 0x1406, COLOR_BUFFER_BIT = 0x4000;
   const MAX_DRAWS = 512, HISTORY = 32;
   const bytesOf = new WeakMap(); // WebGLBuffer → Uint8Array: what the page uploaded last
@@ -55,6 +70,21 @@ function geometryScript(analyseMesh, recordWebGPU, recordSent) {
     const view = bytesIn(src, offset, length);
     return view && view.slice();
   };
+  /** Wraps proto[name] so that `after(this, args, result)` hears each call after it ran (its errors never reach the page). */
+  const wrap = (proto, name, after) => {
+    const real = proto && proto[name];
+    if (typeof real !== 'function') return;
+    proto[name] = function (...a) {
+      const out = real.apply(this, a);
+      try { after(this, a, out); } catch { /* the record never breaks the page */ }
+      return out;
+    };
+  };
+  return { TRIANGLES, FLOAT, COLOR_BUFFER_BIT, MAX_DRAWS, HISTORY, bytesOf, ctxState, vaoState, programInfo, rec, newVao, stateOf, bytesIn, copy, wrap };
+}
+
+/** The frames: a draw recorded into the current one (separate triangles one after another: one range), a frame closed, a vertex array bound. */
+function frameRecorder({ rec, HISTORY, MAX_DRAWS, TRIANGLES, stateOf, newVao, vaoState }, grade) {
   const closeFrame = () => {
     if (!rec.cur) return;
     rec.history.push({ vertices: rec.cur.vertices, draws: rec.cur.calls });
@@ -89,16 +119,6 @@ function geometryScript(analyseMesh, recordWebGPU, recordSent) {
   };
   const changed = (vao) => { vao.snap = null; };
 
-  /** Wraps proto[name] so that `after(this, args, result)` hears each call after it ran (its errors never reach the page). */
-  const wrap = (proto, name, after) => {
-    const real = proto && proto[name];
-    if (typeof real !== 'function') return;
-    proto[name] = function (...a) {
-      const out = real.apply(this, a);
-      try { after(this, a, out); } catch { /* the record never breaks the page */ }
-      return out;
-    };
-  };
   const bindVao = (gl, vao) => {
     const st = stateOf(gl);
     if (!vao) st.vao = st.defaultVao;
@@ -107,6 +127,11 @@ function geometryScript(analyseMesh, recordWebGPU, recordSent) {
       st.vao = vaoState.get(vao);
     }
   };
+  return { closeFrame, frameOf, draw, changed, bindVao };
+}
+
+/** The WebGL calls recorded: buffers and their bytes, the attribute layout, vertex arrays, the program, clears and draws. */
+function recordWebGL({ wrap, stateOf, bytesOf, copy, changed, bindVao, closeFrame, draw, rec, COLOR_BUFFER_BIT }) {
   for (const proto of [window.WebGLRenderingContext, window.WebGL2RenderingContext].filter(Boolean).map((c) => c.prototype)) {
     wrap(proto, 'bindBuffer', (gl, [target, buffer]) => {
       const st = stateOf(gl);
@@ -169,6 +194,10 @@ function geometryScript(analyseMesh, recordWebGPU, recordSent) {
     };
   }
 
+}
+
+/** rec.read(limits): the last frame's geometry, summed up (analyseMesh.summary): small, plain data. */
+function geometryReader({ rec, programInfo, bytesOf, FLOAT, TRIANGLES }, analyseMesh) {
   // the attributes of a program's vertex shader, and which one gl_Position is computed from
   const infoOf = (gl, program) => {
     if (!program) return null;
@@ -182,11 +211,7 @@ function geometryScript(analyseMesh, recordWebGPU, recordSent) {
     return info;
   };
 
-  recordWebGPU({ frameOf, closeFrame, wrap, bytesIn, vertexInputs: analyseMesh.vertexInputs, MAX_DRAWS, FLOAT, TRIANGLES });
-  recordSent({ wrap, bytesIn });
-
-  /** The last frame's geometry, summed up (analyseMesh.summary): small, plain data. */
-  rec.read = (limits) => {
+  return (limits) => {
     const frame = rec.cur && rec.cur.draws.length ? rec.cur : rec.last;
     const frames = [...rec.history.map((h) => h.vertices), ...(rec.cur ? [rec.cur.vertices] : [])];
     if (!frame) return { frames, why: 'no draw call was seen' };

@@ -9,9 +9,11 @@
 // canvas then shows, screenshots and reads back like any other canvas.
 // readWebGPUFrame(page) waits for the last frame's copy and returns it.
 
-/** The init script (a function: Playwright serialises it). Publishes window.__webgpuCapture. */
-// eslint-disable-next-line max-lines-per-function -- over 80 lines: still to split into named parts (issue 40)
-export function webgpuCaptureScript() {
+/**
+ * The init script's body (its parts are passed in as arguments: the script is their text, see
+ * webgpuCaptureScript). Publishes window.__webgpuCapture.
+ */
+function webgpuCapture(toRGBA, copier, capturedContextClass) {
   if (typeof navigator === 'undefined' || !navigator.gpu || typeof GPUQueue === 'undefined') return;
   const state = { frames: 0, captured: 0, width: 0, height: 0, format: null, pending: null, again: false, errors: [] };
   // waits until the last submitted frame has been copied (no timers: the grader's clock may be
@@ -24,25 +26,47 @@ export function webgpuCaptureScript() {
   const realGetContext = HTMLCanvasElement.prototype.getContext;
   const realSubmit = GPUQueue.prototype.submit;
   const fakes = new WeakMap();
+  const copy = copier(state, realSubmit, toRGBA);
+  const CapturedCanvasContext = capturedContextClass(realGetContext, contexts);
 
-  function rgba(ctx, bytes, bytesPerRow) {
-    const { width, height } = ctx.texture;
-    const out = new Uint8ClampedArray(width * height * 4);
-    const bgra = ctx.config.format.startsWith('bgra');
-    const opaque = (ctx.config.alphaMode || 'opaque') === 'opaque';
-    for (let y = 0; y < height; y++) {
-      for (let x = 0; x < width; x++) {
-        const i = y * bytesPerRow + 4 * x, o = 4 * (y * width + x);
-        out[o] = bytes[i + (bgra ? 2 : 0)];
-        out[o + 1] = bytes[i + 1];
-        out[o + 2] = bytes[i + (bgra ? 0 : 2)];
-        out[o + 3] = opaque ? 255 : bytes[i + 3];
+  HTMLCanvasElement.prototype.getContext = function (type, ...rest) {
+    if (type !== 'webgpu') return realGetContext.call(this, type, ...rest);
+    if (!fakes.has(this)) fakes.set(this, new CapturedCanvasContext(this));
+    return fakes.get(this);
+  };
+  GPUQueue.prototype.submit = function (buffers) {
+    const r = realSubmit.call(this, buffers);
+    for (const ctx of contexts) {
+      if (ctx.handedOut && ctx.config && ctx.config.device.queue === this) {
+        ctx.handedOut = false;
+        state.frames++;
+        copy(ctx);
       }
     }
-    return out;
-  }
+    return r;
+  };
+}
 
-  // Copies ctx's texture as it is now (after the page's last submit) into the canvas's 2D context.
+/** A mapped copy of a canvas texture (`bytes`, rows `bytesPerRow` apart) as RGBA, bgra8unorm swizzled. */
+function toRGBA(ctx, bytes, bytesPerRow) {
+  const { width, height } = ctx.texture;
+  const out = new Uint8ClampedArray(width * height * 4);
+  const bgra = ctx.config.format.startsWith('bgra');
+  const opaque = (ctx.config.alphaMode || 'opaque') === 'opaque';
+  for (let y = 0; y < height; y++) {
+    for (let x = 0; x < width; x++) {
+      const i = y * bytesPerRow + 4 * x, o = 4 * (y * width + x);
+      out[o] = bytes[i + (bgra ? 2 : 0)];
+      out[o + 1] = bytes[i + 1];
+      out[o + 2] = bytes[i + (bgra ? 0 : 2)];
+      out[o + 3] = opaque ? 255 : bytes[i + 3];
+    }
+  }
+  return out;
+}
+
+/** copy(ctx): ctx's texture as it is now (after the page's last submit) copied into the canvas's 2D context, one copy at a time. */
+function copier(state, realSubmit, toRGBA) {
   function copy(ctx) {
     if (state.pending) { state.again = true; return; }
     const { device } = ctx.config, texture = ctx.texture;
@@ -53,7 +77,7 @@ export function webgpuCaptureScript() {
     encoder.copyTextureToBuffer({ texture }, { buffer, bytesPerRow }, [texture.width, texture.height]);
     realSubmit.call(device.queue, [encoder.finish()]);
     state.pending = buffer.mapAsync(GPUMapMode.READ).then(() => {
-      const pixels = rgba(ctx, new Uint8Array(buffer.getMappedRange()), bytesPerRow);
+      const pixels = toRGBA(ctx, new Uint8Array(buffer.getMappedRange()), bytesPerRow);
       buffer.unmap();
       buffer.destroy();
       const canvas = ctx.canvas;
@@ -67,8 +91,12 @@ export function webgpuCaptureScript() {
         if (state.again) { state.again = false; copy(ctx); }
       });
   }
+  return copy;
+}
 
-  class CapturedCanvasContext {
+/** The stand-in for a canvas's 'webgpu' context: an ordinary texture handed out, the configured ones kept in `contexts`. */
+function capturedContextClass(realGetContext, contexts) {
+  return class CapturedCanvasContext {
     constructor(canvas) { this.canvas = canvas; this.config = null; this.texture = null; this.ctx2d = realGetContext.call(canvas, '2d'); }
     configure(config) {
       if (!config || !config.device) throw new TypeError("GPUCanvasContext.configure: 'device' is required");
@@ -92,25 +120,11 @@ export function webgpuCaptureScript() {
       this.handedOut = true;
       return this.texture;
     }
-  }
-
-  HTMLCanvasElement.prototype.getContext = function (type, ...rest) {
-    if (type !== 'webgpu') return realGetContext.call(this, type, ...rest);
-    if (!fakes.has(this)) fakes.set(this, new CapturedCanvasContext(this));
-    return fakes.get(this);
-  };
-  GPUQueue.prototype.submit = function (buffers) {
-    const r = realSubmit.call(this, buffers);
-    for (const ctx of contexts) {
-      if (ctx.handedOut && ctx.config && ctx.config.device.queue === this) {
-        ctx.handedOut = false;
-        state.frames++;
-        copy(ctx);
-      }
-    }
-    return r;
   };
 }
+
+/** The init script (a string, for addInitScript / evaluateOnNewDocument, or a frame's script): its parts are its arguments. */
+export const webgpuCaptureScript = `(${webgpuCapture})(${toRGBA}, ${copier}, ${capturedContextClass});`;
 
 /**
  * Waits until the last submitted frame has been copied, and says what was captured:

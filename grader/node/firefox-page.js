@@ -9,7 +9,7 @@ import { instrumentScript } from '../browser/instrument.js';
 import { recordersInit } from '../browser/geometry.js';
 import { pixelsScript } from '../browser/pixels.js';
 import { tamperScript } from '../browser/tamper.js';
-import { FROZEN, frameClockScript } from '../browser/clock.js';
+import { FROZEN, clockScript } from '../browser/clock.js';
 import { submissionAnswers, urlOf } from './serve-submission.js';
 import { pageDriver } from './playwright-page.js';
 
@@ -66,7 +66,7 @@ export function firefoxOpener(browser, host) {
       await page.evaluateOnNewDocument(instrumentScript);
       await page.evaluateOnNewDocument(pixelsScript);
       await page.evaluateOnNewDocument(recordersInit);
-      await page.evaluateOnNewDocument(frameClockScript, FROZEN);
+      await page.evaluateOnNewDocument(clockScript(FROZEN));
       await page.evaluateOnNewDocument(tamperScript);
       const url = urlOf(site.origin, root, rel, query).href;
       let response;

@@ -10,7 +10,7 @@ import { instrumentScript } from '../browser/instrument.js';
 import { recordersInit } from '../browser/geometry.js';
 import { pixelsScript } from '../browser/pixels.js';
 import { tamperScript } from '../browser/tamper.js';
-import { FROZEN, frameClockScript } from '../browser/clock.js';
+import { FROZEN, clockScript } from '../browser/clock.js';
 import { serveSubmission, urlOf } from './serve-submission.js';
 
 /**
@@ -37,7 +37,7 @@ export function partOpener(browser, host) {
     await context.addInitScript(instrumentScript);
     await context.addInitScript(pixelsScript);
     await context.addInitScript(recordersInit);
-    await context.addInitScript(frameClockScript, FROZEN);
+    await context.addInitScript(clockScript(FROZEN));
     await context.addInitScript(tamperScript);
     const page = await context.newPage();
     page.on('popup', (popup) => {
