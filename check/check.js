@@ -94,8 +94,8 @@ async function run(gather) {
         'Service workers may be off in a private window or by a setting: try a normal window of a current Chrome, Edge or Firefox.');
     });
     const rubric = await (await fetch(new URL('../grader/core/rubric.json', import.meta.url))).json();
-    const session = openSession(handInSource(files), frameScript(rubric));
-    const ours = openSession(siteSource(new URL('../', import.meta.url)), frameScript(rubric));
+    const session = openSession(handInSource(files), frameScript(rubric), rubric.loadSeconds);
+    const ours = openSession(siteSource(new URL('../', import.meta.url)), frameScript(rubric), rubric.loadSeconds);
     const results = [];
     try {
       for (const [k, part] of PARTS.entries()) {

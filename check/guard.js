@@ -10,12 +10,13 @@ import { parse } from '../node_modules/acorn/dist/acorn.mjs';
 
 const LOOPS = new Set(['WhileStatement', 'DoWhileStatement', 'ForStatement', 'ForInStatement', 'ForOfStatement']);
 const CALL = '__checkLoop();';
-/** The limit of the stand-in guard: the rubric's default loadSeconds. */
-const STAND_IN_SECONDS = 20;
-/** A statement that defines a stand-in __checkLoop (the same rule as frame-watch.js's, on the real clock) where there is none. */
-export const STAND_IN = 'typeof __checkLoop=="function"||Object.defineProperty(globalThis,"__checkLoop",{configurable:true,value:' +
+/**
+ * A statement that defines a stand-in __checkLoop (the same rule as frame-watch.js's, on the real
+ * clock) where there is none: a loop that runs `seconds` (the rubric's loadSeconds) without returning is stopped.
+ */
+export const standIn = (seconds) => 'typeof __checkLoop=="function"||Object.defineProperty(globalThis,"__checkLoop",{configurable:true,value:' +
   'function(n,t,now){return function f(){if(f.hung)throw new Error(f.hung);if(++n&1023)return;var s=now();' +
-  'if(t<0){t=s;setTimeout(function(){t=-1})}else if(s-t>' + 1000 * STAND_IN_SECONDS + ')' +
+  'if(t<0){t=s;setTimeout(function(){t=-1})}else if(s-t>' + 1000 * seconds + ')' +
   'throw new Error(f.hung="a loop ran for "+Math.round((s-t)/1000)+" s without returning (stopped by the self-check)")}}' +
   '(0,-1,performance.now.bind(performance))});';
 
@@ -31,8 +32,8 @@ function loopBodies(node, out = []) {
   return out;
 }
 
-/** `source` with the guard in every loop; unchanged when it has no loop or does not parse. */
-export function guardLoops(source, { module = false } = {}) {
+/** `source` with the guard in every loop (stopped after `seconds`); unchanged when it has no loop or does not parse. */
+export function guardLoops(source, { module = false, seconds }) {
   if (!/\b(for|while|do)\b/.test(source)) return source;
   let ast;
   for (const sourceType of module ? ['module', 'script'] : ['script', 'module']) {
@@ -52,7 +53,7 @@ export function guardLoops(source, { module = false } = {}) {
   }
   if (!edits.length) return source;
   // the stand-in first, after the directives ('use strict' must stay first to count) and a hashbang
-  edits.push([ast.body.find((s) => !s.directive).start, STAND_IN]);
+  edits.push([ast.body.find((s) => !s.directive).start, standIn(seconds)]);
   edits.sort((a, b) => b[0] - a[0]);
   let out = source;
   for (const [at, text] of edits) out = out.slice(0, at) + text + out.slice(at);
@@ -62,11 +63,11 @@ export function guardLoops(source, { module = false } = {}) {
 const SCRIPT = /(<script\b([^>]*)>)([\s\S]*?)(<\/script\s*>)/gi;
 const JS_TYPE = /^\s*$|^\s*(module|(text|application)\/(java|ecma)script)\s*$/i;
 
-/** An HTML page with the guard in each of its inline JavaScript scripts (shader scripts untouched). */
-export function guardInlineScripts(html) {
+/** An HTML page with the guard (stopped after `seconds`) in each of its inline JavaScript scripts (shader scripts untouched). */
+export function guardInlineScripts(html, seconds) {
   return html.replace(SCRIPT, (all, open, attrs, body, close) => {
     const type = /\btype\s*=\s*["']?([^"'\s>]*)/i.exec(attrs);
     if (/\bsrc\s*=/i.test(attrs) || (type && !JS_TYPE.test(type[1]))) return all;
-    return open + guardLoops(body, { module: !!type && /module/i.test(type[1]) }) + close;
+    return open + guardLoops(body, { module: !!type && /module/i.test(type[1]), seconds }) + close;
   });
 }

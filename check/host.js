@@ -63,13 +63,14 @@ async function onMessage(e) {
 }
 
 /**
- * A session serving `source` (serve.js: handInSource, siteSource) to frames under BASE + id + '/'.
+ * A session serving `source` (serve.js: handInSource, siteSource) to frames under BASE + id + '/',
+ * its scripts' loops stopped after `loopSeconds` (the rubric's loadSeconds).
  * `log.webgpu`: a page or script served since the last clearLog() calls WebGPU.
  * @returns {{ id: string, url: (path: string) => string, log: { errors: string[], blocked: string[], notes: string[], webgpu: boolean }, clearLog: () => void, idle: (ms: number, max: number) => Promise<void>, close: () => void }}
  */
-export function openSession(source, frameScript) {
+export function openSession(source, frameScript, loopSeconds) {
   const id = Array.from(crypto.getRandomValues(new Uint8Array(8)), (b) => b.toString(16).padStart(2, '0')).join('');
-  const s = { source, frameScript, session: id, log: { errors: [], blocked: [], notes: [], webgpu: false }, pending: 0, lastRequest: performance.now() };
+  const s = { source, frameScript, loopSeconds, session: id, log: { errors: [], blocked: [], notes: [], webgpu: false }, pending: 0, lastRequest: performance.now() };
   sessions.set(id, s);
   return {
     id,

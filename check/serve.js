@@ -74,10 +74,10 @@ export function siteSource(root) {
  * `webgpu`: the page or script served calls WebGPU.
  * @param {{ paths: string[], read: (path: string) => Promise<Blob|null> }} source
  * @param {string} rel
- * @param {{ frameScript: string, session: string, module?: boolean }} how
+ * @param {{ frameScript: string, session: string, loopSeconds: number, module?: boolean }} how (loopSeconds: a loop that runs so long without returning is stopped)
  * @returns {Promise<{ status: number, type: string, body: string|Blob, note?: string, missing?: string, webgpu?: boolean }>}
  */
-export async function answer(source, rel, { frameScript, session, module = false }) {
+export async function answer(source, rel, { frameScript, session, loopSeconds, module = false }) {
   if (rel === FRAME_SCRIPT) return { status: 200, type: 'text/javascript', body: frameScript };
   let file = rel.replace(/\/+$/, '');
   const isFolder = (f) => !source.paths.includes(f) && source.paths.some((k) => k.startsWith(`${f}/`));
@@ -94,11 +94,11 @@ export async function answer(source, rel, { frameScript, session, module = false
   const type = typeOf(file);
   if (type === 'text/html') {
     const html = await blob.text();
-    return { status: 200, type: 'text/html', note, webgpu: usesWebGPU(html), body: injectFrameScript(guardInlineScripts(html), `${BASE}${session}/${FRAME_SCRIPT}`) };
+    return { status: 200, type: 'text/html', note, webgpu: usesWebGPU(html), body: injectFrameScript(guardInlineScripts(html, loopSeconds), `${BASE}${session}/${FRAME_SCRIPT}`) };
   }
   if (type === 'text/javascript') {
     const js = await blob.text();
-    return { status: 200, type, note, webgpu: usesWebGPU(js), body: guardLoops(js, { module: module || /\.mjs$/i.test(file) }) };
+    return { status: 200, type, note, webgpu: usesWebGPU(js), body: guardLoops(js, { module: module || /\.mjs$/i.test(file), seconds: loopSeconds }) };
   }
   return { status: 200, type, note, body: blob };
 }

@@ -28,10 +28,10 @@ export function sphereView(img, T) {
  * Read once for the same picture, analysis and thresholds: gathering acts on it, the audit judges it.
  */
 export const shadingOf = memo((img, an, T) => {
-  const fit = shadeFit(samples(img, an), T);
+  const fit = shadeFit(samples(img, an, T), T);
   let pointLight = null;
   if (fit && fit.spread >= T.litSpread) {
-    pointLight = pointLightFit(perspectiveSamples(img, an, T.pointLightFovy, { max: T.fitSamples }), T, fit.light);
+    pointLight = pointLightFit(perspectiveSamples(img, an, T, { max: T.fitSamples }), T, fit.light);
   }
   const nearModel = clearlyNearFalloff(pointLight, T) ? pointLight.falloff.model : null;
   const judgedFit = fit && nearModel ? { ...fit, highlightPeak: pointLight.falloff.highlightPeak, highlightRise: pointLight.falloff.highlightRise } : fit;

@@ -12,7 +12,7 @@ import { memo } from './memo.js';
 export const litView = memo((img, T) => {
   const an = analyse(img, T);
   if (an.blank) return { an, fit: null, lit: false };
-  const fit = shadeFit(samples(img, an, { max: T.fitSamples }), T);
+  const fit = shadeFit(samples(img, an, T, { max: T.fitSamples }), T);
   const lit = !!fit && an.roundness < T.orbitCoarseRoundness && (fit.spread >= T.clearlyLitSpread ||
     (fit.spread >= T.evenSpread && fit.r2 >= T.diffuseR2 && fit.diffuse >= T.diffuseMin));
   return { an, fit, lit };
@@ -21,7 +21,7 @@ export const litView = memo((img, T) => {
 /** A picture's diffuse fit over all its samples. */
 export const fullFit = memo((img, T) => {
   const an = analyse(img, T);
-  return an.blank ? null : shadeFit(samples(img, an), T);
+  return an.blank ? null : shadeFit(samples(img, an, T), T);
 });
 
 /** The light's angle from the viewer (+z), in degrees. */

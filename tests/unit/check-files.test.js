@@ -4,7 +4,12 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { CheckInputError, MAX_BYTES, handInFrom, partsOfHandIn } from '../../check/files.js';
 import { askedPath, injectFrameScript } from '../../check/serve.js';
-import { STAND_IN, guardLoops, guardInlineScripts } from '../../check/guard.js';
+import { standIn, guardLoops as guard, guardInlineScripts } from '../../check/guard.js';
+
+// (the rubric's default loadSeconds: a loop that runs so long without returning is stopped)
+const SECONDS = 20;
+const STAND_IN = standIn(SECONDS);
+const guardLoops = (source, o = {}) => guard(source, { ...o, seconds: SECONDS });
 
 const blob = (size = 10) => ({ size });
 const entries = (paths, size) => paths.map((p) => ({ path: p, blob: blob(size) }));
@@ -47,7 +52,7 @@ test('the frame script goes first; every loop gets the guard, shaders and other 
   assert.equal(guardLoops('let a = 1; a +'), 'let a = 1; a +'); // does not parse: as it is
   assert.equal(guardLoops('let a = 1;'), 'let a = 1;'); // no loop: as it is
   const html = '<script type="x-shader/x-vertex">for (int i = 0; i < 3; i++) {}</script><script>do { i++ } while (i < 3)</script>';
-  assert.equal(guardInlineScripts(html), `<script type="x-shader/x-vertex">for (int i = 0; i < 3; i++) {}</script><script>${STAND_IN}do {__checkLoop(); i++ } while (i < 3)</script>`);
+  assert.equal(guardInlineScripts(html, SECONDS), `<script type="x-shader/x-vertex">for (int i = 0; i < 3; i++) {}</script><script>${STAND_IN}do {__checkLoop(); i++ } while (i < 3)</script>`);
 });
 
 test('a review or a fail names the slide sentence its audit checks, found by the audit id', async () => {

@@ -5,7 +5,12 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import vm from 'node:vm';
-import { STAND_IN, guardLoops } from '../../check/guard.js';
+import { standIn, guardLoops as guard } from '../../check/guard.js';
+
+// (the rubric's default loadSeconds: a loop that runs so long without returning is stopped)
+const SECONDS = 20;
+const STAND_IN = standIn(SECONDS);
+const guardLoops = (source, o = {}) => guard(source, { ...o, seconds: SECONDS });
 import { answer, handInSource, injectFrameScript } from '../../check/serve.js';
 import { NOT_CHECKED, notCheckedHere, usesWebGPU } from '../../check/not-checked.js';
 
@@ -55,7 +60,7 @@ test('every script served is guarded: classic, a module, and a .js a module impo
     ['P1/gpu.js', new Blob(['const adapter = await navigator.gpu?.requestAdapter();'])],
   ]);
   const source = handInSource(files);
-  const how = { frameScript: '/* frame */', session: 's1' };
+  const how = { frameScript: '/* frame */', session: 's1', loopSeconds: SECONDS };
   const html = await answer(source, 'P1/', how);
   assert.equal((html.body.match(/__checkLoop\(\);/g) || []).length, 2);
   assert.match(html.body, /^<!doctype html><script src="\/check\/run\/s1\/__check_frame__\.js"><\/script>/);

@@ -157,7 +157,7 @@ test('diffuseFit finds the light of a diffuse sphere, and its ambient and diffus
   const l = [-0.7, 0.4, 0.45].map((v, k, a) => v / Math.hypot(...a));
   const shade = (nx, ny, nz) => { const v = 0.45 + 0.5 * Math.max(0, nx * l[0] + ny * l[1] + nz * l[2]); return [v, v, v]; };
   const img = polygon(128, { w: 160, r: 64, shade }); // (the darkest side stays clear of the grey background)
-  const fit = diffuseFit(samples(img, analyse(img, T)), T);
+  const fit = diffuseFit(samples(img, analyse(img, T), T), T);
   const angle = (180 / Math.PI) * Math.acos(Math.min(1, fit.light.reduce((a, v, k) => a + v * l[k], 0)));
   assert.ok(angle < 3, `light ${fit.light} is ${angle}° off`);
   assert.ok(fit.r2 > 0.98, `R² ${fit.r2}`);
@@ -175,7 +175,7 @@ test('a small tinted highlight that stands out of a clean diffuse fit is a highl
   };
   const plain = polygon(64, { shade: (...n) => [diffuse(...n), diffuse(...n), diffuse(...n)] });
   const spot = polygon(64, { shade: withSpot });
-  const fp = diffuseFit(samples(plain, analyse(plain, T)), T), fs = diffuseFit(samples(spot, analyse(spot, T)), T);
+  const fp = diffuseFit(samples(plain, analyse(plain, T), T), T), fs = diffuseFit(samples(spot, analyse(spot, T), T), T);
   assert.equal(highlightSeen(fp, T), false, `plain: rise ${fp.highlightRise}, peak ${fp.highlightPeak}`);
   assert.equal(highlightSeen(fs, T), true, `spot: rise ${fs.highlightRise}, peak ${fs.highlightPeak}, rms ${fs.rms}`);
   assert.ok(fs.highlightPeak < T.highlightPeak, 'the spot is one the peak share alone would miss');
@@ -193,7 +193,7 @@ test('a highlight at w_h is never read as one at the light (highlightAtLightDegr
         const d = 0.1 + 0.6 * Math.max(0, nx * l[0] + ny * l[1] + nz * l[2]), sp = 0.4 * Math.max(0, nx * h[0] + ny * h[1] + nz * h[2]) ** s;
         return [d + sp, d + sp, d + sp];
       } });
-      const fit = diffuseFit(samples(img, analyse(img, T)), T);
+      const fit = diffuseFit(samples(img, analyse(img, T), T), T);
       const fromHalf = highlightOffset(fit.highlightNormal, fit.light), fromLight = highlightOffset(fit.highlightNormal, fit.light, 0);
       assert.ok(fromHalf - fromLight < T.highlightAtLightDegrees, `light ${deg}°, s = ${s}: ${fromHalf}° from w_h, ${fromLight}° from the light`);
     }

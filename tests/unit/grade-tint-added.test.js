@@ -21,7 +21,7 @@ const phong = (n, kd = 0.8) => {
 };
 // the model's normal seen by a camera orbited 0.6 rad about y: the page colours by the model's
 const model = (n) => [Math.cos(0.6) * n[0] + Math.sin(0.6) * n[2], n[1], -Math.sin(0.6) * n[0] + Math.cos(0.6) * n[2]];
-const judged = (img) => { const an = analyse(img, T); return { img, an, pts: samples(img, an) }; };
+const judged = (img) => { const an = analyse(img, T); return { img, an, pts: samples(img, an, T) }; };
 
 const added = judged(sphere((n) => model(n).map((p) => 0.5 * p + 0.5 * phong(n))));
 const p1 = judged(sphere((n) => model(n).map((p) => 0.5 * p + 0.5)));

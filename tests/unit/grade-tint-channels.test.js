@@ -65,7 +65,7 @@ const phong = (n, { kd = 0.9, ks = 0.7, s = 25, La = 0.15 } = {}) => {
   return { lit: kd * Math.max(d, 0) + kd * La, spec: ks * Math.pow(Math.max(wr[2], 0), s) };
 };
 const turn = (n) => [Math.cos(1) * n[0] + Math.sin(1) * n[2], n[1], -Math.sin(1) * n[0] + Math.cos(1) * n[2]]; // the world's normal, the camera orbited 1 rad
-const pts = (img) => samples(img, analyse(img, T));
+const pts = (img) => samples(img, analyse(img, T), T);
 
 test('the hue turns with the normal where the P1 colour is the material or mixed in; not where only the lighting changes it', () => {
   const tintedTimes = sphere((n) => { const p = phong(n); return turn(n).map((v) => (0.5 * v + 0.5) * p.lit + p.spec); });

@@ -66,7 +66,7 @@ test('normalAngle: orthographic reaches 90° at the rim, a perspective view acos
 });
 
 test('rimAngle reads the projection from the normals: orthographic 90°, an eye 3 or 10 radii away acos(1/d), on either side', () => {
-  const rim = (o) => rimAngle(samples(sphere(o), analyse(sphere(o), T), { maxRho: 0.9 }), !!o.far, T);
+  const rim = (o) => rimAngle(samples(sphere(o), analyse(sphere(o), T), T, { maxRho: 0.9 }), !!o.far, T);
   const ortho = rim({ d: Infinity });
   assert.ok(ortho.rimDegrees >= 89.5 && ortho.rms < 1, JSON.stringify(ortho));
   for (const d of [3, 10]) {

@@ -28,7 +28,7 @@ export function auditNormals({ facts, images, T, must, sayAs, numbers }, judged)
     img = images[facts.facesImage];
     an = analyse(img, T);
   }
-  const nc = normalColours(samples(img, an), T);
+  const nc = normalColours(samples(img, an, T), T);
   // a reflection of the sphere's normals is the inside of the far side (the front faces culled), or
   // the faces nearest a viewer who looks along +z (clip space, no view matrix): with the depth test
   // on and culling off the nearest faces show; if the picture stays, they were what showed
@@ -39,7 +39,7 @@ export function auditNormals({ facts, images, T, must, sayAs, numbers }, judged)
       // (a page that drew nothing while culling was off shows its last frame: that tells nothing)
       const s = probe.image && probe.draws !== 0 ? images[probe.image] : null;
       const sAn = s && analyse(s, T);
-      const nc2 = s && !sAn.blank ? normalColours(samples(s, sAn), T) : null;
+      const nc2 = s && !sAn.blank ? normalColours(samples(s, sAn, T), T) : null;
       nearest = nc2 ? nc2.det < 0 && pictureChange(s, img, T) <= T.noCullSame : null;
     } else if (probe.faces.depthTest) nearest = true;
   }
@@ -83,7 +83,7 @@ export function auditPerspective({ T, must, sayAs, numbers }, seen) {
   if (!smoothUnitNormals(nc, T)) return;
   const far = nc.det < 0;
   if (!far && nc.det < T.facingDeterminant) return;
-  const rim = rimAngle(samples(img, an, { maxRho: T.rimSampleRadius }), far, T);
+  const rim = rimAngle(samples(img, an, T, { maxRho: T.rimSampleRadius }), far, T);
   if (!rim || rim.rms > T.perspectiveFitDegrees) return;
   numbers.perspective = rim;
   const short = Math.abs(90 - rim.rimDegrees);
@@ -106,7 +106,7 @@ export function auditPerspective({ T, must, sayAs, numbers }, seen) {
 export function auditNormalsNotLight({ T, must, sayAs, numbers }, judged) {
   const say = sayAs('normals-not-light');
   if (!must.has('diffuse') && !must.has('highlight')) return false;
-  const pts = samples(judged.img, judged.an);
+  const pts = samples(judged.img, judged.an, T);
   const nc = normalColours(pts, T);
   if (!smoothUnitNormals(nc, T) || Math.abs(nc.det) < T.facingDeterminant) return false;
   if (addedClearly(addedTintFit(pts, T), T)) return false;

@@ -51,7 +51,7 @@ export function auditPerFragment({ facts, images, T, must, sayAs, numbers, image
   const coarseAt = facts.stopped && !facts.viewMoved ? facts.ladder.findIndex((s, k) => k !== j && !s.blank && s.roundness < T.coarseRoundness && s.image) : -1;
   const coarse = coarseAt >= 0 ? images[facts.ladder[coarseAt].image] : null;
   if (coarse && coarse.width === judged.img.width) {
-    const change = shadingChange(coarse, analyse(coarse, T), judged.img, judged.raw);
+    const change = shadingChange(coarse, analyse(coarse, T), judged.img, judged.raw, T);
     numbers.coarseShadingChange = change;
     imagesShown.coarse = facts.ladder[coarseAt].image;
     const r = analyse(coarse, T).roundness;

@@ -57,8 +57,8 @@ export function auditSliders({ facts, images, T, must, sayAs, rubric, part }, ju
       // 1/r² spot stays and is no highlight), or above the after picture's own directional fit
       const after = images[s.image];
       const a = analyse(after, T);
-      const f = a.blank ? null : nearModel ? { highlightPeak: highlightAbove(perspectiveSamples(after, judged.an, T.pointLightFovy, { max: T.fitSamples }), nearModel, T) }
-        : shadeFit(samples(after, a), T);
+      const f = a.blank ? null : nearModel ? { highlightPeak: highlightAbove(perspectiveSamples(after, judged.an, T, { max: T.fitSamples }), nearModel, T) }
+        : shadeFit(samples(after, a, T), T);
       if (f && f.highlightPeak >= baseFit.highlightPeak * T.ksLeftShare && f.highlightPeak >= T.highlightPeak) {
         sayKs('review', `ks${s.controls ? ` (its ${s.controls.length} sliders)` : ''} at ${target} leaves the highlight as it was (${fmt(f.highlightPeak)}): is ks used in the specular term?`);
       }

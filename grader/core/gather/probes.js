@@ -22,7 +22,7 @@ const free = (S, controls, r, pred = () => true) => controls.find((x) => !S.take
 export async function probeFaces(S, controls, judged) {
   const { T, facts } = S;
   let { img, an } = judged;
-  let nc = normalColours(samples(img, an), T);
+  let nc = normalColours(samples(img, an, T), T);
   if (nc && !facesViewer(nc, T)) {
     for (const [r, want] of [['depth', true], ['cull', true], ['clockwise', false]]) {
       const c = free(S, controls, r);
@@ -32,7 +32,7 @@ export async function probeFaces(S, controls, judged) {
       if (!s || s.an.blank) break;
       ({ img, an } = s);
       facts.facesImage = S.keep('faces', img);
-      nc = normalColours(samples(img, an), T);
+      nc = normalColours(samples(img, an, T), T);
       if (facesViewer(nc, T)) break;
     }
   }
@@ -188,7 +188,7 @@ export async function placeFarther(S, controls) {
   if (await S.tryClick(orbit.start, 'the orbit control', { watchMotion: true }) === 'starts') {
     far = await searchOrbit(S, (img, an) => {
       if (an.blank || an.roundness >= T.orbitCoarseRoundness) return false;
-      const f = shadeFit(samples(img, an), T);
+      const f = shadeFit(samples(img, an, T), T);
       return !!f && f.r2 >= T.diffuseR2 && highlightSeen(f, T) && lightAngle(f) >= T.highlightPlaceLightDegrees;
     });
     await S.tryClick(orbit.stop, 'the orbit control again', { watchMotion: true });

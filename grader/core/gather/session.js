@@ -140,7 +140,7 @@ function trials(S) {
       if (!after) return 'none';
       let later = after;
       if (watchMotion || S.moving) {
-        await S.tick(400, 2); // three frames: an orbit a small step a frame shows it moved
+        await S.tick(T.trialTickMs, 2); // three frames: an orbit a small step a frame shows it moved
         later = await S.shot();
       }
       const effect = effectOf({ before, after, later, wasMoving: S.moving }, T);
@@ -160,7 +160,7 @@ function trials(S) {
     },
     /** Does the picture move by itself over three frames? */
     async watch() {
-      await S.tick(500, 2);
+      await S.tick(T.watchTickMs, 2);
       const next = await S.shot();
       S.moving = pictureChange(S.cur.img, next.img, T) > T.pictureMoves;
       S.cur = next;

@@ -17,7 +17,7 @@ function numericGroups(S, controls, roles) {
 
 /** The share of the sphere's samples (the judged view's outline `an`) white (every channel at clippedLevel). */
 export function clippedShare(img, an, T) {
-  const pts = samples(img, an);
+  const pts = samples(img, an, T);
   return pts.length ? pts.filter((s) => Math.min(...s.c) >= T.clippedLevel).length / pts.length : 0;
 }
 
@@ -58,8 +58,8 @@ export async function unclip(S, controls, img, an) {
 }
 
 /** The spread (standard deviation) of the brightness over the sphere's samples (the judged view's outline `an`). */
-export function brightnessSpread(img, an) {
-  const ys = samples(img, an).map((s) => luminance(s.c));
+export function brightnessSpread(img, an, T) {
+  const ys = samples(img, an, T).map((s) => luminance(s.c));
   if (!ys.length) return 0;
   const mean = ys.reduce((a, y) => a + y, 0) / ys.length;
   return Math.sqrt(ys.reduce((a, y) => a + (y - mean) ** 2, 0) / ys.length);
@@ -74,7 +74,7 @@ export function brightnessSpread(img, an) {
  */
 export async function brighten(S, controls, img, an) {
   const { T, facts } = S;
-  const before = brightnessSpread(img, an);
+  const before = brightnessSpread(img, an, T);
   if (before >= T.evenSpread) return null;
   const [g] = numericGroups(S, controls, ['Le', 'kd']);
   if (!g || g.controls.every((c) => Number(S.now(c)) >= greatest(c))) return null;
@@ -82,7 +82,7 @@ export async function brighten(S, controls, img, an) {
   const vs = await setGroup(S, g, greatest);
   await S.tick(100);
   const sh = await S.shot();
-  const after = sh && !sh.an.blank ? brightnessSpread(sh.img, an) : 0;
+  const after = sh && !sh.an.blank ? brightnessSpread(sh.img, an, T) : 0;
   if (after < T.litSpread) {
     // raised as far as the page lets it and still too dim to read: set back, and read as it was seen
     await setGroup(S, g, (c) => S.now(c));

@@ -28,8 +28,9 @@ export function outlineFlips(a, b, T) {
   return { flips, atOutline, area: b.area - a.area };
 }
 
-/** RMS difference of brightness between two pictures over the pixels inside both objects. */
-export function shadingChange(imgA, anA, imgB, anB, maxRho = 0.8) {
+/** RMS difference of brightness between two pictures over the pixels inside both objects, within the rubric's coarseSampleRadius of B's radius. */
+export function shadingChange(imgA, anA, imgB, anB, T) {
+  const maxRho = T.coarseSampleRadius;
   let sum = 0, n = 0;
   const w = imgA.width;
   for (let p = 0; p < anA.mask.length; p++) {

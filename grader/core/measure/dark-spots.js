@@ -13,7 +13,7 @@ export function darkSpots(img, an, after, fit, T) {
   const margin = T.darkSpotMargin;
   const { width: w } = img;
   let dark = 0, n = 0;
-  for (const s of samples(img, an)) {
+  for (const s of samples(img, an, T)) {
     const o = 4 * (s.y * w + s.x);
     const before = (img.data[o] + img.data[o + 1] + img.data[o + 2]) / 765;
     const now = (after.data[o] + after.data[o + 1] + after.data[o + 2]) / 765;

@@ -1,8 +1,12 @@
 // Samples of the sphere inside its silhouette: each pixel's colour (0..1) and the normal a sphere
 // has there, seen by an orthographic or a perspective camera; and a colour's brightness.
 
-/** Interior samples: pixel colour (0..1) and the view-space normal a sphere has there. */
-export function samples(img, an, { maxRho = 0.85, max = 4000 } = {}) {
+/**
+ * Interior samples: pixel colour (0..1) and the view-space normal a sphere has there, within
+ * `maxRho` of the radius (the rubric's sampleRadius: the rim's pixels mix with the background), at
+ * most `max` of them (maxSamples), on a regular grid.
+ */
+export function samples(img, an, T, { maxRho = T.sampleRadius, max = T.maxSamples } = {}) {
   const { width: w, data } = img;
   const out = [];
   const r = an.radius;
@@ -23,14 +27,14 @@ export function samples(img, an, { maxRho = 0.85, max = 4000 } = {}) {
 }
 
 /**
- * samples() with the normals a perspective camera sees: the eye on the sphere's axis, `fovy`
- * degrees high (the rubric's pointLightFovy: the slides' perspective(45, …)), at the distance that makes the
+ * samples() with the normals a perspective camera sees: the eye on the sphere's axis, the rubric's
+ * pointLightFovy degrees high (the slides' perspective(45, …)), at the distance that makes the
  * sphere's radius on screen; each pixel's ray meets the unit sphere at x, and n = x.
  */
-export function perspectiveSamples(img, an, fovy, opts = {}) {
-  const t = Math.tan((fovy * Math.PI) / 360) / (img.height / 2);
+export function perspectiveSamples(img, an, T, opts = {}) {
+  const t = Math.tan((T.pointLightFovy * Math.PI) / 360) / (img.height / 2);
   const D = 1 / Math.sin(Math.atan(an.radius * t));
-  return samples(img, an, opts).map((s) => {
+  return samples(img, an, T, opts).map((s) => {
     const dx = (s.x + 0.5 - an.cx) * t, dy = -(s.y + 0.5 - an.cy) * t, len = Math.hypot(dx, dy, 1);
     const d = [dx / len, dy / len, -1 / len];
     const ed = D * d[2];

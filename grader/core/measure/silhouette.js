@@ -57,7 +57,7 @@ export function analyse(img, T) {
   }
   const area = best;
   const result = { width: w, height: h, bg, area, coverage: area / n, oneColour, mask };
-  if (area < Math.max(30, T.minCoverage * n)) return { ...result, blank: true };
+  if (area < Math.max(T.minObjectPixels, T.minCoverage * n)) return { ...result, blank: true };
   const cx = sx / area + 0.5, cy = sy / area + 0.5;
   // radial profile: the farthest object pixel along 72 rays from the centroid
   const rmax = Math.hypot(w, h);
@@ -79,9 +79,9 @@ export function analyse(img, T) {
   const touches = radii.some((r, k) => {
     const a = (2 * Math.PI * k) / 72;
     const x = cx + r * Math.cos(a), y = cy + r * Math.sin(a);
-    return x < 1.5 || y < 1.5 || x > w - 1.5 || y > h - 1.5;
+    return x < T.edgeMarginPixels || y < T.edgeMarginPixels || x > w - T.edgeMarginPixels || y > h - T.edgeMarginPixels;
   });
-  const circle = fitCircle(img, mask, bg, tol);
+  const circle = fitCircle(img, mask, bg, tol, T);
   return { ...result, blank: false, cx, cy, R, radius: mean, roundness, fill, touches, circle };
 }
 
@@ -158,7 +158,7 @@ function openBox(mask, w, h, r) {
  * Kåsa's least-squares fit; roundness = spread of the edge's distances from the centre over the
  * radius; arc = the degrees of the circle that edge covers.
  */
-export function fitCircle(img, mask, bg, tol) {
+export function fitCircle(img, mask, bg, tol, T) {
   const { width: w, height: h, data } = img;
   const pts = [];
   for (let y = 1; y < h - 1; y++) {
@@ -166,10 +166,10 @@ export function fitCircle(img, mask, bg, tol) {
       const p = y * w + x;
       if (!mask[p] || (mask[p - 1] && mask[p + 1] && mask[p - w] && mask[p + w])) continue;
       const o = 4 * p;
-      if (Math.abs(data[o] - bg[0]) + Math.abs(data[o + 1] - bg[1]) + Math.abs(data[o + 2] - bg[2]) > 2.5 * tol) pts.push([x + 0.5, y + 0.5]);
+      if (Math.abs(data[o] - bg[0]) + Math.abs(data[o + 1] - bg[1]) + Math.abs(data[o + 2] - bg[2]) > T.litEdgeContrast * tol) pts.push([x + 0.5, y + 0.5]);
     }
   }
-  if (pts.length < 12) return null;
+  if (pts.length < T.minEdgePoints) return null;
   // x² + y² + D x + E y + F = 0
   const A = [[0, 0, 0], [0, 0, 0], [0, 0, 0]], b = [0, 0, 0];
   for (const [x, y] of pts) {
@@ -181,8 +181,8 @@ export function fitCircle(img, mask, bg, tol) {
   if (!(r > 0)) return null;
   const d = pts.map(([x, y]) => Math.hypot(x - cx, y - cy));
   const sorted = [...d].sort((a, c) => a - c);
-  // the spread of the middle 96% (a stray pixel or two aside)
-  const lo = sorted[Math.floor(0.02 * sorted.length)], hi = sorted[Math.ceil(0.98 * sorted.length) - 1];
+  // the spread of the middle of the distances (edgeTrim of them left out at each end: a stray pixel or two)
+  const lo = sorted[Math.floor(T.edgeTrim * sorted.length)], hi = sorted[Math.ceil((1 - T.edgeTrim) * sorted.length) - 1];
   const bins = new Set(pts.map(([x, y]) => Math.floor(((Math.atan2(y - cy, x - cx) + Math.PI) / (2 * Math.PI)) * 36) % 36));
   return { cx, cy, r, roundness: (hi - lo) / r, arc: bins.size * 10, points: pts.length };
 }
