@@ -6,8 +6,8 @@
 // artifacts.
 import { analyse } from './measure.js';
 import { checkList, NOT_GRADED, tooSlowWords, tooHeavyWords } from './verdict.js';
-import { litView } from './views.js';
-import { sphereView, shadingOf, viewFits } from './evidence.js';
+import { litView } from './computed/views.js';
+import { sphereView, shadingOf, viewFits } from './computed/evidence.js';
 import { auditFirstFrame, notGradedHere, STOP } from './audits/first-frame.js';
 import { auditMeta } from './audits/index.js';
 import { auditShown } from './audits/channels.js';

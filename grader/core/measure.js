@@ -3,7 +3,7 @@
 // { width, height, data } (RGBA bytes). Everything here is plain arithmetic, no browser.
 // The measurements live in measure/, one concern a module; this file gathers them for importers.
 import { analyse as analyseOnce } from './measure/silhouette.js';
-import { memo } from './memo.js';
+import { memo } from './computed/memo.js';
 
 /** A picture's silhouette (measure/silhouette.js), read once a picture and rubric. */
 export const analyse = memo(analyseOnce);

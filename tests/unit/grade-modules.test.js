@@ -12,7 +12,7 @@ import { effectOf, nameRole, trialOrder } from '../../grader/core/controls.js';
 import { normalAngle } from '../../grader/core/measure/perspective.js';
 import { checkList, verdictOf, reasonsOf, findingsOf } from '../../grader/core/verdict.js';
 import { parseLabels, agreement, agreementText } from '../../grader/node/labels.js';
-import { memo } from '../../grader/core/memo.js';
+import { memo } from '../../grader/core/computed/memo.js';
 import { readFileSync } from 'node:fs';
 
 const rubric = JSON.parse(readFileSync(new URL('../../grader/core/rubric.json', import.meta.url), 'utf8'));

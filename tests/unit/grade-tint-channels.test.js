@@ -109,7 +109,7 @@ test('clippedShare: the share of the sphere washed out to white', () => {
 
 test('a highlight at the light is a review on a plain material, and a note where the tint makes the fitted light unsure', async () => {
   const { auditHighlight } = await import('../../grader/core/audits/highlight.js');
-  const { shadingOf } = await import('../../grader/core/evidence.js');
+  const { shadingOf } = await import('../../grader/core/computed/evidence.js');
   const light = norm([0.9, 0.2, 0.35]); // 68° from the viewer
   const atLight = (n, albedo) => {
     const d = Math.max(dot(n, light), 0);
@@ -149,7 +149,7 @@ function fakePage(controls, draw) {
 
 test('trySliders moves the three sliders of one parameter together, and the artifact says which', async () => {
   const { session } = await import('../../grader/core/gather/session.js');
-  const { trySliders } = await import('../../grader/core/gather/probes.js');
+  const { trySliders } = await import('../../grader/core/gather/sliders.js');
   const controls = ['ks_r', 'ks_g', 'ks_b', 'shine'].map((id, k) => ({ ...slider(k, id), max: id === 'shine' ? '100' : '1', value: id === 'shine' ? '30' : '0.6' }));
   const { page, calls } = fakePage(controls, (v) => sphere((n) => { const ks = [0, 1, 2].map((k) => Number(v.get(k))); return ks.map((x) => 0.3 + 0.5 * x * Math.pow(n[2], Number(v.get(3)))); }));
   const S = session(page, { part: 'WP04P4', rubric });

@@ -1,10 +1,10 @@
-// The camera as the page sent it (grader/core/camera.js): the view matrix among the animated ones,
+// The camera as the page sent it (grader/core/computed/camera.js): the view matrix among the animated ones,
 // and how far it turned; and the orbit's audit weighing the lit side's turn against it.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import { mat4 } from 'gl-matrix';
-import { cameraOf, cameraTurn } from '../../grader/core/camera.js';
+import { cameraOf, cameraTurn } from '../../grader/core/computed/camera.js';
 import { auditOrbit } from '../../grader/core/audits/orbit.js';
 import { checkList } from '../../grader/core/verdict.js';
 

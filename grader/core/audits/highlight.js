@@ -2,8 +2,8 @@
 // or with the page's own ks and s sliders raised), and it sits at w_h, halfway between the light
 // and the viewer (the slides' w_r · w_o peaks there too), not at the light.
 import { highlightOffset } from '../measure.js';
-import { highlightEvidence } from '../evidence.js';
-import { fullFit, lightAngle } from '../views.js';
+import { highlightEvidence } from '../computed/evidence.js';
+import { fullFit, lightAngle } from '../computed/views.js';
 import { fmt } from '../format.js';
 import { SLIDE } from './slides.js';
 

@@ -1,7 +1,7 @@
 // WP04P3: "the camera orbits the sphere" with a button that toggles it: the lit side turns as the
 // camera orbits (a light that stays in the world), and a control starts and stops the orbit.
 import { describe } from '../controls.js';
-import { cameraRotations, rotationsTurn, staysInWorld } from '../camera.js';
+import { cameraRotations, rotationsTurn, staysInWorld } from '../computed/camera.js';
 import { fmt } from '../format.js';
 import { SLIDE } from './slides.js';
 

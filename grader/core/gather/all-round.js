@@ -6,7 +6,7 @@
 // each step is sized from the last to turn about roundStepDegrees, so that no side goes unseen (a
 // hole seen obliquely notches the outline; it shows as a gap only near face-on). Each position's
 // outline is kept as numbers, the first with a gap as a picture; the audit (auditAllRound) judges them.
-import { cameraTurn } from '../camera.js';
+import { cameraTurn } from '../computed/camera.js';
 import { readCamera } from './orbit.js';
 
 /** Looks at the sphere all round its orbit where its mesh cannot be read: sets facts.allRound. */

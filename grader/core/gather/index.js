@@ -11,11 +11,13 @@
 import { session, TooSlow, TooHeavy } from './session.js';
 import { findOrbit, sampleOrbit, look, startOrbitToSee } from './orbit.js';
 import { findLevel, climb } from './level.js';
-import { probeFaces, probeDepthCulling, raiseHighlight, trySliders, leastShininess, placeFarther } from './probes.js';
+import { probeFaces, probeDepthCulling } from './faces.js';
+import { raiseHighlight, placeFarther } from './highlight.js';
+import { trySliders, leastShininess } from './sliders.js';
 import { unclip, brighten } from './visible.js';
 import { readGeometry } from './geometry.js';
 import { lookAllRound } from './all-round.js';
-import { sphereView, shadingOf, viewFits, highlightEvidence } from '../evidence.js';
+import { sphereView, shadingOf, viewFits, highlightEvidence } from '../computed/evidence.js';
 import { shownDifference } from '../measure/shown.js';
 
 /** What the gathering is doing until the page's first frame is seen (past it, the page draws). */

@@ -4,9 +4,9 @@
 // frames each that depends only on the sample's index and the page's own work a frame.
 import { analyse } from '../measure.js';
 import { describe, named, trialOrder, isClickable, sentChanges } from '../controls.js';
-import { litView } from '../views.js';
+import { litView } from '../computed/views.js';
 import { readGeometry, readSent } from './geometry.js';
-import { cameraOf, cameraTurn } from '../camera.js';
+import { cameraOf, cameraTurn } from '../computed/camera.js';
 import { fmt } from '../format.js';
 
 /** Is `img` a lit view? Lit views are kept (`orbiting`: seen while the camera orbits). */

@@ -7,7 +7,7 @@
 // dark light) is read again with the page's own Le slider (else kd) at its greatest.
 import { samples } from '../measure.js';
 import { luminance } from '../measure/samples.js';
-import { groupsOf, setGroup, least, greatest } from './probes.js';
+import { groupsOf, setGroup, least, greatest } from './params.js';
 
 /** The page's free parameter groups for `roles` that are sliders or numbers (not colour pickers), in the order of `roles`. */
 function numericGroups(S, controls, roles) {

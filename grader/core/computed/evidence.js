@@ -2,7 +2,7 @@
 // the lit edge where the unlit side merges with the background), the diffuse fit and point-light
 // fit of its shading, and where a highlight shows. Pure: a gatherer that acts on one of these (to
 // raise ks, or look farther along the orbit) and the audit that judges it read the same numbers.
-import { analyse, samples, shadeFit, pointLightFit, perspectiveSamples, highlightSeen, clearlyNearFalloff } from './measure.js';
+import { analyse, samples, shadeFit, pointLightFit, perspectiveSamples, highlightSeen, clearlyNearFalloff } from '../measure.js';
 import { fullFit, lightAngle } from './views.js';
 import { memo } from './memo.js';
 

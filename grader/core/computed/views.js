@@ -1,7 +1,7 @@
 // A view of the sphere read for its shading: is it lit (a clear spread of brightness, or a clean
 // diffuse fit with a clear diffuse term), and its diffuse fit. Pure: the gatherers use it to decide
 // how long to sample the orbit, the audits to judge the views kept.
-import { analyse, samples, shadeFit } from './measure.js';
+import { analyse, samples, shadeFit } from '../measure.js';
 import { memo } from './memo.js';
 
 /**

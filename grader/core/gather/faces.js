@@ -1,0 +1,57 @@
+// P2, feeding audits/normals.js (front-faces) and its depth-culling audit: the page's own depth,
+// culling and winding controls set as the step ends, a frame with culling off, and the depth test and
+// culling as the page set them.
+import { samples, normalColours, facesViewer } from '../measure.js';
+import { free } from './params.js';
+
+/**
+ * P2: the page may start with the depth test off or culling on the wrong side: its own controls
+ * set as the step ends, until the colours face the viewer (facts.facesImage: the picture after).
+ * Then, where the colours are the normals reflected, a frame with culling off (WebGL): the same
+ * picture means the nearest faces were showing (facts.noCull; its `draws`, the page's draw calls
+ * meanwhile: none, and the picture tells nothing).
+ */
+export async function probeFaces(S, controls, judged) {
+  const { T, facts } = S;
+  let { img, an } = judged;
+  let nc = normalColours(samples(img, an, T), T);
+  if (nc && !facesViewer(nc, T)) {
+    for (const [r, want] of [['depth', true], ['cull', true], ['clockwise', false]]) {
+      const c = free(S, controls, r);
+      if (!c || (c.type === 'checkbox' && c.checked === want)) continue;
+      if (!await S.press(c, `the ${r === 'clockwise' ? 'clockwise-front-faces' : r} control`)) continue;
+      const s = await S.shot();
+      if (!s || s.an.blank) break;
+      ({ img, an } = s);
+      facts.facesImage = S.keep('faces', img);
+      nc = normalColours(samples(img, an, T), T);
+      if (facesViewer(nc, T)) break;
+    }
+  }
+  if (nc && nc.det < 0 && nc.residual <= T.facingResidual && facts.api !== 'webgpu') {
+    const faces = (await S.page.state()).faces || {};
+    facts.noCull = { faces };
+    if (faces.depthTest && faces.culling) {
+      const before = (await S.page.state()).draws;
+      await S.page.setNoCull(true);
+      await S.tick(100);
+      const s = await S.shot();
+      // a page that draws only when a control asks drew nothing here: its picture tells nothing
+      facts.noCull.draws = (await S.page.state()).draws - before;
+      await S.page.setNoCull(false);
+      await S.tick(100);
+      if (s) facts.noCull.image = S.keep('no-cull', s.img);
+    }
+  }
+}
+
+/** P2: the depth test and culling as the page set them, its own toggles switched on where they start off. */
+export async function probeDepthCulling(S, controls) {
+  let faces = (await S.page.state()).faces || {};
+  for (const [r, on] of [['depth', 'depthTest'], ['cull', 'culling']]) {
+    const c = free(S, controls, r);
+    if (faces[on] || !c) continue;
+    if (await S.press(c, `the ${r} control`)) faces = (await S.page.state()).faces || {};
+  }
+  S.facts.faces = faces;
+}

@@ -1,0 +1,26 @@
+// The page's own parameter controls, as the gatherers set them: a slider's least and greatest values,
+// the parameters its free sliders set (ks r, g, b as one group), a group set and described in facts,
+// and a free control found by its name. Shared by faces.js, highlight.js, sliders.js and visible.js.
+import { nameRole, parameterGroups } from '../controls.js';
+
+const role = (S, c) => nameRole(c, S.P);
+
+/** The first of `controls` not yet given a role whose name says `r` (and `pred` holds). */
+export const free = (S, controls, r, pred = () => true) => controls.find((x) => !S.taken.has(x.index) && pred(x) && role(S, x) === r);
+
+/** A slider's least and greatest values (a colour picker's: black and white). */
+export const least = (c) => (c.type === 'color' ? '#000000' : Number(c.min || 0));
+export const greatest = (c) => (c.type === 'color' ? '#ffffff' : Number(c.max === '' || c.max === undefined ? (c.type === 'range' ? 100 : 1) : c.max));
+
+/** The parameters the page's free sliders set (parameterGroups: ks r, g, b as one). */
+export const groupsOf = (S, controls) => parameterGroups(controls.filter((c) => !S.taken.has(c.index)), S.P);
+
+/** Sets every slider of a parameter group (`value(c)` each), on `events`; returns the values set. */
+export async function setGroup(S, g, value, events = ['input', 'change']) {
+  const vs = g.controls.map(value);
+  for (let k = 0; k < vs.length; k++) await S.page.setValue(g.controls[k], vs[k], events);
+  return vs;
+}
+
+/** A group's entry in facts: its first control, and the others (and their values) where it has more. */
+export const groupFacts = (g, vs) => ({ control: g.controls[0].index, ...(g.controls.length > 1 ? { controls: g.controls.map((c) => c.index), values: vs, channels: g.channels } : {}) });

@@ -1,0 +1,66 @@
+// P4/P5, feeding audits/sliders.js and the least-s audit (audits/shading.js): each parameter's
+// sliders set far from where they are, on input (else change), with how much the picture changed on
+// each event; s at its least.
+import { pictureChange } from '../measure.js';
+import { describeGroup, sentChanges, sliderActed } from '../controls.js';
+import { readSent } from './geometry.js';
+import { groupsOf, setGroup, least, free, groupFacts } from './params.js';
+
+/**
+ * P4: each parameter's sliders (one slider, or the three of a colour or vector: parameterGroups)
+ * set far from where they are, on input (else change), its picture kept; then back.
+ */
+export async function trySliders(S, controls) {
+  const { T, facts } = S;
+  S.step('trying the sliders');
+  const base = S.images[facts.shadingImage || facts.judged];
+  const groups = groupsOf(S, controls);
+  facts.slidersFound = groups.length;
+  const animated = facts.sentAnimated, sentBefore = S.moving && animated ? await readSent(S) : null;
+  for (const g of groups.slice(0, T.maxSliderTrials)) {
+    const k = g.role;
+    const target = (c) => {
+      if (c.type === 'color') return least(c);
+      const lo = Number(c.min || 0), hi = Number(c.max === '' || c.max === undefined ? 100 : c.max);
+      return k === 's' ? (Number(S.now(c)) > (lo + hi) / 2 ? lo : hi) : (Number(S.now(c)) > lo ? lo : hi); // s: far from where it is; others: to the least
+    };
+    const vs = await setGroup(S, g, target, ['input']);
+    await S.tick(100);
+    let after = await S.page.snap();
+    // what the page sent differently (sentChanges) decides where the picture moves by itself
+    const sent = { input: sentChanges(sentBefore, await readSent(S), animated), change: null };
+    // how much the picture changed on each event tried (the audit decides the event from these);
+    // the change event is tried where the input event showed nothing
+    const changed = { input: pictureChange(base, after, T), change: null };
+    let how = 'input';
+    if (!sliderActed({ moving: S.moving, picture: changed.input > T.sliderChange, sent: sent.input })) {
+      await setGroup(S, g, target, ['change']);
+      await S.tick(100);
+      after = await S.page.snap();
+      sent.change = sentChanges(sentBefore, await readSent(S), animated);
+      changed.change = pictureChange(base, after, T);
+      how = sliderActed({ moving: S.moving, picture: changed.change > T.sliderChange, sent: sent.change }) ? 'change' : 'none';
+    }
+    const r = k && k !== 'levelSlider' ? k : null;
+    S.act(`set ${describeGroup(g)} to ${vs[0]} (${how === 'none' ? 'no visible change' : `the picture changed on the ${how} event`})`);
+    if (how !== 'none' && k !== 'levelSlider') facts.roles[r || `slider ${Object.keys(facts.roles).length}`] = `${describeGroup(g)}: changes the shading on ${how}`;
+    facts.sliders.push({ ...groupFacts(g, vs), role: r, levelSlider: k === 'levelSlider', target: vs[0], how, changed, ...(S.moving && sent.input ? { moving: true, sent } : {}), image: S.keep(`slider-${facts.sliders.length}`, after) });
+    // back to where it was (drawn with the next slider's frame, or the last one below)
+    await setGroup(S, g, (c) => S.now(c));
+  }
+  await S.tick(100);
+}
+
+/** s at its least (where that is 0 or below): one picture, in the judged view; then s back. */
+export async function leastShininess(S, controls) {
+  const c = free(S, controls, 's', (x) => x.type === 'range' || x.type === 'number');
+  if (!c) return;
+  const lo = c.min === '' || c.min === undefined || c.min === null ? 0 : Number(c.min); // a range's min defaults to 0
+  if (!(lo <= 0)) return;
+  await S.page.setValue(c, lo, ['input', 'change']);
+  await S.tick(100);
+  const after = await S.page.snap();
+  await S.page.setValue(c, S.now(c), ['input', 'change']);
+  await S.tick(100);
+  if (after) S.facts.leastS = { value: lo, image: S.keep('least-s', after) };
+}
