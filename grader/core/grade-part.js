@@ -2,6 +2,7 @@
 // (gather/), then audited (audit.js). For the command's Playwright run and for the check page.
 import { gatherPart, addTime, timed } from './gather/index.js';
 import { auditPart } from './audit.js';
+import { rolesInWords } from './computed/roles.js';
 
 export { addTime, timed };
 
@@ -22,5 +23,5 @@ export function judged(artifact, rubric) {
   const shown = {};
   for (const [k, name] of Object.entries(a.shown)) if (images[name]) shown[k] = images[name];
   return { artifact, fail: a.fail, failId: a.failId, checks: a.checks, numbers: a.numbers, tooSlow: a.tooSlow, tooHeavy: a.tooHeavy, notGraded: a.notGraded || null, notGradedId: a.notGradedId, images: shown, shown: a.shown,
-    actions: facts.actions, controls: facts.roles, api: facts.api, canvas: facts.canvas };
+    actions: facts.actions, controls: rolesInWords(facts, rubric.thresholds), api: facts.api, canvas: facts.canvas };
 }

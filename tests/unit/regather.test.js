@@ -13,6 +13,7 @@ import { fileURLToPath } from 'node:url';
 import { auditDirs } from '../../grader/node/audit-pool.js';
 import { regatherLines } from '../../grader/node/audit-only.js';
 import { recording, staleKeys } from '../../grader/core/gather/reads.js';
+import { rolesInWords } from '../../grader/core/computed/roles.js';
 import { mergeRubric } from '../../grader/core/rubric.js';
 
 const here = path.dirname(fileURLToPath(import.meta.url));
@@ -85,5 +86,21 @@ test("the audit decides a slider's event from the picture changes the gathering 
   const strict = mergeRubric(rubric, { thresholds: { sliderChange: most + 0.01 } });
   assert.match(await said(strict), /no slider changes the material or light/);
   assert.deepEqual((await auditDirs([carla], strict)).get(carla).stale, ['sliderChange']);
+});
+
+test('the roles are kept as facts and put in words under the rubric given: a slider\'s event too', () => {
+  const facts = read(path.join(dirOf('carla', 'WP04P4'), 'facts.json'));
+  const sliders = Object.entries(facts.roles).filter(([, r]) => r.found === 'shading');
+  assert.ok(sliders.length >= 3, JSON.stringify(facts.roles));
+  for (const [role, r] of sliders) {
+    assert.equal(typeof r.what, 'string');
+    assert.match(rolesInWords(facts, rubric.thresholds)[role], /: changes the shading on change$/);
+    const most = Math.max(...facts.sliders.map((x) => x.changed.change ?? 0));
+    assert.match(rolesInWords(facts, { ...rubric.thresholds, sliderChange: most + 0.01 })[role], /changed less than this rubric's sliderChange asks$/);
+  }
+  const ada = read(path.join(dirOf('ada', 'WP04P1'), 'facts.json'));
+  assert.match(rolesInWords(ada, rubric.thresholds).subdivide, /\(listens: click\): the silhouette got rounder$/);
+  // an artifact from before roles were kept as facts: its sentences as they were
+  assert.deepEqual(rolesInWords({ roles: { orbit: 'button "Spin": the picture stopped moving' } }, rubric.thresholds), { orbit: 'button "Spin": the picture stopped moving' });
 });
 

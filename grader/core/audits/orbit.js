@@ -4,6 +4,7 @@ import { describe } from '../controls.js';
 import { cameraRotations, rotationsTurn, staysInWorld } from '../computed/camera.js';
 import { fmt } from '../format.js';
 import { SLIDE } from './slides.js';
+import { rolesInWords } from '../computed/roles.js';
 
 /** This module's audits: id → title, the slide's sentence it checks, the artifacts it reads. */
 export const META = {
@@ -55,7 +56,7 @@ export function auditOrbit({ facts, T, must, sayAs, numbers }, lit) {
     const sayToggle = sayAs('orbit-toggle');
     const o = facts.orbit;
     const control = o.control === null ? null : facts.controls.find((c) => c.index === o.control);
-    if (o.toggles) sayToggle('pass', `a control toggles the orbit on and off (${facts.roles.orbit})`);
+    if (o.toggles) sayToggle('pass', `a control toggles the orbit on and off (${rolesInWords(facts, T).orbit})`);
     else if (control) sayToggle('review', `${describe(control)} starts the orbit, but nothing found stops it`);
     else if (o.movedAtFirst) sayToggle('review', `the camera orbits, but no button toggles the orbit: none of the ${facts.level.trials} controls tried stops it (the slide asks for one)`);
     else sayToggle('review', 'no orbit: the picture never moved, and no control named for the orbit starts it');

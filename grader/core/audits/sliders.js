@@ -1,7 +1,7 @@
 // WP04P4: "sliders for the material and light parameters" that act on the input event (while
 // sliding), and ks used in the specular term.
 import { analyse, samples, shadeFit, perspectiveSamples, highlightAbove } from '../measure.js';
-import { sliderActed } from '../controls.js';
+import { sliderEvent } from '../computed/slider-event.js';
 import { fmt } from '../format.js';
 import { SLIDE } from './slides.js';
 
@@ -13,24 +13,6 @@ export const META = {
 };
 
 const SLIDERS = ['kd', 'ks', 's', 'Le', 'La'];
-
-/**
- * The event a slider acted on: where the picture moved by itself while it was tried, what the page
- * sent differently on each event (s.sent) decides; elsewhere how much the picture changed on each
- * event tried (s.changed), against sliderChange (an artifact from before those were kept: the
- * gathering's reading, s.how). The change event was tried only where the input event showed nothing
- * to the gathering's sliderChange: under a rubric that asks more, it is not known (the part is named
- * to gather again).
- */
-function eventOf(s, T) {
-  if (s.moving && s.sent) {
-    if (sliderActed({ moving: true, sent: s.sent.input })) return 'input';
-    return s.sent.change && sliderActed({ moving: true, sent: s.sent.change }) ? 'change' : 'none';
-  }
-  if (!s.changed) return s.how;
-  if (s.changed.input > T.sliderChange) return 'input';
-  return s.changed.change !== null && s.changed.change > T.sliderChange ? 'change' : 'none';
-}
 
 /** The sliders tried (facts.sliders), against the judged view (`judged`: { an }) and its shading. */
 export function auditSliders({ facts, images, T, must, sayAs, rubric, part }, judged, shading) {
@@ -45,7 +27,7 @@ export function auditSliders({ facts, images, T, must, sayAs, rubric, part }, ju
   const together = {}; // role → how its sliders moved together (ks r, g, b: one parameter)
   for (const s of facts.sliders) {
     const { role, target } = s;
-    const how = eventOf(s, T);
+    const how = sliderEvent(s, T);
     if (how !== 'none' && !s.levelSlider) {
       if (role && !found[role]) found[role] = true;
       if (role && s.controls) together[role] = `${s.controls.length} sliders (${s.channels}) moved together`;

@@ -2,6 +2,7 @@
 // the outline getting rounder with each level.
 import { fmt } from '../format.js';
 import { SLIDE } from './slides.js';
+import { rolesInWords } from '../computed/roles.js';
 
 /** This module's audits: id → title, the slide's sentence it checks, the artifacts it reads. */
 export const META = {
@@ -11,12 +12,13 @@ export const META = {
 };
 
 /** The slide's Subdivide and Coarsen buttons, as found by their effect. */
-export function auditLevelControls({ facts, must, sayAs }) {
+export function auditLevelControls({ facts, T, must, sayAs }) {
   const say = sayAs('level-controls');
   const L = facts.level;
   if (!must.has('subdivideControls') || !L) return;
   const hasLevel = L.subdivide || L.slider;
-  if (hasLevel) say('pass', `has controls to subdivide (${facts.roles.subdivide || facts.roles.levelSlider})`);
+  const roles = rolesInWords(facts, T);
+  if (hasLevel) say('pass', `has controls to subdivide (${roles.subdivide || roles.levelSlider})`);
   else if (!L.stopped) say('review', 'the level controls could not be looked for: the picture never stood still');
   else say('review', `nothing found that makes the sphere finer: ${L.trials} controls tried${L.valued ? ', sliders and menus stepped' : ''}, and the arrow, + and − keys pressed (the slide asks for Subdivide and Coarsen buttons)`);
   if (L.subdivide && !L.coarsen && !L.slider) say('review', 'nothing found that makes the sphere coarser (the slide asks for a Coarsen button too)');

@@ -66,7 +66,7 @@ async function levelSliderByEffect(S, valued) {
     const effect = await S.trial(async () => { await S.page.setValue(c, values[1], ['input', 'change']); await S.tick(100); return true; }, { watchMotion: false });
     S.act(`set ${describe(c)} from ${values[0]} to ${values[1]} → ${effectWords[effect]}`);
     if (effect === 'finer') {
-      S.assign('levelSlider', c, 'the silhouette got rounder as it went up');
+      S.assign('levelSlider', c, 'rounder-up');
       return c;
     }
     await S.page.setValue(c, c.value, ['input', 'change']); // not the level: back where it was
@@ -88,8 +88,8 @@ async function levelKeys(S, levelBy) {
     if (e1 === 'finer') levelBy.subdivide = { act: key(up) };
     else if (await S.trial(key(up), { watchMotion: false }) === 'finer') levelBy.subdivide = { act: key(up) };
     if (e2 === 'coarser') levelBy.coarsen = { act: key(down) };
-    if (levelBy.subdivide) S.facts.roles.subdivide = `the ${up} key: the silhouette got rounder`;
-    if (levelBy.coarsen) S.facts.roles.coarsen = `the ${down} key: the silhouette got coarser`;
+    if (levelBy.subdivide) S.facts.roles.subdivide = { key: up, found: 'rounder' };
+    if (levelBy.coarsen) S.facts.roles.coarsen = { key: down, found: 'coarser' };
     if (levelBy.subdivide) {
       await levelBy.subdivide.act(); // back up where the down key took it
       S.cur = await S.shot();
@@ -108,7 +108,7 @@ export async function findLevel(S, controls) {
   S.levelSlider = null;
   if (stopped) {
     await levelButtons(S, clickables, levelBy);
-    for (const role of ['subdivide', 'coarsen']) if (levelBy[role]) S.assign(role, levelBy[role].c, `the silhouette got ${role === 'subdivide' ? 'rounder' : 'coarser'}`);
+    for (const role of ['subdivide', 'coarsen']) if (levelBy[role]) S.assign(role, levelBy[role].c, role === 'subdivide' ? 'rounder' : 'coarser');
     if (!levelBy.subdivide) S.levelSlider = await levelSliderByEffect(S, valued);
     if (!levelBy.subdivide && !S.levelSlider) await levelKeys(S, levelBy);
   } else {
@@ -118,11 +118,11 @@ export async function findLevel(S, controls) {
       const role = nameRole(c, P);
       if ((role === 'subdivide' || role === 'coarsen') && !levelBy[role] && !S.taken.has(c.index)) levelBy[role] = { c, act: () => S.press(c, 'a control') };
     }
-    for (const role of ['subdivide', 'coarsen']) if (levelBy[role]) S.assign(role, levelBy[role].c, 'by its name (the picture kept moving)');
+    for (const role of ['subdivide', 'coarsen']) if (levelBy[role]) S.assign(role, levelBy[role].c, 'by-name');
     const c = levelBy.subdivide ? null : valued.find((x) => !S.taken.has(x.index) && nameRole(x, P) === 'levelSlider');
     if (c) {
       S.levelSlider = c;
-      S.assign('levelSlider', c, 'by its name (the picture kept moving)');
+      S.assign('levelSlider', c, 'by-name');
     }
   }
   S.facts.level = { subdivide: !!levelBy.subdivide, coarsen: !!levelBy.coarsen, slider: !!S.levelSlider, stopped, trials: S.trialsMade, valued: valued.length };

@@ -97,7 +97,7 @@ export async function findOrbit(S, controls) {
     for (const c of trialOrder(clickables, 'orbit', P, S.taken).slice(0, T.maxControlTrials)) {
       S.trialsMade++;
       if (await S.tryClick(c, 'a control', { watchMotion: true }) === 'stops') {
-        S.assign('orbit', c, 'the picture stopped moving');
+        S.assign('orbit', c, 'stopped');
         Object.assign(orbit, { toggles: true, start: c, stop: c });
         break;
       }
@@ -113,12 +113,12 @@ export async function findOrbit(S, controls) {
       // the same control (a toggle) or another (a stop button) stops it
       for (const s of [c, ...namedOrbit.filter((x) => x !== c)]) {
         if (await S.tryClick(s, 'a control', { watchMotion: true }) === 'stops') {
-          S.assign('orbit', c, s === c ? 'starts and stops the picture moving' : `starts the picture moving (${describe(s)} stops it)`);
+          S.assign('orbit', c, s === c ? 'starts-stops' : 'starts-other-stops', s === c ? {} : { stopper: describe(s) });
           Object.assign(orbit, { toggles: true, start: c, stop: s });
           break;
         }
       }
-      if (!orbit.toggles) S.assign('orbit', c, 'starts the picture moving; nothing found stops it');
+      if (!orbit.toggles) S.assign('orbit', c, 'starts');
       break;
     }
   }
@@ -156,7 +156,7 @@ export async function orbitFoundLate(S, c) {
   if (S.must.has('diffuse') && !S.R.orbit) await sampleOrbit(S);
   const again = await S.tryClick(c, 'a control', { watchMotion: true });
   if (!S.R.orbit) {
-    S.assign('orbit', c, again === 'stops' ? 'starts and stops the picture moving' : 'starts the picture moving; nothing found stops it');
+    S.assign('orbit', c, again === 'stops' ? 'starts-stops' : 'starts');
     S.orbit.toggles = again === 'stops';
     if (S.orbit.toggles) Object.assign(S.orbit, { start: c, stop: c });
   }

@@ -107,12 +107,16 @@ export function session(page, { part, rubric, progress = () => {}, deadline = In
     act(text) {
       facts.actions.push(text);
     },
-    /** Gives control `c` the role `role` (the first found keeps it), with how it was found. */
-    assign(role, c, how) {
+    /**
+     * Gives control `c` the role `role` (the first found keeps it), with what showed it (`found`, a
+     * word of computed/roles.js, and `more`: another control that took part). facts.roles: the
+     * control, its description and listeners, what showed it; the audits put them in words.
+     */
+    assign(role, c, found, more = {}) {
       if (S.R[role]) return;
       S.R[role] = c;
       S.taken.add(c.index);
-      facts.roles[role] = `${describe(c)}${c.events && c.events.length ? ` (listens: ${c.events.join(', ')})` : ''}: ${how}`;
+      facts.roles[role] = { control: c.index, what: describe(c), listens: c.events || [], found, ...more };
     },
   };
   return Object.assign(S, trials(S));

@@ -43,7 +43,7 @@ export async function trySliders(S, controls) {
     }
     const r = k && k !== 'levelSlider' ? k : null;
     S.act(`set ${describeGroup(g)} to ${vs[0]} (${how === 'none' ? 'no visible change' : `the picture changed on the ${how} event`})`);
-    if (how !== 'none' && k !== 'levelSlider') facts.roles[r || `slider ${Object.keys(facts.roles).length}`] = `${describeGroup(g)}: changes the shading on ${how}`;
+    if (how !== 'none' && k !== 'levelSlider') facts.roles[r || `slider ${Object.keys(facts.roles).length}`] = { control: g.controls[0].index, what: describeGroup(g), found: 'shading' };
     facts.sliders.push({ ...groupFacts(g, vs), role: r, levelSlider: k === 'levelSlider', target: vs[0], how, changed, ...(S.moving && sent.input ? { moving: true, sent } : {}), image: S.keep(`slider-${facts.sliders.length}`, after) });
     // back to where it was (drawn with the next slider's frame, or the last one below)
     await setGroup(S, g, (c) => S.now(c));
