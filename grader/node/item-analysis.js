@@ -3,21 +3,24 @@
 // first, so a teacher sees what the class missed, and which checks nobody misses. Reads the
 // grader's reasons, never the teacher's overrides.
 
+import { findingsOfResult } from '../../check/slides.js';
+
 const esc = (s) => String(s).replace(/[&<>"']/g, (c) => ({ '&': '&amp;', '<': '&lt;', '>': '&gt;', '"': '&quot;', "'": '&#39;' })[c]);
 
-/** A reason as a check: { level (pass, review, fail), key (the reason without its numbers) }, or null for a note. */
-export function findingOf(reason, r, first) {
-  let level = 'pass', text = reason;
-  const m = /^(FAIL|REVIEW): (.*)$/s.exec(reason);
-  // (a part that could not be judged has that reason first, without a FAIL:; reasons that passed come
-  // after every FAIL: and REVIEW:, so a failed part's first reason without one is that reason)
-  const graderVerdict = r.grader ? r.grader.verdict : r.verdict;
-  if (m) { level = m[1].toLowerCase(); text = m[2]; } else if (first && graderVerdict === 'fail') level = 'fail';
-  if (level === 'pass' && /^(note:|the page reported errors)/.test(text)) return null;
+/**
+ * A finding ({ id, level, reason }: findingsOfResult) as a check: { level (pass, review, fail), key
+ * (the reason without its numbers), id (its audit) }, or null for a note, a page error, or what a
+ * part not graded here showed.
+ */
+export function findingOf(f) {
+  if (!['pass', 'review', 'fail'].includes(f.level)) return null;
+  const { level } = f;
+  const text = f.reason.replace(/^(FAIL|REVIEW): /, '');
+  if (level === 'pass' && /^note:/.test(text)) return null;
   // the reason's first clause (its numbers are in brackets or after a colon), a count it begins
   // with as "#": the same check reads alike for every student; a formula's numbers stay
   const key = text.split(/ \(|: /)[0].replace(/^\d+ /, '# ').trim();
-  return { level, key };
+  return { level, key, id: f.id };
 }
 
 /**
@@ -30,15 +33,15 @@ export function itemAnalysis(rows, parts) {
     const checks = new Map();
     for (const r of results) {
       const seen = new Set();
-      (r.reasons || []).forEach((reason, k) => {
-        const f = findingOf(reason, r, k === 0);
-        if (!f) return;
+      for (const finding of findingsOfResult(r)) {
+        const f = findingOf(finding);
+        if (!f) continue;
         const id = `${f.level}|${f.key}`;
-        if (seen.has(id)) return;
+        if (seen.has(id)) continue;
         seen.add(id);
-        if (!checks.has(id)) checks.set(id, { ...f, count: 0, example: reason });
+        if (!checks.has(id)) checks.set(id, { ...f, count: 0, example: finding.reason });
         checks.get(id).count++;
-      });
+      }
     }
     const order = { fail: 0, review: 1, pass: 2 };
     return { part, students: results.length, passed: results.filter((r) => (r.grader ? r.grader.verdict : r.verdict) === 'pass').length,

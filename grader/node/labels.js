@@ -5,6 +5,7 @@
 // pass, review, fail). Plain data in, plain data out: no browser, no files but the one read.
 import { readFileSync } from 'node:fs';
 import { NOT_GRADED } from '../core/verdict.js';
+import { asking } from './grades-csv.js';
 
 /** The verdict a label asks for: correct → pass, partial → review, broken → fail. */
 export const VERDICT_OF_LABEL = { correct: 'pass', partial: 'review', broken: 'fail', pass: 'pass', review: 'review', fail: 'fail' };
@@ -70,7 +71,7 @@ export function agreement(labels, submissions) {
     const want = VERDICT_OF_LABEL[l.label];
     confusion[l.label][got.verdict]++;
     rows.push({ submission: l.submission, part: l.part, label: l.label, want, verdict: got.verdict, agree: got.verdict === want,
-      labelReasons: l.reasons, reasons: got.reasons || [], unsure: l.unsure });
+      labelReasons: l.reasons, reasons: got.reasons || [], asking: asking(got).map((f) => f.reason), unsure: l.unsure });
   }
   const count = (f) => rows.filter(f).length;
   const here = labels.filter((x) => !notGraded.includes(`${x.submission} ${x.part}`));
@@ -97,7 +98,7 @@ export function agreementText(a) {
     out.push(`labels: ${l.padEnd(18)}${String(c.pass).padStart(6)}${String(c.review).padStart(8)}${String(c.fail).padStart(6)}${String(c['not graded']).padStart(12)}`);
   }
   for (const r of a.rows.filter((x) => !x.agree)) {
-    out.push(`labels: ${r.submission} ${r.part}: labelled ${r.label}${r.unsure ? ' (unsure)' : ''}, graded ${r.verdict}: ${r.reasons.filter((x) => /^(FAIL|REVIEW)/.test(x)).join(' | ') || r.reasons[0] || ''}`);
+    out.push(`labels: ${r.submission} ${r.part}: labelled ${r.label}${r.unsure ? ' (unsure)' : ''}, graded ${r.verdict}: ${r.asking.join(' | ') || r.reasons[0] || ''}`);
   }
   for (const m of a.missing) out.push(`labels: ${m}: labelled, but no such part was graded`);
   if (a.notGraded && a.notGraded.length) out.push(`labels: not graded here (WebGPU, which this browser does not have), left out of the counts: ${a.notGraded.join(', ')}`);
@@ -111,7 +112,7 @@ export function agreementHtml(a, anchor = (r) => `#${r.submission}-${r.part}`) {
   const head = `<th>label \\ verdict</th>${VERDICTS.map((v) => `<th>${v}</th>`).join('')}<th>not graded</th>`;
   const body = LABELS.map((l) => `<tr><th scope="row">${l} (→ ${VERDICT_OF_LABEL[l]})</th>${[...VERDICTS, 'not graded'].map((v) => `<td class="num${VERDICT_OF_LABEL[l] === v ? ' agree' : ''}">${a.confusion[l][v]}</td>`).join('')}</tr>`).join('');
   const rows = a.rows.filter((r) => !r.agree).map((r) => `<tr><td><a href="${esc(anchor(r))}">${esc(r.submission)} ${r.part}</a></td><td>${esc(r.label)}${r.unsure ? ' (unsure)' : ''}: ${esc(r.labelReasons)}</td>` +
-    `<td>${esc(r.verdict)}: ${esc(r.reasons.filter((x) => /^(FAIL|REVIEW)/.test(x)).join(' | ') || r.reasons[0] || '')}</td></tr>`).join('');
+    `<td>${esc(r.verdict)}: ${esc(r.asking.join(' | ') || r.reasons[0] || '')}</td></tr>`).join('');
   return `<section id="labels"><h2>Against the teacher's labels</h2><p>${a.agree} of ${a.total} labelled parts get their label's verdict (${pct(a.agree, a.total)}): ` +
     `correct → pass ${a.correctPassed} of ${a.correct}, partial → review (passed: ${a.partialPassed} of ${a.partial}), broken → fail (passed: ${a.brokenPassed} of ${a.broken}).` +
     `${a.notGraded && a.notGraded.length ? ` Not graded here (WebGPU, which this browser does not have), left out of these counts: ${esc(a.notGraded.join(', '))}.` : ''}</p>` +

@@ -37,7 +37,7 @@ export function writeReport(out, submissions, labels = null, similar = null) {
   const items = itemAnalysis(rows, PARTS);
   writeFileSync(path.join(out, 'report.json'), JSON.stringify({ generated: new Date().toISOString(), browsers, submissions: rows,
     ...(similar ? { similarity: similarityJson(similar) } : {}), itemAnalysis: items,
-    ...(agreed ? { labels: { ...agreed, rows: agreed.rows.map(({ reasons, ...r }) => ({ ...r, reasons: reasons.filter((x) => /^(FAIL|REVIEW)/.test(x)) })) } } : {}) }, null, 1));
+    ...(agreed ? { labels: { ...agreed, rows: agreed.rows.map(({ asking: said, ...r }) => ({ ...r, reasons: said })) } } : {}) }, null, 1));
   // (a picture's path is relative to the report: the artifact's files, our reference in parts/)
   const img = (s, r, k) => (r.images && r.images[k] ? `<img src="${esc(r.images[k])}" alt="${esc(`${r.part} ${k}`)}" loading="lazy">` : '');
   const anchor = (s, r) => `${safeName(s.name)}-${r.part}`;

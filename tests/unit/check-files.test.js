@@ -79,6 +79,11 @@ test('a review or a fail names the slide sentence its audit checks, found by the
   assert.deepEqual(missedSlides([{ id: 'shown-channels', level: 'review', reason: 'x' }, { id: 'tamper', level: 'review', reason: 'y' }]), []);
   // one card a sentence, however many reasons miss it
   assert.equal(missedSlides([{ id: 'front-faces', level: 'review', reason: 'a' }, { id: 'depth-culling', level: 'review', reason: 'b' }]).length, 1);
+  // a result from before reasons carried ids: levels from FAIL:, REVIEW: and the failed part's first reason; no slide
+  const { findingsOfResult } = await import('../../check/slides.js');
+  assert.deepEqual(findingsOfResult({ verdict: 'fail', reasons: ['drew nothing', 'REVIEW: x', 'ok'] }).map((f) => f.level), ['fail', 'review', 'pass']);
+  assert.deepEqual(findingsOfResult({ verdict: 'review', reasons: ['REVIEW: x', 'a round closed sphere'] }).map((f) => f.level), ['review', 'pass']);
+  assert.deepEqual(missedSlides(findingsOfResult({ verdict: 'fail', reasons: ['drew nothing'] })), []);
   // every audit's sentence is one of the slides' (audits/slides.js), or none
   for (const a of Object.values(AUDITS)) assert.ok(a.slide === null || Object.values(SLIDE).includes(a.slide), a.id);
 });

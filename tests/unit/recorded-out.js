@@ -28,7 +28,7 @@ export async function recordedOut(out, names) {
         writeFileSync(file, JSON.stringify({ name, part, status: 'ok', file: `${part}/index.html`, errors: [], blocked: [] }));
       } else if (results[name] && results[name][part]) {
         const r = results[name][part];
-        writeFileSync(file, JSON.stringify({ name, part, status: r.verdict === 'fail' ? 'failed' : 'ok', verdict: r.verdict, reasons: r.reasons, api: r.api, pass: r.verdict === 'pass', errors: [], blocked: [], actions: [] }));
+        writeFileSync(file, JSON.stringify({ name, part, status: r.verdict === 'fail' ? 'failed' : 'ok', verdict: r.verdict, reasons: r.reasons, ...(r.findings ? { findings: r.findings } : {}), api: r.api, pass: r.verdict === 'pass', errors: [], blocked: [], actions: [] }));
       }
     }
   }
