@@ -139,6 +139,14 @@ test('the check page gives the grader\'s verdicts: our own site passes in WebGPU
       const apis = [...new Set(check.parts.map((p) => p.api).filter(Boolean))].join('+');
       console.log(`check: ${name} in ${seconds.toFixed(0)} s (${apis}): ${check.parts.map((p) => p.verdict).join(' ')}`);
       if (name === 'own-gpu' || name === 'cy') await expectAccessible(page, `the check page with ${name}'s cards`);
+      if (name === 'cy') {
+        // every reason shows its audit's id, and each slide a review quotes is named by the audit that asks it
+        expect(check.parts.flatMap((p) => p.findings).every((f) => f.id), 'every finding has its audit id').toBe(true);
+        const tags = await page.locator('.card .reasons li').evaluateAll((lis) => lis.map((li) => [li.dataset.audit, li.querySelector('code.audit') && li.querySelector('code.audit').textContent]));
+        expect(tags.length).toBeGreaterThan(5);
+        for (const [id, shown] of tags) expect(shown).toBe(id);
+        expect(await page.locator('.card .slide[data-audit]').count()).toBeGreaterThan(0);
+      }
       for (const p of check.parts) {
         const want = graded ? graded[name][p.part] : labels[name] && labels[name][p.part];
         if (!want || want.status === 'missing') continue; // not handed in: both say so
