@@ -2,7 +2,7 @@
 // JavaScript, so that a loop which never returns can be stopped: the frame shares the check
 // page's thread, and nothing else can interrupt it. Parsed with acorn; code that does not parse
 // is served as it is (the browser then reports the syntax error as it would anyway).
-// Guarded code never depends on the frame's script having run first: it begins with STAND_IN,
+// Guarded code never depends on the frame's script having run first: it begins with standIn(seconds),
 // which defines a plain __checkLoop where there is none yet (code that ran before the frame's
 // script, a worker), so that the call is never a ReferenceError and a loop is still stopped;
 // frame-watch.js replaces it, and says that the page ran before the self-check's script.
