@@ -8,11 +8,11 @@ import { CheckInputError, entriesFromDrop, entriesFromInput, handInFrom, partsOf
 import { openSession, startHost, unsupported } from './host.js';
 import { checkPart, drawReference, frameScript } from './runner.js';
 import { handInSource, siteSource } from './serve.js';
-import { missedSlides, findingsOfResult, stepLink } from './slides.js';
+import { missedSlides, stepLink } from './slides.js';
 import { AUDITS } from '../grader/core/audits/index.js';
 import { NOT_CHECKED, NO_WEBGPU_HERE } from './not-checked.js';
 import { PARTS } from '../grader/core/part-names.js';
-import { withFindings } from '../grader/core/part-result.js';
+import { withFindings, findingsOfResult } from '../grader/core/part-result.js';
 import { missingPage } from '../grader/core/audits/page.js';
 
 const $ = (id) => document.getElementById(id);

@@ -17,7 +17,7 @@ import { tamperScript } from '../grader/browser/tamper.js';
 import { webgpuCaptureScript } from '../grader/browser/webgpu-capture.js';
 import { gradePart } from '../grader/core/grade-part.js';
 import { judgement, notJudgedHere } from '../grader/core/part-result.js';
-import { timedOut, notOpened, graderTrouble } from '../grader/core/audits/page.js';
+import { timedOut, notOpened, asFail, graderTrouble } from '../grader/core/audits/page.js';
 import { referenceQuery, referencePicture } from '../grader/core/reference-state.js';
 import { deadlineOf } from '../grader/core/deadline.js';
 import { NOT_CHECKED, notCheckedHere } from './not-checked.js';
@@ -60,12 +60,6 @@ async function load(stage, src, seconds) {
   return { frame, how };
 }
 
-/** A part stopped by the time bound fails with the grader's reason (`why`: what stopped it). */
-const stopped = (rubric, why) => {
-  const f = timedOut(rubric, why);
-  return { fail: f.reason, failId: f.id };
-};
-
 /**
  * Checks one part. Returns what report.json says of it ({ part, verdict, reasons, api, actions,
  * controls, numbers, errors, blocked, notes, seconds }) and its pictures (images: { first, judged,
@@ -87,7 +81,7 @@ export async function checkPart({ part, page, session, rubric, stage, progress =
       broken.push('the self-check\'s own script did not run in the page');
     } else if (how !== 'load' || fp.hung()) {
       const notLoaded = `it did not finish loading in ${loadSeconds} s (a script that never returns?)`;
-      Object.assign(graded, notOpened(fp.hung() ? `${notLoaded}: ${fp.hung()}` : notLoaded));
+      Object.assign(graded, asFail(notOpened(fp.hung() ? `${notLoaded}: ${fp.hung()}` : notLoaded)));
     } else {
       await session.idle(500, 5000);
       frame.contentWindow.__checkWatch.setLoopSeconds(rubric.timeoutSeconds);
@@ -100,7 +94,7 @@ export async function checkPart({ part, page, session, rubric, stage, progress =
       grading.catch(() => {}); // after the time bound the frame is gone, and so is the grading
       try {
         const r = await Promise.race([grading, bound]);
-        if (r === 'timeout') Object.assign(graded, stopped(rubric));
+        if (r === 'timeout') Object.assign(graded, asFail(timedOut(rubric)));
         else graded = r;
       } catch (err) {
         // the grader's own trouble with this page: never a pass on it, a teacher looks (as harness.js)
@@ -108,7 +102,7 @@ export async function checkPart({ part, page, session, rubric, stage, progress =
       } finally {
         clearTimeout(timer);
       }
-      if (fp.hung()) Object.assign(graded, stopped(rubric, fp.hung()));
+      if (fp.hung()) Object.assign(graded, asFail(timedOut(rubric, fp.hung())));
     }
   } finally {
     frame.remove();

@@ -2,26 +2,9 @@
 // reason's audit id (grader/core/audits/index.js, where each audit names the sentence it checks),
 // never by its words; and our step that does it right.
 import { AUDITS } from '../grader/core/audits/index.js';
-import { NOT_GRADED } from '../grader/core/verdict.js';
 
 /** Our own step for a part, relative to the check page. */
 export const stepLink = (part) => `../${part}/`;
-
-/**
- * A part's findings ({ id, level, reason }, as report.json and the check page have them). A result
- * written before reasons carried ids (no `findings`) has its reasons read as findings without one
- * (no slide): their levels from the words FAIL: and REVIEW:, and the first reason of a part the
- * grader failed or did not grade is why (reasons that passed come after every FAIL: and REVIEW:).
- */
-export function findingsOfResult(r) {
-  if (r.findings) return r.findings;
-  const graderVerdict = r.grader ? r.grader.verdict : r.verdict;
-  return (r.reasons || []).map((reason, k) => {
-    const m = /^(FAIL|REVIEW): /.exec(reason);
-    const first = k === 0 && (graderVerdict === 'fail' || graderVerdict === NOT_GRADED) ? graderVerdict : 'pass';
-    return { id: null, level: m ? m[1].toLowerCase() : first, reason };
-  });
-}
 
 /**
  * The slide's sentences behind a part's reviews and fails (`findings`: { id, level, reason }):

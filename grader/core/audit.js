@@ -10,6 +10,7 @@ import { litView } from './computed/views.js';
 import { sphereView, shadingOf, viewFits } from './computed/evidence.js';
 import { auditFirstFrame, notGradedHere, STOP } from './audits/first-frame.js';
 import { auditMeta } from './audits/index.js';
+import { tooSlow } from './audits/page.js';
 import { auditShown } from './audits/channels.js';
 import { auditLevelControls, auditHeavyLevel, auditSphere } from './audits/sphere.js';
 import { auditNormals, auditPerspective, auditNormalsNotLight, auditDepthCulling } from './audits/normals.js';
@@ -46,9 +47,9 @@ export function auditPart({ facts, images }, rubric) {
   if (facts.tooSlow) {
     // nothing judged: where the bound ran out depends on the machine, the verdict must not; a page
     // that draws is not broken for being slow: not graded here (the rubric's tooSlowVerdict)
-    const why = facts.tooHeavy != null ? tooHeavyWords(rubric, facts.tooSlow, facts.tooHeavy) : tooSlowWords(rubric, facts.tooSlow);
-    if (rubric.tooSlowVerdict === NOT_GRADED) [notGraded, notGradedId] = [`${NOT_GRADED}: ${why}`, 'too-slow'];
-    else sayAs('too-slow')(rubric.tooSlowVerdict, why);
+    const slow = tooSlow(rubric, facts.tooHeavy != null ? tooHeavyWords(rubric, facts.tooSlow, facts.tooHeavy) : tooSlowWords(rubric, facts.tooSlow));
+    if (slow.level === NOT_GRADED) [notGraded, notGradedId] = [slow.reason, slow.id];
+    else sayAs(slow.id)(slow.level, slow.reason);
     return result(null);
   }
   const firstDiffers = auditShown(C);

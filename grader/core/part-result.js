@@ -14,6 +14,28 @@ import { verdictOf, findingsOf, NOT_GRADED } from './verdict.js';
  */
 export const withFindings = (result, findings) => Object.assign(result, { reasons: findings.map((f) => f.reason), findings });
 
+/**
+ * A part's findings ({ id, level, reason }, as report.json and the check page have them). A result
+ * written before reasons carried ids (no `findings`) has its reasons read as findings without one
+ * (no slide): their levels from the words FAIL: and REVIEW:, and the first reason of a part the
+ * grader failed or did not grade is why (reasons that passed come after every FAIL: and REVIEW:).
+ */
+export function findingsOfResult(r) {
+  if (r.findings) return r.findings;
+  const graderVerdict = r.grader ? r.grader.verdict : r.verdict;
+  return (r.reasons || []).map((reason, k) => {
+    const m = /^(FAIL|REVIEW): /.exec(reason);
+    const first = k === 0 && (graderVerdict === 'fail' || graderVerdict === NOT_GRADED) ? graderVerdict : 'pass';
+    return { id: null, level: m ? m[1].toLowerCase() : first, reason };
+  });
+}
+
+/** Does a finding ask for something: a fail, a review, or why a part was not graded here? */
+export const asks = (f) => f.level === 'fail' || f.level === 'review' || f.level === NOT_GRADED;
+
+/** The findings of a part's result that ask for something. */
+export const asking = (r) => findingsOfResult(r).filter(asks);
+
 /** The verdict and its reasons from a part's judging ({ fail, failId, checks }) and the page's errors. */
 export function judgement(judged, errors = []) {
   const findings = findingsOf({ fail: judged.fail, failId: judged.failId, checks: judged.checks, pageErrors: errors.filter((e) => /page error/.test(e)) });

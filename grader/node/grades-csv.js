@@ -3,11 +3,7 @@
 // them (grader/core/audits/index.js). The reasons are chosen by their levels and ids, never by
 // their words: a sentence reworded moves no reason in or out of the file.
 import { csvCell } from './grades-export.js';
-import { findingsOfResult } from '../../check/slides.js';
-import { NOT_GRADED } from '../core/verdict.js';
-
-/** The findings of a part's result that ask for something: its fails, reviews, and why it was not graded. */
-export const asking = (r) => findingsOfResult(r).filter((f) => f.level === 'fail' || f.level === 'review' || f.level === NOT_GRADED);
+import { asking } from '../core/part-result.js';
 
 /** grades.csv's text for `rows` (report.js's: { name, passes, parts: [{ part, verdict, reasons, findings }] }) over `parts`. */
 export function gradesCsv(rows, parts) {

@@ -3,7 +3,7 @@
 // first, so a teacher sees what the class missed, and which checks nobody misses. Reads the
 // grader's reasons, never the teacher's overrides.
 
-import { findingsOfResult } from '../../check/slides.js';
+import { findingsOfResult } from '../core/part-result.js';
 
 const esc = (s) => String(s).replace(/[&<>"']/g, (c) => ({ '&': '&amp;', '<': '&lt;', '>': '&gt;', '"': '&quot;', "'": '&#39;' })[c]);
 

@@ -5,7 +5,7 @@
 // pass, review, fail). Plain data in, plain data out: no browser, no files but the one read.
 import { readFileSync } from 'node:fs';
 import { NOT_GRADED } from '../core/verdict.js';
-import { asking } from './grades-csv.js';
+import { asking } from '../core/part-result.js';
 
 /** The verdict a label asks for: correct → pass, partial → review, broken → fail. */
 export const VERDICT_OF_LABEL = { correct: 'pass', partial: 'review', broken: 'fail', pass: 'pass', review: 'review', fail: 'fail' };

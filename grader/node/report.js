@@ -7,7 +7,7 @@ import { PARTS } from './parts.js';
 import { safeName } from './layout.js';
 import { agreement, agreementHtml } from './labels.js';
 import { NOT_GRADED } from '../core/verdict.js';
-import { findingsOfResult } from '../../check/slides.js';
+import { findingsOfResult } from '../core/part-result.js';
 import { similarityJson, similarityBadges, similarityHtml, SIMILARITY_CSS } from '../similarity/run.js';
 import { identityHtml, teacherMark, TEACHER_CSS } from './report-teacher.js';
 import { itemAnalysis, itemAnalysisHtml } from './item-analysis.js';

@@ -11,7 +11,8 @@ import { compareImages } from './compare.js';
 import { writeArtifact, pngOf } from './artifacts.js';
 import { hrefOf } from './layout.js';
 import { applyAudit, withFindings } from '../core/part-result.js';
-import { missingPage, timedOut, stoppedAtFirstFrame, tooSlow, linkedPage, notOpened, graderTrouble } from '../core/audits/page.js';
+import { missingPage, timedOut, stoppedAtFirstFrame, tooSlow, linkedPage, notOpened, asFail, graderTrouble } from '../core/audits/page.js';
+import { tooSlowWords } from '../core/verdict.js';
 import { deadlineOf } from '../core/deadline.js';
 import { FIRST_FRAME } from '../core/gather/index.js';
 import { gradePart, addTime } from '../core/grade-part.js';
@@ -56,7 +57,7 @@ export async function runPart({ item, plan, openers, browserVersion = null, more
     const t0 = Date.now();
     const opened = await openers.student.open({ root: item.root, rel: item.page, loadSeconds: rubric.loadSeconds, log: result });
     phase('open', t0);
-    if (opened.why) Object.assign(graded, notOpened(opened.why));
+    if (opened.why) Object.assign(graded, asFail(notOpened(opened.why)));
     else {
       // what has been done so far stays in the result if the time bound stops the part
       const deadline = deadlineOf(started, rubric);
@@ -65,7 +66,7 @@ export async function runPart({ item, plan, openers, browserVersion = null, more
         // a page that draws is too slow here, not broken (the rubric's tooSlowVerdict)
         if (what === FIRST_FRAME) withFindings(result, [stoppedAtFirstFrame(rubric, what)]);
         else {
-          const slow = tooSlow(rubric, what);
+          const slow = tooSlow(rubric, tooSlowWords(rubric, what));
           withFindings(Object.assign(result, { verdict: slow.level, status: 'too slow' }), [slow]);
         }
         save(result);

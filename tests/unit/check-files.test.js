@@ -80,7 +80,7 @@ test('a review or a fail names the slide sentence its audit checks, found by the
   // one card a sentence, however many reasons miss it
   assert.equal(missedSlides([{ id: 'front-faces', level: 'review', reason: 'a' }, { id: 'depth-culling', level: 'review', reason: 'b' }]).length, 1);
   // a result from before reasons carried ids: levels from FAIL:, REVIEW: and the failed part's first reason; no slide
-  const { findingsOfResult } = await import('../../check/slides.js');
+  const { findingsOfResult } = await import('../../grader/core/part-result.js');
   assert.deepEqual(findingsOfResult({ verdict: 'fail', reasons: ['drew nothing', 'REVIEW: x', 'ok'] }).map((f) => f.level), ['fail', 'review', 'pass']);
   assert.deepEqual(findingsOfResult({ verdict: 'review', reasons: ['REVIEW: x', 'a round closed sphere'] }).map((f) => f.level), ['review', 'pass']);
   assert.deepEqual(missedSlides(findingsOfResult({ verdict: 'fail', reasons: ['drew nothing'] })), []);

@@ -3,7 +3,7 @@
 // of the grading as a whole (a page that replaced what the grader reads through, a part too slow
 // on this machine): ids as the audits' are, so that every reason carries one.
 import { SLIDE } from './slides.js';
-import { NOT_GRADED, tooSlowWords } from '../verdict.js';
+import { NOT_GRADED } from '../verdict.js';
 
 /** These reasons' ids: id → title, the slide's sentence a miss quotes (or null), what it reads. */
 export const META = {
@@ -33,17 +33,20 @@ export const timedOut = (rubric, why) => finding('page-finishes', 'fail', `the p
 /** The bound ran out at the first frame: a frame that never returns. */
 export const stoppedAtFirstFrame = (rubric, what) => finding('page-finishes', 'fail', `the page did not finish within the rubric's bound of ${rubric.timeoutSeconds} s: stopped while ${what} (a frame that never returns?)`);
 
-/** The bound ran out past the first frame: a page that draws is too slow here, not broken (the rubric's tooSlowVerdict). */
-export const tooSlow = (rubric, what) => {
-  const why = tooSlowWords(rubric, what);
-  return rubric.tooSlowVerdict === NOT_GRADED ? finding('too-slow', NOT_GRADED, `${NOT_GRADED}: ${why}`) : finding('too-slow', rubric.tooSlowVerdict, why);
-};
+/**
+ * A page past the rubric's bound (or its gatherWork) once it drew, `why` in words (tooSlowWords,
+ * tooHeavyWords): too slow here, not broken, at the rubric's tooSlowVerdict.
+ */
+export const tooSlow = (rubric, why) => (rubric.tooSlowVerdict === NOT_GRADED ? finding('too-slow', NOT_GRADED, `${NOT_GRADED}: ${why}`) : finding('too-slow', rubric.tooSlowVerdict, why));
 
 /** A part's page that only links to another part's page (`to`: { part, page }). */
 export const linkedPage = (part, page, to) => finding('linked-page', 'review', `REVIEW: the page for ${part} (${page}) has no canvas and no script of its own: it links to ${to.part}'s page (${to.page}), graded as ${to.part}; a part is not graded twice (does that page do ${part}'s step too? a teacher looks)`);
 
-/** The page could not be opened: the reason a part fails, its audit 'page-opens'. */
-export const notOpened = (why) => ({ fail: `the page could not be opened: ${why}`, failId: 'page-opens' });
+/** The page could not be opened (`why`). */
+export const notOpened = (why) => finding('page-opens', 'fail', `the page could not be opened: ${why}`);
+
+/** A finding that stops a part's judging, as the judging carries it: { fail (the reason), failId }. */
+export const asFail = (f) => ({ fail: f.reason, failId: f.id });
 
 /** The grader's own trouble with a page (`err`): never a pass on it, a teacher looks. A check. */
-export const graderTrouble = (err) => ({ id: 'grader-trouble', level: 'review', reason: `the grader could not finish on this page: ${err.message.split('\n')[0]}` });
+export const graderTrouble = (err) => finding('grader-trouble', 'review', `the grader could not finish on this page: ${err.message.split('\n')[0]}`);

@@ -4,7 +4,8 @@
 // plainly, the slide's sentence it misses, the student's own pictures beside our reference, the
 // controls the grader found and what it did with them, and how to check again before handing in.
 import { existsSync, readFileSync } from 'node:fs';
-import { missedSlides, findingsOfResult } from '../../../check/slides.js';
+import { missedSlides } from '../../../check/slides.js';
+import { findingsOfResult, asks } from '../../core/part-result.js';
 import { NOT_GRADED } from '../../core/verdict.js';
 import { fileOfHref } from '../layout.js';
 
@@ -44,9 +45,8 @@ function partHtml(r, out, rubric) {
   const site = (rubric.feedback && rubric.feedback.courseSite || '').replace(/\/?$/, '/');
   // what to fix: the fails and reviews, and why a part was not graded here (by their levels, not their words)
   const findings = findingsOfResult(r);
-  const problem = (f) => f.level === 'fail' || f.level === 'review' || f.level === NOT_GRADED;
-  const problems = findings.filter(problem).map((f) => f.reason);
-  const works = findings.filter((f) => !problem(f)).map((f) => f.reason);
+  const problems = findings.filter(asks).map((f) => f.reason);
+  const works = findings.filter((f) => !asks(f)).map((f) => f.reason);
   const slides = missedSlides(findings);
   const pictures = PICTURES.map(([k, caption]) => [dataUrl(out, r.images && r.images[k]), caption]).filter(([src]) => src);
   const controls = Object.entries(r.controls || {});
