@@ -1,6 +1,7 @@
 // WP04P4: "sliders for the material and light parameters" that act on the input event (while
 // sliding), and ks used in the specular term.
-import { analyse, samples, shadeFit, perspectiveSamples, highlightAbove } from '../measure.js';
+import { analyse, perspectiveSamples, highlightAbove } from '../measure.js';
+import { fullFit } from '../computed/views.js';
 import { sliderEvent } from '../computed/slider-event.js';
 import { fmt } from '../format.js';
 import { SLIDE } from './slides.js';
@@ -40,7 +41,7 @@ export function auditSliders({ facts, images, T, must, sayAs, rubric, part }, ju
       const after = images[s.image];
       const a = analyse(after, T);
       const f = a.blank ? null : nearModel ? { highlightPeak: highlightAbove(perspectiveSamples(after, judged.an, T, { max: T.fitSamples }), nearModel, T) }
-        : shadeFit(samples(after, a, T), T);
+        : fullFit(after, T);
       if (f && f.highlightPeak >= baseFit.highlightPeak * T.ksLeftShare && f.highlightPeak >= T.highlightPeak) {
         sayKs('review', `ks${s.controls ? ` (its ${s.controls.length} sliders)` : ''} at ${target} leaves the highlight as it was (${fmt(f.highlightPeak)}): is ks used in the specular term?`);
       }

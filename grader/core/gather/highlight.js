@@ -1,9 +1,9 @@
 // P4/P5, feeding audits/highlight.js: the highlight shown by the page's own ks and s sliders where no
 // view showed it, and its place judged in a view farther along the orbit. Each records the pictures
 // it took; the decisions read the same evidence the audits do (computed/evidence.js).
-import { samples, shadeFit, highlightSeen } from '../measure.js';
+import { highlightSeen } from '../measure.js';
 import { describeGroup } from '../controls.js';
-import { lightAngle } from '../computed/views.js';
+import { lightAngle, fullFit } from '../computed/views.js';
 import { highlightIn } from '../computed/evidence.js';
 import { searchOrbit } from './orbit.js';
 import { groupsOf, setGroup, greatest, groupFacts } from './params.js';
@@ -56,7 +56,7 @@ export async function placeFarther(S, controls) {
   if (await S.tryClick(orbit.start, 'the orbit control', { watchMotion: true }) === 'starts') {
     far = await searchOrbit(S, (img, an) => {
       if (an.blank || an.roundness >= T.orbitCoarseRoundness) return false;
-      const f = shadeFit(samples(img, an, T), T);
+      const f = fullFit(img, T); // (the fit the highlight's place is judged on: audits/highlight.js)
       return !!f && f.r2 >= T.diffuseR2 && highlightSeen(f, T) && lightAngle(f) >= T.highlightPlaceLightDegrees;
     });
     await S.tryClick(orbit.stop, 'the orbit control again', { watchMotion: true });
