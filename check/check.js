@@ -4,7 +4,7 @@
 // browser (check/files.js reads them, check/host.js serves them to the frames through
 // check/sw.js); each part is checked by check/runner.js with the grader's own modules. When all
 // parts have their verdicts: window.check = { done: true, parts: [{ part, verdict, reasons, api }] }.
-import { CheckInputError, entriesFromDrop, entriesFromInput, handInFrom, partsOfHandIn } from './files.js';
+import { CheckInputError, entriesFromDrop, entriesFromInput, handInFrom, partsOfHandIn, titlesOfHandIn } from './files.js';
 import { openSession, startHost, unsupported } from './host.js';
 import { checkPart, drawReference, frameScript } from './runner.js';
 import { handInSource, siteSource } from './serve.js';
@@ -87,7 +87,7 @@ async function run(gather) {
     if (why) throw new CheckInputError(why);
     $('progress').textContent = 'reading your files…';
     const files = handInFrom(await gather());
-    const { parts } = partsOfHandIn(files);
+    const { parts, notes } = partsOfHandIn(files, await titlesOfHandIn(files));
     const webgpuHere = await hasWebGPU();
     await startHost().catch((err) => {
       throw new CheckInputError(`This browser would not start the service worker the self-check needs to show your pages to the grader (${err.message}). ` +
@@ -111,6 +111,7 @@ async function run(gather) {
           const reference = await drawReference({ result: r, rubric, session: ours, stage: $('stage') }).catch(() => null);
           if (reference) r.images.reference = reference;
         }
+        if (notes[part]) (r.notes || (r.notes = [])).unshift(notes[part]);
         results.push(r);
         $('results').append(card(r, k, PARTS.length, file));
         session.clearLog();

@@ -5,7 +5,7 @@
 // node_modules and __MACOSX are left out as the grader leaves them out. Every refusal is a
 // CheckInputError whose message says what to do.
 import { unzip } from '../node_modules/fflate/esm/browser.js';
-import { partsOf } from '../grader/core/part-names.js';
+import { partsFound, titleOfPage } from '../grader/core/part-names.js';
 
 /** More than this is not a worksheet (a course folder, videos, node_modules?). */
 export const MAX_BYTES = 100 * 1024 * 1024;
@@ -43,19 +43,33 @@ const walkOrder = (a, b) => {
   return x.length - y.length;
 };
 
-/** The parts of a hand-in, as the grader finds them: { WP04P1: path | null, ... } and the HTML pages seen. */
-export function partsOfHandIn(files) {
-  const pages = [...files.keys()].filter((p) => /\.html?$/i.test(p) && p.split('/').length <= 7).sort(walkOrder);
+// the pages the grader walks: HTML, six folders deep at most
+const pagesOf = (files) => [...files.keys()].filter((p) => /\.html?$/i.test(p) && p.split('/').length <= 7).sort(walkOrder);
+
+/** Each page's title and first heading ({ path: words }), read from its first bytes as the grader reads them. */
+export async function titlesOfHandIn(files) {
+  const titles = {};
+  for (const p of pagesOf(files)) titles[p] = titleOfPage(await files.get(p).slice(0, 65536).text());
+  return titles;
+}
+
+/**
+ * The parts of a hand-in, as the grader finds them: { parts: { WP04P1: path | null, ... }, notes:
+ * { WP04Pn: how it was found, where its name did not say it }, pages: the HTML pages seen }.
+ * `titles` (titlesOfHandIn) name a step where file names do not.
+ */
+export function partsOfHandIn(files, titles = {}) {
+  const pages = pagesOf(files);
   if (!pages.length) {
     throw new CheckInputError(files.size ? `No HTML page in what you dropped (${files.size} files): a part is an HTML page, e.g. Part1/index.html. Drop the worksheet's folder.`
       : 'Nothing to check: the folder is empty.');
   }
-  const parts = partsOf(pages.map((p) => p.split('/')), (s) => s.join('/'));
+  const { parts, notes } = partsFound(pages.map((p) => p.split('/')), (s) => s.join('/'), { titles });
   if (!Object.values(parts).some(Boolean)) {
     throw new CheckInputError(`None of the HTML pages is named for a part of worksheet 4 (${pages.slice(0, 5).join(', ')}${pages.length > 5 ? ', …' : ''}). ` +
       'Name each part\'s folder or file for it, e.g. WP04P1/, Part1/, w4p1.html, week04p01.html.');
   }
-  return { parts, pages };
+  return { parts, notes, pages };
 }
 
 /** A zip's files as { path, blob }, unpacked here in the browser. */

@@ -5,7 +5,7 @@ import { spawnSync } from 'node:child_process';
 import { existsSync, mkdirSync, readFileSync, rmSync, statSync, writeFileSync } from 'node:fs';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
-import { PARTS, findParts } from './parts.js';
+import { PARTS, findPartsWithNotes } from './parts.js';
 import { linkedPart } from './linked-part.js';
 import { readLabels, agreementText } from './labels.js';
 import { writeReport } from './report.js';
@@ -207,13 +207,13 @@ async function main() {
 async function gradeParts(o, out, rubric, submissions) {
   const items = [];
   for (const s of submissions) {
-    const parts = findParts(s.root, o.batch ? {} : o.parts);
+    const { parts, notes } = findPartsWithNotes(s.root, o.batch ? {} : o.parts);
     for (const part of PARTS) {
       const cfg = rubric.parts[part] || {};
       const page = parts[part] && existsSync(path.join(s.root, parts[part])) ? parts[part] : null;
       // a page that only links to another part's page is graded once, as that part
       const linksTo = page ? linkedPart(readFileSync(path.join(s.root, page), 'utf8'), page, parts) : null;
-      items.push({ name: s.name, part, root: s.root, page, ...(linksTo ? { linksTo } : {}), referenceQuery: cfg.referenceQuery || {}, ...partFiles(out, s.name, part) });
+      items.push({ name: s.name, part, root: s.root, page, ...(linksTo ? { linksTo } : {}), ...(notes[part] ? { foundBy: notes[part] } : {}), referenceQuery: cfg.referenceQuery || {}, ...partFiles(out, s.name, part) });
     }
   }
   // the parts that try the most first (the sliders, then the orbit's), so that the workers end

@@ -3,13 +3,29 @@
 // A page's path is kept as its folder and file names and written with `path.join` alone (never
 // split or joined on a separator), so that Windows' paths work as POSIX's do: `fs` and `path`
 // may be given (a made-up file system, path.win32) to test that on any machine.
-import { readdirSync, statSync } from 'node:fs';
+import { readdirSync, statSync, openSync, readSync, closeSync } from 'node:fs';
 import path from 'node:path';
-import { PARTS, partNumber, partsOf } from '../core/part-names.js';
+import { PARTS, partNumber, partsFound, titleOfPage } from '../core/part-names.js';
 
 export { PARTS, partNumber };
 
-const NODE_FS = { readdir: (dir) => readdirSync(dir), isDirectory: (file) => statSync(file, { throwIfNoEntry: false })?.isDirectory() ?? null };
+const NODE_FS = { readdir: (dir) => readdirSync(dir), isDirectory: (file) => statSync(file, { throwIfNoEntry: false })?.isDirectory() ?? null, head };
+
+// a page's title and first heading are in its first bytes
+const HEAD_BYTES = 65536;
+/** The first HEAD_BYTES of `file` as text ('' where it cannot be read). */
+function head(file) {
+  let fd = null;
+  try {
+    fd = openSync(file, 'r');
+    const buf = Buffer.alloc(HEAD_BYTES);
+    return buf.subarray(0, readSync(fd, buf, 0, HEAD_BYTES, 0)).toString('utf8');
+  } catch {
+    return '';
+  } finally {
+    if (fd !== null) closeSync(fd);
+  }
+}
 
 /**
  * The HTML pages under `root`, each as its names from `root` down ([folder, ..., file]), in the
@@ -45,5 +61,17 @@ export function htmlPages(root, { fs = NODE_FS, pathImpl = path } = {}) {
  * (week04p01.html, part1.html); an index.html takes its folder's. `overrides` ({ WP04P1: 'path' }) win.
  */
 export function findParts(root, overrides = {}, { fs = NODE_FS, pathImpl = path } = {}) {
-  return partsOf(htmlPages(root, { fs, pathImpl }), (segments) => pathImpl.join(...segments), overrides);
+  return findPartsWithNotes(root, overrides, { fs, pathImpl }).parts;
+}
+
+/**
+ * The parts of one submission and how each was found: { parts, notes: { WP04Pn: words } } (core/part-names.js's
+ * partsFound), with each page's title read (`fs.head(file)`: its first bytes) where `fs` can.
+ */
+export function findPartsWithNotes(root, overrides = {}, { fs = NODE_FS, pathImpl = path } = {}) {
+  const pages = htmlPages(root, { fs, pathImpl });
+  const join = (segments) => pathImpl.join(...segments);
+  const titles = {};
+  if (fs.head) for (const segments of pages) titles[join(segments)] = titleOfPage(fs.head(pathImpl.join(root, ...segments)));
+  return partsFound(pages, join, { overrides, titles });
 }

@@ -37,6 +37,8 @@ export async function runPart({ item, plan, openers, browserVersion = null, more
   const result = withFindings({ name: item.name, part: item.part, file: item.page, status: 'timeout', verdict: 'fail', api: null }, [timedOut(rubric)]);
   Object.assign(result, { actions: [], controls: {}, numbers: {}, mismatch: null, rmse: null, pass: false, comparison: null, notes: [], errors: [], blocked: [], images: null,
     ...(plan.browser && plan.browser !== 'chromium' ? { browser: plan.browser } : {}), ...(browserVersion ? { browserVersion } : {}) });
+  // how the part's page was found, where its name did not say it plainly (core/part-names.js)
+  if (item.foundBy) result.notes.push(item.foundBy);
   save(result); // what stays if the page never lets go: a timeout
   if (!item.page) {
     withFindings(Object.assign(result, { status: 'missing' }), [missingPage(item.part)]);
