@@ -49,6 +49,8 @@ function frameClock(start, timersOf, frozenDate) {
       },
       now: () => C.ticks,
       pending: () => timers.size,
+      // the animation frames run so far, and how many callbacks the last one ran (the page's loops)
+      frames: () => ({ count: C.frameCount, loops: C.frameCalls }),
     },
   });
 }
@@ -59,7 +61,7 @@ function frameClock(start, timersOf, frozenDate) {
  * real task between two).
  */
 function timersOf() {
-  const C = { ticks: 2000, timers: new Map() };
+  const C = { ticks: 2000, timers: new Map(), frameAt: null, frameCount: 0, frameCalls: 0 };
   const { timers } = C;
   let nextId = 1e12, duringTick = false;
   const channel = new MessageChannel(), tasks = [];
@@ -90,6 +92,11 @@ function timersOf() {
       C.ticks = Math.max(C.ticks, t.callAt);
       if (t.type === 'interval') t.callAt += t.delay || 1;
       else timers.delete(t.id);
+      if (t.type === 'frame') {
+        // every callback due at one time is one animation frame: a page with two loops runs two in it
+        if (t.callAt !== C.frameAt) Object.assign(C, { frameAt: t.callAt, frameCount: C.frameCount + 1, frameCalls: 0 });
+        C.frameCalls++;
+      }
       duringTick = true;
       if (window.__checkWatch) window.__checkWatch.newTask(); // check/frame-watch.js: a loop is timed from here
       try {

@@ -14,7 +14,7 @@ function gradeState() {
   /** What the page interface's state() gives the grading core (playwright-page.js and the check page's
    * frame driver both read it here, so they cannot drift apart). */
   g.state = () => ({ api: g.api, frames: window.__webgpuCapture ? window.__webgpuCapture.frames : 0, adapter: g.adapter, webgpuMissing: g.webgpuMissing, draws: g.draws,
-    vertices: g.vertices, pending: g.pending,
+    vertices: g.vertices, pending: g.pending, animation: window.__checkClock && window.__checkClock.frames ? window.__checkClock.frames() : null,
     shaderErrors: [...g.shaderErrors], gpuErrors: [...g.gpuErrors], faces: { ...g.faces } });
 }
 

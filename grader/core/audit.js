@@ -19,7 +19,7 @@ import { auditOrbitStopsAgain, auditOrbit, auditNotStopped } from './audits/orbi
 import { auditHighlight, auditPlaceFarther } from './audits/highlight.js';
 import { auditSliders } from './audits/sliders.js';
 import { auditLeastShininess, auditPerFragment } from './audits/shading.js';
-import { auditWinding, auditClosed, auditAllRound, auditPerFace, auditGrowth, auditPictureNotGeometry } from './audits/geometry.js';
+import { auditWinding, auditClosed, auditAllRound, auditPerFace, auditGrowth, auditLoopsMultiply, auditPictureNotGeometry } from './audits/geometry.js';
 
 /**
  * { fail, failId, checks, numbers, shown, notGraded } for one part's artifact: `fail` (a reason,
@@ -72,6 +72,7 @@ export function auditPart({ facts, images }, rubric) {
   auditClosed(C);
   auditAllRound(C);
   auditGrowth(C);
+  auditLoopsMultiply(C);
   auditPictureNotGeometry(C, judged);
   auditPerspective(C, auditNormals(C, judged));
   auditPerFace(C);

@@ -13,6 +13,7 @@ export const META = {
   closed: { title: 'A closed mesh: every edge in two triangles', slide: SLIDE.sphere, reads: ['facts.geometry'] },
   'per-face': { title: 'n = p at each vertex, not a colour per face', slide: SLIDE.normalColour, reads: ['facts.geometry'] },
   growth: { title: 'The mesh not built again every frame', slide: SLIDE.recycle, reads: ['facts.geometryAtFirst'] },
+  'loops-multiply': { title: 'One animation loop, however often a control is used', slide: null, reads: ['facts.frameDraws'] },
   'picture-not-geometry': { title: 'A sphere of triangles, not a picture', slide: SLIDE.sphere, reads: ['facts.geometry', 'images.judged'] },
   'all-round': { title: 'Closed from every side seen along the orbit', slide: SLIDE.sphere, reads: ['facts.allRound'] },
 };
@@ -83,6 +84,21 @@ export function auditGrowth({ facts, T, sayAs, numbers }) {
   if (!grows) return;
   numbers.growth = f;
   say('mistake', `the page draws more every frame (${f[0]} → ${f[f.length - 1]} vertices over ${f.length} frames, no control touched): the mesh is built again and appended to its arrays, and the page slows until it stalls`);
+}
+
+/**
+ * A page whose controls each start another animation loop (a click runs init() again, or calls the
+ * loop's function that asks for the next frame): after the grader's clicks it runs several loops a
+ * frame and draws its sphere as many times. Said to the student as a note; the verdict stands on the
+ * pictures.
+ */
+export function auditLoopsMultiply({ facts, T, sayAs, numbers }) {
+  const f = facts.frameDraws;
+  if (!f || !f.first || !f.last || !f.clicks || !(f.first.loops >= 1) || !(f.first.draws > 0)) return;
+  if (f.last.loops < T.loopsMultiplied * f.first.loops || f.last.draws < T.loopsMultiplied * f.first.draws) return;
+  numbers.frameDraws = f;
+  // (the loops are counted exactly; the draws a frame also hold a click's own drawing)
+  sayAs('loops-multiply')('pass', `note: the page draws its sphere ${f.last.loops} times a frame after ${f.clicks} click${f.clicks === 1 ? '' : 's'} (${f.last.loops} animation loops, where it started with ${f.first.loops}; ${f.last.draws} draw calls a frame, ${f.first.draws} at first): each click starts another animation loop, so the orbit speeds up and the page slows`);
 }
 
 /** A round sphere in the picture drawn with no more than a few triangles is a picture, not geometry (a textured quad, a sphere traced per pixel). */

@@ -44,11 +44,15 @@ export async function gatherPart(page, { part, rubric, progress = () => {}, dead
 async function gather(S) {
   const first = await firstFrame(S);
   if (!first || first.an.blank) return;
+  // the page's animation loops and draws a frame before any control is touched, and after them all
+  if (S.frameDraws) S.facts.frameDraws = { first: S.frameDraws };
   const controls = await S.page.controls();
   S.facts.controls = controls;
   S.cur = first;
   const judged = await orbitAndLevel(S, controls);
   if (judged) await whatTheStepAsks(S, controls, judged.img);
+  // (the last frames the gathering ran: no frame is run for it)
+  if (S.facts.frameDraws) Object.assign(S.facts.frameDraws, { last: S.frameDraws, clicks: S.facts.actions.filter((a) => /^(clicked|pressed) /.test(a)).length });
 }
 
 /**

@@ -58,6 +58,10 @@ export function session(page, { part, rubric, progress = () => {}, deadline = In
     // what a frame of this page costs, in its own work (vertices, and draw calls at drawCallWork
     // vertices each), from the last frames run
     frameWork: 0,
+    // the page's draws an animation frame and its animation loops, from the last frames run (the clock's
+    // count of frames, where the driver has it): { loops, draws } or null
+    frameDraws: null,
+    animationFrames: 0,
     doing: 'waiting for the first frame',
 
     step(what) {
@@ -73,6 +77,9 @@ export function session(page, { part, rubric, progress = () => {}, deadline = In
       const s = await page.tick(ms, frames); // (the state the frames left)
       const w = facts.work;
       S.frameWork = ((s.vertices - w.vertices) + T.drawCallWork * (s.draws - w.draws)) / (frames + 1);
+      const a = s.animation, ran = a ? a.count - S.animationFrames : 0;
+      if (ran > 0) S.frameDraws = { loops: a.loops, draws: Math.round((100 * (s.draws - w.draws)) / ran) / 100 };
+      if (a) S.animationFrames = a.count;
       Object.assign(w, { frames: w.frames + frames + 1, draws: s.draws, vertices: s.vertices });
       const spent = w.vertices + T.drawCallWork * w.draws;
       if (spent > T.gatherWork) throw new TooHeavy(S.doing, spent);
