@@ -1,0 +1,32 @@
+// The grader benchmark's numbers (tools/bench-grader/stats.js) from a built report.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { quantile, gradingStats, statsLines } from '../../tools/bench-grader/stats.js';
+import { NOT_GRADED } from '../../grader/core/verdict.js';
+
+test('seconds a part: median, p90 and slowest by nearest rank; missing parts not counted; parts past the bound named', () => {
+  assert.equal(quantile([], 0.5), null);
+  assert.equal(quantile([3, 1, 2], 0.5), 2);
+  assert.equal(quantile([1, 2, 3, 4, 5, 6, 7, 8, 9, 10], 0.9), 9);
+  assert.equal(quantile([1, 2, 3, 4, 5, 6, 7, 8, 9, 10], 1), 10);
+  const part = (name, p, seconds, verdict = 'pass', status = 'graded') => ({ name, part: p, seconds, verdict, status });
+  const report = {
+    submissions: [
+      { parts: [part('a', 'WP04P1', 2), part('a', 'WP04P2', 4), { name: 'a', part: 'WP04P3', verdict: 'fail', status: 'missing' }] },
+      { parts: [part('b', 'WP04P1', 6), part('b', 'WP04P2', 91, NOT_GRADED, 'too slow')] },
+    ],
+    labels: { rows: [
+      { label: 'correct', want: 'pass', verdict: 'pass', agree: true }, { label: 'partial', want: 'review', verdict: 'pass', agree: false },
+      { label: 'correct', want: 'pass', verdict: NOT_GRADED, agree: false }, { label: 'broken', want: 'fail', verdict: 'fail', agree: true },
+    ] },
+  };
+  const st = gradingStats(report);
+  assert.deepEqual([st.parts, st.median, st.p90, st.max], [4, 4, 91, 91]);
+  assert.deepEqual(st.slowest.map((s) => `${s.name} ${s.part}`), ['b WP04P2', 'b WP04P1', 'a WP04P2']);
+  assert.deepEqual(st.notGraded, ['b WP04P2']);
+  assert.deepEqual(st.agreement, { exact: 2, of: 4, correctPassed: 1, correct: 2, partialPassed: 1, brokenPassed: 0 });
+  const lines = statsLines(st, 100);
+  assert.match(lines[0], /^4 parts in 100\.0 s: a part median 4\.0 s, p90 91\.0 s, slowest 91\.0 s/);
+  assert.equal(lines[1], 'past the time bound: b WP04P2');
+  assert.equal(lines[2], 'labels: 2 of 4 exact, correct parts passed 1 of 2, partial parts passed 1, broken parts passed 0');
+});
