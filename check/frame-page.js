@@ -89,6 +89,10 @@ export function framePage(frame, log) {
       const r = win().__geometry;
       return r ? plain(r.read(limits)) : { why: 'the geometry was not recorded' };
     },
+    /** The surface the last frame drew, per pixel (grader/browser/surface.js): its two pictures as { width, height, data }. */
+    async surface(opts) {
+      return surfaceOut(win().__geometry, opts, plain);
+    },
     async sources() {
       return { glsl: [...g().glsl], wgsl: [...g().wgsl] };
     },
@@ -107,4 +111,12 @@ export function framePage(frame, log) {
       return [...(watch().broken || [])];
     },
   };
+}
+
+/** The frame's surface reader's answer out of its realm, its two pictures as { width, height, data }. */
+function surfaceOut(r, opts, plain) {
+  const s = r && r.surface ? r.surface(opts) : { why: 'the geometry was not recorded' };
+  if (s.why) return plain(s);
+  const image = (bytes) => ({ width: s.width, height: s.height, data: new Uint8Array(bytes) });
+  return { ...plain({ ...s, normals: null, points: null }), normals: image(s.normals), points: image(s.points) };
 }

@@ -12,6 +12,7 @@ import { FROZEN, clockScript } from '../grader/browser/clock.js';
 import { drawBatchScript } from '../grader/browser/draw-batch.js';
 import { instrumentScript } from '../grader/browser/instrument.js';
 import { recordersInit } from '../grader/browser/geometry.js';
+import { nativesInit } from '../grader/browser/natives.js';
 import { pixelsScript } from '../grader/browser/pixels.js';
 import { tamperScript } from '../grader/browser/tamper.js';
 import { webgpuCaptureScript } from '../grader/browser/webgpu-capture.js';
@@ -27,6 +28,7 @@ export const VIEWPORT = 1000;
 /** The script every part's HTML gets first: the watch, the WebGPU capture, the draw batching and the grader's instrumentation, the clock. */
 export function frameScript(rubric) {
   return [
+    nativesInit, // (first: the browser's own WebGL functions)
     `(${frameWatchScript})(${JSON.stringify({ loopSeconds: rubric.loadSeconds })});`,
     webgpuCaptureScript,
     drawBatchScript,

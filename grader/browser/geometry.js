@@ -10,22 +10,25 @@
 import { meshAnalysisScript } from './mesh.js';
 import { webgpuGeometry } from './geometry-webgpu.js';
 import { sentScript } from './sent.js';
+import { surfaceReaderScript } from './surface.js';
 
 /** The init script as text: the recorders of what a page sends (its geometry, WebGL and WebGPU, and its uniforms) with the analysis in it. */
-export const recordersInit = `(${geometryScript})(${meshAnalysisScript}, ${webgpuGeometry}, ${sentScript}, ${geometryStore}, ${frameRecorder}, ${recordWebGL}, ${geometryReader});`;
+export const recordersInit = `(${geometryScript})(${meshAnalysisScript}, ${webgpuGeometry}, ${sentScript}, ${geometryStore}, ${frameRecorder}, ${recordWebGL}, ${geometryReader}, ${programInfoOf}, ${surfaceReaderScript});`;
 
 /** The init script's body (its parts are passed in as arguments: the script is their text). */
-function geometryScript(analyseMesh, recordWebGPU, recordSent, geometryStore, frameRecorder, recordWebGL, geometryReader) {
+function geometryScript(analyseMesh, recordWebGPU, recordSent, geometryStore, frameRecorder, recordWebGL, geometryReader, programInfoOf, surfaceReader) {
   if (window.__geometry || !window.WebGLRenderingContext) return;
   const G = geometryStore();
   Object.defineProperty(window, '__geometry', { value: G.rec, enumerable: false });
   Object.assign(G, frameRecorder(G, window.__grade)); // (instrument.js: the culling state the page set)
   recordWebGL(G);
   const { frameOf, closeFrame, wrap, bytesIn, MAX_DRAWS, FLOAT, TRIANGLES } = G;
-  const read = geometryReader(G, analyseMesh);
+  const infoOf = programInfoOf(G, analyseMesh);
+  const read = geometryReader(G, analyseMesh, infoOf);
   recordWebGPU({ frameOf, closeFrame, wrap, bytesIn, vertexInputs: analyseMesh.vertexInputs, MAX_DRAWS, FLOAT, TRIANGLES });
   recordSent({ wrap, bytesIn });
   G.rec.read = read;
+  G.rec.surface = surfaceReader(G, infoOf); // (grader/browser/surface.js: the surface per pixel)
 }
 
 /**
@@ -196,10 +199,9 @@ function recordWebGL({ wrap, stateOf, bytesOf, copy, changed, bindVao, closeFram
 
 }
 
-/** rec.read(limits): the last frame's geometry, summed up (analyseMesh.summary): small, plain data. */
-function geometryReader({ rec, programInfo, bytesOf, FLOAT, TRIANGLES }, analyseMesh) {
-  // the attributes of a program's vertex shader, and which one gl_Position is computed from
-  const infoOf = (gl, program) => {
+/** infoOf(gl, program): the attributes of a program's vertex shader, and which one gl_Position is computed from (kept a program). */
+function programInfoOf({ programInfo }, analyseMesh) {
+  return (gl, program) => {
     if (!program) return null;
     let info = programInfo.get(program);
     if (info) return info;
@@ -210,7 +212,10 @@ function geometryReader({ rec, programInfo, bytesOf, FLOAT, TRIANGLES }, analyse
     programInfo.set(program, info);
     return info;
   };
+}
 
+/** rec.read(limits): the last frame's geometry, summed up (analyseMesh.summary): small, plain data. */
+function geometryReader({ rec, bytesOf, FLOAT, TRIANGLES }, analyseMesh, infoOf) {
   return (limits) => {
     const frame = rec.cur && rec.cur.draws.length ? rec.cur : rec.last;
     const frames = [...rec.history.map((h) => h.vertices), ...(rec.cur ? [rec.cur.vertices] : [])];

@@ -7,6 +7,7 @@
 import { drawBatchScript } from '../browser/draw-batch.js';
 import { instrumentScript } from '../browser/instrument.js';
 import { recordersInit } from '../browser/geometry.js';
+import { nativesInit } from '../browser/natives.js';
 import { pixelsScript } from '../browser/pixels.js';
 import { tamperScript } from '../browser/tamper.js';
 import { FROZEN, clockScript } from '../browser/clock.js';
@@ -62,6 +63,7 @@ export function firefoxOpener(browser, host) {
         log.errors.push(`dialog: ${d.message()}`);
         d.dismiss().catch(() => {});
       });
+      await page.evaluateOnNewDocument(nativesInit); // (first: the browser's own WebGL functions)
       await page.evaluateOnNewDocument(drawBatchScript);
       await page.evaluateOnNewDocument(instrumentScript);
       await page.evaluateOnNewDocument(pixelsScript);

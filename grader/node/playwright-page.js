@@ -8,6 +8,7 @@ import { webgpuCaptureScript } from '../browser/webgpu-capture.js';
 import { drawBatchScript } from '../browser/draw-batch.js';
 import { instrumentScript } from '../browser/instrument.js';
 import { recordersInit } from '../browser/geometry.js';
+import { nativesInit } from '../browser/natives.js';
 import { pixelsScript } from '../browser/pixels.js';
 import { tamperScript } from '../browser/tamper.js';
 import { FROZEN, clockScript } from '../browser/clock.js';
@@ -32,6 +33,7 @@ export function partOpener(browser, host) {
     const site = { root: null, origin: null, log: { errors: [], blocked: [], notes: [] }, former: new Set() };
     const context = await browser.newContext({ viewport: { width: 1000, height: 1000 }, deviceScaleFactor: 1 });
     await serveSubmission(context, site);
+    await context.addInitScript(nativesInit); // (first: the browser's own WebGL functions)
     await context.addInitScript(webgpuCaptureScript);
     await context.addInitScript(drawBatchScript);
     await context.addInitScript(instrumentScript);
@@ -172,6 +174,22 @@ export function pageDriver(page, log) {
     sent: () => page.evaluate(() => (window.__sent ? window.__sent.read() : null)),
     /** The geometry of the last frame drawn, summed up (grader/browser/geometry.js): triangles, winding, closed, per-face attributes. */
     geometry: (limits) => page.evaluate((l) => (window.__geometry ? window.__geometry.read(l) : { why: 'the geometry was not recorded' }), limits),
+    /** The surface the last frame drew, per pixel (grader/browser/surface.js): its two pictures as { width, height, data }. */
+    surface: async (opts) => {
+      const r = await page.evaluate((o) => {
+        if (!window.__geometry || !window.__geometry.surface) return { why: 'the geometry was not recorded' };
+        const s = window.__geometry.surface(o);
+        const base64 = (bytes) => {
+          let text = '';
+          for (let i = 0; i < bytes.length; i += 0x8000) text += String.fromCharCode.apply(null, bytes.subarray(i, i + 0x8000));
+          return btoa(text);
+        };
+        return s.why ? s : { ...s, normals: base64(s.normals), points: base64(s.points) };
+      }, opts);
+      if (r.why) return r;
+      const image = (b64) => ({ width: r.width, height: r.height, data: new Uint8Array(Buffer.from(b64, 'base64')) });
+      return { ...r, normals: image(r.normals), points: image(r.points) };
+    },
     errors: () => log.errors,
   };
   return driver;

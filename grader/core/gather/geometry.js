@@ -16,3 +16,17 @@ export async function readSent(S) {
   S.outOfTime();
   return S.page.sent();
 }
+
+/**
+ * The surface the last frame drew, per pixel (grader/browser/surface.js): facts (names, box, the
+ * fit's samples) with its two pictures kept as `surface-normals` and `surface-points`; { why } where
+ * it could not be drawn again; null where the page interface cannot.
+ */
+export async function readSurface(S) {
+  if (!S.page.surface) return null;
+  S.outOfTime();
+  const r = await S.page.surface({ fitSamples: S.T.surfaceFitSamples });
+  if (!r || r.why) return { why: r ? r.why : 'the surface was not read' };
+  const { normals, points, ...facts } = r;
+  return { ...facts, normals: S.keep('surface-normals', normals), points: S.keep('surface-points', points) };
+}

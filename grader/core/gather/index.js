@@ -15,7 +15,7 @@ import { probeFaces, probeDepthCulling } from './faces.js';
 import { raiseHighlight, placeFarther } from './highlight.js';
 import { trySliders, leastShininess } from './sliders.js';
 import { unclip, brighten } from './visible.js';
-import { readGeometry } from './geometry.js';
+import { readGeometry, readSurface } from './geometry.js';
 import { lookAllRound } from './all-round.js';
 import { sphereView, shadingOf, viewFits, highlightEvidence } from '../computed/evidence.js';
 import { shownDifference } from '../measure/shown.js';
@@ -146,6 +146,8 @@ async function orbitAndLevel(S, controls) {
     ...(k === j || must.has('perFragment') ? { image: S.keep(`level-${k}`, s.img) } : {}) }));
   facts.judgedLevel = j;
   facts.geometry = await readGeometry(S);
+  // the judged view's surface per pixel, where the lighting is judged: each pixel's position and normal as the page drew them
+  if (must.has('diffuse') || must.has('highlight')) facts.surface = await readSurface(S);
   facts.judged = facts.ladder[j].image;
   return ladder[j].an.blank ? null : ladder[j];
 }

@@ -1,0 +1,105 @@
+// The page's own surface per pixel (grader/browser/surface.js draws it again from what the page
+// sent), made ready for the lighting's fits: each sample's position and unit normal in the model's
+// space, whether it is a front face, and w_o; the camera fitted exactly from where the page's own
+// matrices put each position (gl_Position = P V M p is linear in p: its 4×4 matrix is solved from
+// the samples). No guess from the silhouette: where the page could not be drawn again, `why` says so.
+
+/** x of A x = b for a small square system (Gaussian elimination with partial pivoting); null where singular. */
+export function solve(A, b) {
+  const n = b.length, M = A.map((row, i) => [...row, b[i]]);
+  for (let c = 0; c < n; c++) {
+    let best = c;
+    for (let r = c + 1; r < n; r++) if (Math.abs(M[r][c]) > Math.abs(M[best][c])) best = r;
+    if (!(Math.abs(M[best][c]) > 1e-12)) return null;
+    [M[c], M[best]] = [M[best], M[c]];
+    for (let r = 0; r < n; r++) {
+      if (r === c) continue;
+      const f = M[r][c] / M[c][c];
+      for (let k = c; k <= n; k++) M[r][k] -= f * M[c][k];
+    }
+  }
+  return M.map((row, i) => row[n] / row[i]);
+}
+
+const dot = (a, b) => a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+const cross = (a, b) => [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]];
+const unit = (v) => {
+  const l = Math.hypot(v[0], v[1], v[2]);
+  return l > 0 ? [v[0] / l, v[1] / l, v[2] / l] : null;
+};
+
+/**
+ * The matrix that takes a position to gl_Position (P V M as the page multiplied it), row by row,
+ * fitted by least squares to the samples ([p, clip] pairs); null where the samples do not fix it.
+ */
+export function clipMatrix(samples) {
+  const rows = [];
+  for (let r = 0; r < 4; r++) {
+    const AtA = [[0, 0, 0, 0], [0, 0, 0, 0], [0, 0, 0, 0], [0, 0, 0, 0]], Atb = [0, 0, 0, 0];
+    for (const { p, clip } of samples) {
+      const x = [p[0], p[1], p[2], 1];
+      for (let i = 0; i < 4; i++) {
+        Atb[i] += x[i] * clip[r];
+        for (let j = 0; j < 4; j++) AtA[i][j] += x[i] * x[j];
+      }
+    }
+    const row = solve(AtA, Atb);
+    if (!row) return null;
+    rows.push(row);
+  }
+  return rows;
+}
+
+/**
+ * The camera in the model's space from the clip matrix A: its centre (`eye`, where x, y and w of
+ * A [eye, 1] are 0) or, for an orthographic projection, the direction towards it (`towards`); and
+ * its axes (`right`, `up`, `back`: the eye space's x, y and z in the model's space).
+ */
+export function cameraOfClip(A) {
+  const [A0, A1, A2, A3] = A.map((r) => r.slice(0, 3));
+  const eye = Math.hypot(...A3) > 1e-9 * Math.hypot(...A2) ? solve([A0, A1, A3], [-A[0][3], -A[1][3], -A[3][3]]) : null;
+  // eye space: x along row 0, y along row 1 (a perspective's w row is −z; an orthographic's z row is −z times a scale)
+  const back = unit(eye ? A3.map((x) => -x) : A2.map((x) => -x));
+  const right = back && unit(cross(cross(back, A0), back));
+  const up = back && right && cross(back, right);
+  let towards = null;
+  if (!eye && back) towards = back;
+  return { eye, towards, right, up, back };
+}
+
+/**
+ * The surface as the artifact keeps it (facts.surface: { width, height, position, normal, box, fit,
+ * normals, points }, the last two the names of its pictures in `images`; or { why }) as { width,
+ * height, position, normal, camera, clip, samples: [{ x, y, p, n, front, w_o }] } for every step-th
+ * pixel it covers (about the rubric's maxSamples), or { why }. n is the normal attribute, else the position, as the
+ * page interpolated it, normalised; w_o points from the position to the camera.
+ */
+export function surfaceOf(surface, images, T) {
+  if (!surface || surface.why) return { why: surface ? surface.why : 'the surface was not read' };
+  const nImg = images[surface.normals], pImg = images[surface.points];
+  if (!nImg || !pImg) return { why: 'the surface\'s pictures are missing from the artifact' };
+  const fit = (surface.fit || []).map((f) => ({ p: f.slice(0, 3), clip: f.slice(3, 7) }));
+  if (fit.length < 16) return { why: `the page's geometry covers ${fit.length} pixels: too few to read` };
+  const clip = clipMatrix(fit);
+  if (!clip) return { why: 'where the page\'s matrices put its positions could not be solved (its positions may all lie in a plane)' };
+  const camera = cameraOfClip(clip);
+  if (!camera.back) return { why: 'the camera could not be found from the page\'s matrices' };
+  const { width, height } = surface, [lo, hi] = surface.box;
+  const step = Math.max(1, Math.floor(Math.sqrt((surface.covered || width * height) / T.maxSamples)));
+  const samples = [];
+  for (let y = 0; y < height; y += step) {
+    for (let x = 0; x < width; x += step) {
+      const o = 4 * (y * width + x), a = nImg.data[o + 3];
+      if (!a) continue;
+      const n = unit([0, 1, 2].map((k) => (2 * nImg.data[o + k]) / 255 - 1));
+      if (!n) continue;
+      const p = [0, 1, 2].map((k) => lo[k] + ((hi[k] - lo[k]) * pImg.data[o + k]) / 255);
+      const w_o = camera.eye ? unit([camera.eye[0] - p[0], camera.eye[1] - p[1], camera.eye[2] - p[2]]) : camera.towards;
+      samples.push({ x, y, p, n, front: a === 255, w_o });
+    }
+  }
+  return { width, height, position: surface.position, normal: surface.normal, clip, camera, samples };
+}
+
+/** The angle in degrees between unit vectors a and b. */
+export const degreesBetween = (a, b) => (Math.acos(Math.max(-1, Math.min(1, dot(a, b)))) * 180) / Math.PI;
