@@ -4,8 +4,9 @@
 // æ/ø/å), and hostile hand-ins, each a student of its own (a zip bomb, a "../" entry, a symbolic
 // link, a corrupt zip, two entries of one name, a CP850 name, too many files, zips too deep):
 // every real student's unpacked tree equals its folder file for file, each hostile one gets its
-// message while the others are unpacked, and nothing is written outside the output folder. Moodle's
-// feedback zip puts each page where the download put the student.
+// message while the others are unpacked, and nothing is written outside the output folder. The
+// same downloads wrapped in one more folder (zipped again on a Mac, or that zip unpacked) give the
+// same class, and a folder that is no download is refused with what was found.
 import { test, after } from 'node:test';
 import assert from 'node:assert/strict';
 import { existsSync, mkdirSync, mkdtempSync, readdirSync, readFileSync, rmSync, statSync, writeFileSync } from 'node:fs';
@@ -15,7 +16,9 @@ import { fileURLToPath } from 'node:url';
 import { intake, readIntake } from '../../grader/node/intake/intake.js';
 import { brightspaceTime, detectSite, dueTime, groupBySite, lateOf } from '../../grader/node/intake/formats.js';
 import { decodeName, safeSegments } from '../../grader/node/intake/names.js';
+import { IntakeError } from '../../grader/node/intake/zip.js';
 import { feedbackZipPath } from '../../grader/node/feedback/write.js';
+import { findParts } from '../../grader/node/parts.js';
 import { copyHandins } from '../fixtures/handins.js';
 import { makeZip, cp850, tree, entriesOf, idsOf, lastFirst, siteName } from './downloads.js';
 
@@ -219,7 +222,28 @@ test('the sites\' other shapes: Brightspace\'s and Moodle\'s loose files, Canvas
   assert.deepEqual(mixed.notes, ['left out "stray": not named as brightspace names a hand-in']);
 });
 
-// a few real students (their own zips, a zip in a zip, loose files), in each site's names
+/** The class as the intake found it: each student's name, identity and the parts the grader finds in the hand-in. */
+const classOf = (got) => got.submissions.map((s) => ({ name: s.name, identity: s.identity, earlier: s.earlier, error: s.error, parts: s.error ? null : findParts(s.root) }));
+
+/** Writes `entries` ([{ name, data }]) as files under `dir`, as unpacking their zip would. */
+function writeEntries(dir, entries) {
+  for (const e of entries) {
+    mkdirSync(path.join(dir, path.dirname(e.name)), { recursive: true });
+    writeFileSync(path.join(dir, e.name), e.data);
+  }
+}
+
+/**
+ * `entries` zipped again one folder down, as macOS's Compress makes it: everything under `top`/,
+ * a .DS_Store in it, and __MACOSX/ beside it with a "._" file for each.
+ */
+const macWrapped = (top, entries) => [
+  ...entries.map((e) => ({ ...e, name: `${top}/${e.name}` })),
+  { name: `${top}/.DS_Store`, data: 'junk' },
+  ...entries.map((e) => ({ name: `__MACOSX/${top}/${path.posix.dirname(e.name)}/._${path.posix.basename(e.name)}`, data: 'junk' })),
+];
+
+// the downloads wrapped: a few real students (their own zips, a zip in a zip, loose files), each site's names
 const FEW = students.slice(0, 6);
 /** `site`'s download of FEW as zip entries ('folders': a folder a student, some with their zip, some loose). */
 function fewEntries(site) {
@@ -233,6 +257,89 @@ function fewEntries(site) {
   if (site === 'brightspace') entries.push({ name: 'index.html', data: '<table>the listing</table>' });
   return entries;
 }
+
+for (const site of ['brightspace', 'canvas', 'moodle', 'folders']) {
+  test(`a ${site} download zipped again one folder down (with __MACOSX/), as a zip and unpacked, gives the same class as the download`, () => {
+    const dir = mkdtempSync(path.join(os.tmpdir(), `intake-wrapped-${site}-`));
+    try {
+      const entries = fewEntries(site);
+      const top = 'Worksheet 4 Download Oct 11, 2025 803 PM';
+      const inputs = {
+        download: path.join(dir, 'download.zip'),
+        unpacked: path.join(dir, 'unpacked'),
+        'zipped again': path.join(dir, 'again.zip'),
+        'zipped again, unpacked': path.join(dir, 'again'),
+      };
+      writeFileSync(inputs.download, makeZip(entries));
+      writeEntries(inputs.unpacked, entries);
+      writeFileSync(inputs['zipped again'], makeZip(macWrapped(top, entries)));
+      writeEntries(inputs['zipped again, unpacked'], macWrapped(top, entries));
+      const got = {};
+      for (const [how, input] of Object.entries(inputs)) {
+        const out = path.join(dir, `out-${how}`);
+        mkdirSync(out);
+        got[how] = intake(input, out, BOUNDS);
+      }
+      const want = classOf(got.download);
+      assert.equal(got.download.site, site);
+      assert.equal(want.length, FEW.length, want.map((s) => s.name).join(', '));
+      for (const s of want) assert.ok(s.error === null && Object.values(s.parts).some(Boolean), `${s.name}: parts found (${s.error})`);
+      for (const how of ['unpacked', 'zipped again', 'zipped again, unpacked']) {
+        assert.equal(got[how].site, site, how);
+        assert.deepEqual(classOf(got[how]), want, `${how}: the same students, identities and parts`);
+      }
+      for (const how of ['zipped again', 'zipped again, unpacked']) assert.ok(got[how].notes.includes(`looked through "${top}/": one folder around the download`), `${how}: ${got[how].notes.join(' | ')}`);
+    } finally {
+      rmSync(dir, { recursive: true, force: true });
+    }
+  });
+}
+
+test('a folder of mixed junk is refused, as a folder and as a zip, saying what was found and what each site\'s download looks like', () => {
+  const dir = mkdtempSync(path.join(os.tmpdir(), 'intake-junk-'));
+  try {
+    const junk = [
+      { name: 'notes.txt', data: 'remember the milk' }, { name: 'slides.pdf', data: '%PDF' }, { name: 'photo.jpg', data: 'jpeg' },
+      { name: 'old stuff/readme.md', data: '# old' }, { name: 'saved page/index.html', data: '<p>a web page</p>' }, { name: 'misc/data.csv', data: 'a,b' },
+      { name: '.DS_Store', data: 'junk' }, { name: '__MACOSX/._notes.txt', data: 'junk' },
+    ];
+    writeEntries(path.join(dir, 'junk'), junk);
+    writeFileSync(path.join(dir, 'junk.zip'), makeZip(junk));
+    writeFileSync(path.join(dir, 'junk-again.zip'), makeZip(macWrapped('Stuff', junk)));
+    for (const input of ['junk', 'junk.zip', 'junk-again.zip']) {
+      const out = path.join(dir, `out-${input}`);
+      mkdirSync(out);
+      assert.throws(() => intake(path.join(dir, input), out, BOUNDS), (err) => {
+        assert.ok(err instanceof IntakeError, String(err));
+        if (input !== 'junk-again.zip') assert.match(err.message, /holds 3 folder\(s\) \("misc", "old stuff", "saved page"\) and 3 file\(s\) \("notes\.txt", "photo\.jpg", "slides\.pdf"\): no folder holding a zip or a page named as a part/, input);
+        for (const site of [/Brightspace .*"<submission id>-<user id> - <name> - <date time>"/, /Canvas .*"<lastfirst>_<user id>_<file id>_<name>"/, /Moodle .*"<Full Name>_<participant id>_assignsubmission_file"/, /a folder a student/]) assert.match(err.message, site, input);
+        return true;
+      }, input);
+      assert.ok(!existsSync(path.join(out, 'handins')) && !existsSync(path.join(out, 'intake.json')), `${input}: nothing taken in`);
+    }
+  } finally {
+    rmSync(dir, { recursive: true, force: true });
+  }
+});
+
+test('a download is never one student: a folder holding a site\'s download beside others, and one student\'s hand-in given as a class, are refused', () => {
+  const dir = mkdtempSync(path.join(os.tmpdir(), 'intake-never-one-'));
+  try {
+    writeEntries(path.join(dir, 'two', 'Section A'), fewEntries('brightspace'));
+    writeEntries(path.join(dir, 'two', 'anna'), entriesOf(path.join(HANDINS, FEW[0])));
+    const out = path.join(dir, 'out');
+    mkdirSync(out);
+    assert.throws(() => intake(path.join(dir, 'two'), out, BOUNDS), /"Section A", each a course site's download, beside other folders: a download is never one student/);
+    // one student's hand-in (its pages named as parts at the top) is not a class of p1, p2, ...
+    writeEntries(path.join(dir, 'one'), [1, 2, 3].map((n) => ({ name: `p${n}/index.html`, data: '<p>' })));
+    assert.throws(() => intake(path.join(dir, 'one'), out, BOUNDS), /holds 3 folder\(s\) \("p1", "p2", "p3"\): folders or pages named as parts at the top: one student's hand-in, not a class/);
+    // and a class of one is that one student, not the folders of their hand-in
+    writeEntries(path.join(dir, 'class of one', 'anna'), [{ name: 'week4/p1.html', data: '<p>' }, { name: 'common/MV.js', data: '' }]);
+    assert.deepEqual(intake(path.join(dir, 'class of one'), out, BOUNDS).submissions.map((s) => s.name), ['anna']);
+  } finally {
+    rmSync(dir, { recursive: true, force: true });
+  }
+});
 
 test('Moodle\'s feedback zip: each page in the folder the download gave the student, as "download as folders" or loose files', () => {
   const dir = mkdtempSync(path.join(os.tmpdir(), 'intake-moodle-feedback-'));
