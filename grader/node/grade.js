@@ -29,12 +29,13 @@ const repo = path.resolve(here, '../..');
 const REFERENCE_SECONDS = 30;
 const HELP = `usage: npm run grade -- <submission-folder> [--part WP04P1=<path to html>]... [--rubric <file>] [--out <dir>]
        npm run grade -- --batch <download.zip | its folder | a folder a student> [--rubric <file>] [--out <dir>]
---batch takes a course site's download as it comes (its .zip or the folder it unpacked into) and
-says which it found: Brightspace (a folder a submission, "<id>-<id> - <name> - <date>"), Canvas
-(files "<lastfirst>_<user id>_<file id>_<name>"), Moodle (folders "<name>_<id>_assignsubmission_file"),
-or a folder a student. Each hand-in is unpacked safely into OUT/handins/ (zips in it too; bounds:
-the rubric's unpack), the latest of a student's hand-ins is graded, and the student's identity goes
-into report.json and the grade files.
+--batch takes a course site's download as it comes (its .zip or the folder it unpacked into, either
+one inside a folder around it, as a Mac zips it again) and says which it found: Brightspace (a
+folder a submission, "<id>-<id> - <name> - <date>"), Canvas (files "<lastfirst>_<user id>_<file
+id>_<name>"), Moodle (folders "<name>_<id>_assignsubmission_file"), or a folder a student; anything
+else is refused with what was found. Each hand-in is unpacked safely into OUT/handins/ (zips in it
+too; bounds: the rubric's unpack), the latest of a student's hand-ins is graded, and the student's
+identity goes into report.json and the grade files.
 Opens each part (WP04P1 ... WP04P5, found by folder or file name: WP04P1, Part1, p01, w4p1,
 week04p01, ...) in Chromium, Chrome or Edge (WebGL or WebGPU) with time frozen, finds its controls, stops the
 orbit, subdivides until the silhouette settles, and gives each part a verdict (pass, review,

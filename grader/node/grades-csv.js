@@ -2,7 +2,7 @@
 // something (its fails and reviews, and why it was not graded) and the ids of the audits that said
 // them (grader/core/audits/index.js). The reasons are chosen by their levels and ids, never by
 // their words: a sentence reworded moves no reason in or out of the file.
-import { csvCell } from './grades-export.js';
+import { csvText } from './csv.js';
 import { asking } from '../core/part-result.js';
 
 /** grades.csv's text for `rows` (report.js's: { name, passes, parts: [{ part, verdict, reasons, findings }] }) over `parts`. */
@@ -13,5 +13,5 @@ export function gradesCsv(rows, parts) {
     return [s.name, s.passes, ...parts.map((p) => of(p).verdict), ...parts.map((p) => asking(of(p)).map((f) => f.reason).join('; ')),
       ...parts.map((p) => [...new Set(asking(of(p)).map((f) => f.id).filter(Boolean))].join(' '))];
   });
-  return [head, ...body].map((cells) => cells.map(csvCell).join(',')).join('\n') + '\n';
+  return csvText([head, ...body]);
 }

@@ -13,13 +13,10 @@ import { writeFileSync } from 'node:fs';
 import path from 'node:path';
 import { PARTS } from './parts.js';
 import { NOT_GRADED } from '../core/verdict.js';
+import { csvText } from './csv.js';
 
-/** A CSV cell: quoted when it holds a comma, quote, line break or edge space (quotes doubled). */
-export const csvCell = (v) => {
-  const s = v === null || v === undefined ? '' : String(v);
-  return /[",\r\n]|^\s|\s$/.test(s) ? `"${s.replace(/"/g, '""')}"` : s;
-};
-const line = (cells) => cells.map(csvCell).join(',');
+// (each file's lines end in CRLF, as the sites' own exports do)
+const importText = (rows) => csvText(rows, { eol: '\r\n' });
 const num = (x) => String(Number(x.toFixed(2)));
 
 /** A part's points under `points` (the rubric's), or null when it was not graded here (or not in this run). */
@@ -46,51 +43,51 @@ export function brightspaceCsv(rows, points) {
   const id = (s) => s.identity || {};
   const key = rows.every((s) => id(s).orgDefinedId) || !rows.every((s) => id(s).username) ? 'orgDefinedId' : 'username';
   const left = [];
-  const lines = [line([key === 'orgDefinedId' ? 'OrgDefinedId' : 'Username', `${points.item} Points Grade`, 'End-of-Line Indicator'])];
+  const lines = [[key === 'orgDefinedId' ? 'OrgDefinedId' : 'Username', `${points.item} Points Grade`, 'End-of-Line Indicator']];
   for (const s of rows) {
     const { total } = studentPoints(s, points);
     if (!id(s)[key] || total === null) { left.push(`${s.name}: ${total === null ? 'a part not graded here' : `no ${key === 'orgDefinedId' ? 'OrgDefinedId' : 'Username'} (give --roster)`}`); continue; }
-    lines.push(line([`#${id(s)[key]}`, num(total), '#']));
+    lines.push([`#${id(s)[key]}`, num(total), '#']);
   }
-  return { text: `${lines.join('\r\n')}\r\n`, left };
+  return { text: importText(lines), left };
 }
 
 /** Canvas's gradebook import: Student, ID, SIS User ID, SIS Login ID, Section, the assignment. */
 export function canvasCsv(rows, points) {
   const left = [];
-  const lines = [line(['Student', 'ID', 'SIS User ID', 'SIS Login ID', 'Section', points.item])];
+  const lines = [['Student', 'ID', 'SIS User ID', 'SIS Login ID', 'Section', points.item]];
   for (const s of rows) {
     const id = s.identity || {};
     const { total } = studentPoints(s, points);
     if (!id.userId || total === null) { left.push(`${s.name}: ${total === null ? 'a part not graded here' : 'no Canvas user id'}`); continue; }
-    lines.push(line([id.rosterName || id.name, id.userId, id.sisUserId, id.sisLoginId, id.section, num(total)]));
+    lines.push([id.rosterName || id.name, id.userId, id.sisUserId, id.sisLoginId, id.section, num(total)]);
   }
-  return { text: `${lines.join('\r\n')}\r\n`, left };
+  return { text: importText(lines), left };
 }
 
 /** Moodle's CSV grade import: map the user on ID number or Email address; Feedback to the item's feedback. */
 export function moodleCsv(rows, points) {
   const left = [];
-  const lines = [line(['Full name', 'ID number', 'Email address', points.item, 'Feedback'])];
+  const lines = [['Full name', 'ID number', 'Email address', points.item, 'Feedback']];
   for (const s of rows) {
     const id = s.identity || {};
     const { total } = studentPoints(s, points);
     if (!(id.idNumber || id.email) || total === null) { left.push(`${s.name}: ${total === null ? 'a part not graded here' : 'no ID number or email (give --roster)'}`); continue; }
-    lines.push(line([id.rosterName || id.name, id.idNumber, id.email, num(total), verdictWords(s)]));
+    lines.push([id.rosterName || id.name, id.idNumber, id.email, num(total), verdictWords(s)]);
   }
-  return { text: `${lines.join('\r\n')}\r\n`, left };
+  return { text: importText(lines), left };
 }
 
 /** Ours: every part's points, the total, the identity, and which parts a teacher set. */
 export function pointsCsv(rows, points) {
-  const lines = [line(['name', 'site', 'user id', 'submission id', 'time', 'late', ...PARTS, 'total', 'max', 'set by the teacher'])];
+  const lines = [['name', 'site', 'user id', 'submission id', 'time', 'late', ...PARTS, 'total', 'max', 'set by the teacher']];
   for (const s of rows) {
     const id = s.identity || {};
     const p = studentPoints(s, points);
-    lines.push(line([s.name, id.site, id.userId, id.submissionId, id.time, id.late === null || id.late === undefined ? '' : id.late ? 'late' : 'on time',
-      ...PARTS.map((k) => (p.byPart[k] === null ? '' : num(p.byPart[k]))), p.total === null ? '' : num(p.total), num(p.max), p.teacherSet.join(' ')]));
+    lines.push([s.name, id.site, id.userId, id.submissionId, id.time, id.late === null || id.late === undefined ? '' : id.late ? 'late' : 'on time',
+      ...PARTS.map((k) => (p.byPart[k] === null ? '' : num(p.byPart[k]))), p.total === null ? '' : num(p.total), num(p.max), p.teacherSet.join(' ')]);
   }
-  return `${lines.join('\r\n')}\r\n`;
+  return importText(lines);
 }
 
 const SITE_FILES = { brightspace: ['grades-brightspace.csv', brightspaceCsv], canvas: ['grades-canvas.csv', canvasCsv], moodle: ['grades-moodle.csv', moodleCsv] };

@@ -6,6 +6,7 @@
 import { readFileSync } from 'node:fs';
 import { NOT_GRADED } from '../core/verdict.js';
 import { asking } from '../core/part-result.js';
+import { readRows } from './csv.js';
 
 /** The verdict a label asks for: correct → pass, partial → review, broken → fail. */
 export const VERDICT_OF_LABEL = { correct: 'pass', partial: 'review', broken: 'fail', pass: 'pass', review: 'review', fail: 'fail' };
@@ -13,24 +14,24 @@ export const LABELS = ['correct', 'partial', 'broken'];
 const VERDICTS = ['pass', 'review', 'fail'];
 
 /**
- * Parses a labels TSV. Returns [{ submission, part, label, reasons, unsure }]; throws an Error
- * naming the line for a row it cannot read.
+ * Parses a labels TSV ("#" starts a comment line; a cell may be quoted, as a spreadsheet writes a
+ * tab, a quote or a line break in one). Returns [{ submission, part, label, reasons, unsure }];
+ * throws an Error naming the line for a row it cannot read.
  */
 export function parseLabels(text, file = 'labels') {
-  const lines = text.split(/\r?\n/).filter((l) => l.trim() && !l.startsWith('#'));
-  if (!lines.length) throw new Error(`${file}: no labels in it`);
-  const head = lines[0].split('\t').map((h) => h.trim().toLowerCase());
+  const rows = readRows(text, { delimiter: '\t', comments: true, file });
+  if (!rows.length) throw new Error(`${file}: no labels in it`);
+  const head = rows[0].cells.map((h) => h.trim().toLowerCase());
   const col = (name) => head.indexOf(name);
   for (const need of ['submission', 'part', 'label']) {
     if (col(need) < 0) throw new Error(`${file}: the first line must name the columns submission, part and label (tab-separated); it has ${head.join(', ')}`);
   }
-  return lines.slice(1).map((line, k) => {
-    const cells = line.split('\t');
+  return rows.slice(1).map(({ cells, line }) => {
     const get = (name) => (col(name) >= 0 ? (cells[col(name)] || '').trim() : '');
     const label = get('label').toLowerCase();
     const part = get('part').toUpperCase();
-    if (!VERDICT_OF_LABEL[label]) throw new Error(`${file}, line ${k + 2}: label "${get('label')}" is none of correct, partial, broken`);
-    if (!/^WP04P[1-5]$/.test(part)) throw new Error(`${file}, line ${k + 2}: part "${get('part')}" is none of WP04P1 … WP04P5`);
+    if (!VERDICT_OF_LABEL[label]) throw new Error(`${file}, line ${line}: label "${get('label')}" is none of correct, partial, broken`);
+    if (!/^WP04P[1-5]$/.test(part)) throw new Error(`${file}, line ${line}: part "${get('part')}" is none of WP04P1 … WP04P5`);
     const reasons = get('reasons');
     return { submission: get('submission'), part, label: LABELS.includes(label) ? label : LABELS[VERDICTS.indexOf(label)], reasons, unsure: /\(unsure\)/i.test(reasons) };
   });

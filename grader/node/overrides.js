@@ -6,23 +6,24 @@
 import { readFileSync } from 'node:fs';
 import { VERDICT_OF_LABEL } from './labels.js';
 import { safeName } from './layout.js';
+import { readRows } from './csv.js';
 
 export const OVERRIDES_FILE = 'overrides.tsv';
 
 /**
  * Parses overrides.tsv: a header naming the columns student, part, verdict and (optionally) note,
- * tab-separated; "#" starts a comment line. A verdict is pass, review or fail (or a label: correct,
+ * tab-separated; "#" starts a comment line; a cell may be quoted (a note with a tab, a quote or a line
+ * break in it, as a spreadsheet writes it). A verdict is pass, review or fail (or a label: correct,
  * partial, broken). Returns [{ student, part, verdict, note, line }]; throws an Error naming the line.
  */
 export function parseOverrides(text, file = OVERRIDES_FILE) {
-  const lines = text.split(/\r?\n/).map((l, k) => ({ l, k: k + 1 })).filter(({ l }) => l.trim() && !l.startsWith('#'));
-  if (!lines.length) return [];
-  const head = lines[0].l.split('\t').map((h) => h.trim().toLowerCase());
+  const rows = readRows(text, { delimiter: '\t', comments: true, file });
+  if (!rows.length) return [];
+  const head = rows[0].cells.map((h) => h.trim().toLowerCase());
   for (const need of ['student', 'part', 'verdict']) {
     if (!head.includes(need)) throw new Error(`${file}: the first line must name the columns student, part, verdict and note (tab-separated); it has ${head.join(', ')}`);
   }
-  return lines.slice(1).map(({ l, k }) => {
-    const cells = l.split('\t');
+  return rows.slice(1).map(({ cells, line: k }) => {
     const get = (name) => (head.includes(name) ? (cells[head.indexOf(name)] || '').trim() : '');
     const verdict = VERDICT_OF_LABEL[get('verdict').toLowerCase()];
     const part = get('part').toUpperCase();

@@ -6,27 +6,8 @@
 // export; Moodle: Grades → Export → plain text, with ID number and email), CSV or TSV. A student
 // is matched on the user id where the roster has it (Canvas's ID), else on the full name, never
 // on a folder's name.
+import { readTable } from './csv.js';
 
-/** Splits CSV text (quotes doubled inside quoted cells) or TSV text into rows of cells. */
-export function parseTable(text) {
-  const t = text.replace(/^\uFEFF/, '');
-  const sep = (t.split(/\r?\n/, 1)[0].match(/\t/g) || []).length > (t.split(/\r?\n/, 1)[0].match(/,/g) || []).length ? '\t' : ',';
-  const rows = [];
-  let row = [], cell = '', quoted = false;
-  for (let k = 0; k < t.length; k++) {
-    const c = t[k];
-    if (quoted) {
-      if (c === '"' && t[k + 1] === '"') { cell += '"'; k++; } else if (c === '"') quoted = false;
-      else cell += c;
-    } else if (c === '"' && cell === '') quoted = true;
-    else if (c === sep) { row.push(cell); cell = ''; } else if (c === '\n' || c === '\r') {
-      if (c === '\r' && t[k + 1] === '\n') k++;
-      row.push(cell); rows.push(row); row = []; cell = '';
-    } else cell += c;
-  }
-  if (cell || row.length) { row.push(cell); rows.push(row); }
-  return rows.filter((r) => r.some((c) => c.trim()));
-}
 
 // a roster's columns, by the names each site exports them under
 const COLUMNS = {
@@ -36,9 +17,9 @@ const COLUMNS = {
 };
 const squash = (s) => String(s || '').toLowerCase().normalize('NFC').replace(/[^\p{L}\p{N}]/gu, '');
 
-/** The roster's students: [{ orgDefinedId, username, email, idNumber, canvasId, ..., names: [forms of the name to match] }]. */
+/** The roster's students (CSV or TSV text): [{ orgDefinedId, username, email, idNumber, canvasId, ..., names: [forms of the name to match] }]. */
 export function parseRoster(text) {
-  const [head, ...rows] = parseTable(text);
+  const [head, ...rows] = readTable(text);
   if (!head) return [];
   const col = Object.fromEntries(Object.entries(COLUMNS).map(([k, re]) => [k, head.findIndex((h) => re.test(h.trim()))]));
   return rows.map((cells) => {

@@ -1,6 +1,7 @@
 // The similarity check in the grader's report: report.json's `similarity`, similar.csv, and a
 // section of report.html that the class grid links to (a badge on both hand-ins' rows).
 import { PARTS } from '../node/parts.js';
+import { csvText } from '../node/csv.js';
 
 const esc = (s) => String(s).replace(/[&<>"']/g, (c) => ({ '&': '&amp;', '<': '&lt;', '>': '&gt;', '"': '&quot;', "'": '&#39;' })[c]);
 const pct = (x) => `${Math.round(100 * x)}%`;
@@ -20,12 +21,13 @@ export function similarityJson(r) {
     notes: r.notes };
 }
 
-/** similar.csv: one listed pair a row, its scores per part and overall. */
+/** similar.csv: one listed pair a row, its scores per part and overall; the names and the pictures' list always quoted. */
 export function similarCsv(r) {
-  const q = (s) => JSON.stringify(String(s));
-  return [['a', 'b', 'score', 'overall', ...PARTS, 'same_pictures', 'fragments'].join(',')]
-    .concat(r.pairs.filter((p) => p.listed).map((p) => [q(p.a), q(p.b), p.score.toFixed(3), p.overall.toFixed(3),
-      ...PARTS.map((k) => (k in p.parts ? p.parts[k].toFixed(3) : '')), q((p.samePictures || []).join(' ')), p.fragmentCount].join(','))).join('\n') + '\n';
+  const head = ['a', 'b', 'score', 'overall', ...PARTS, 'same_pictures', 'fragments'];
+  const named = new Set([0, 1, head.indexOf('same_pictures')]);
+  return csvText([head, ...r.pairs.filter((p) => p.listed).map((p) => [p.a, p.b, p.score.toFixed(3), p.overall.toFixed(3),
+    ...PARTS.map((k) => (k in p.parts ? p.parts[k].toFixed(3) : '')), (p.samePictures || []).join(' '), p.fragmentCount])],
+  { quoted: (row, column) => row > 0 && named.has(column) });
 }
 
 /** The badge on a hand-in's row of the class grid: a link to each listed pair it is in. */

@@ -14,7 +14,7 @@ import { AUDITS } from '../../grader/core/audits/index.js';
 import { missedSlides } from '../../check/slides.js';
 import { gradesCsv } from '../../grader/node/grades-csv.js';
 import { PARTS } from '../../grader/core/part-names.js';
-import { parseTable } from '../../grader/node/roster.js';
+import { readTable } from '../../grader/node/csv.js';
 
 const here = path.dirname(fileURLToPath(import.meta.url));
 const root = path.join(here, '../..');
@@ -40,7 +40,7 @@ async function recordedRows() {
 /** What the check page keys on a part's reasons: the slides its cards quote, with the audit that asks each. */
 const checkPage = (rows) => rows.map((s) => s.parts.map((r) => missedSlides(r.findings).map(({ slide, note, id }) => ({ slide, note, id }))));
 /** grades.csv without its reasons' words: the names, passes, verdicts and audit ids. */
-const csvIds = (rows) => parseTable(gradesCsv(rows, PARTS)).map((cells) => [...cells.slice(0, 2 + PARTS.length), ...cells.slice(-PARTS.length)]);
+const csvIds = (rows) => readTable(gradesCsv(rows, PARTS)).map((cells) => [...cells.slice(0, 2 + PARTS.length), ...cells.slice(-PARTS.length)]);
 
 test('every reason of a recorded class carries a declared audit id, and the reviews and fails name their slides', async () => {
   const rows = await recordedRows();

@@ -1,5 +1,5 @@
-// Test downloads as the course sites make them, built from the real hand-ins in ../shared/handins
-// (test data, never copied into the project): a zip writer that can write what a student's zip
+// Test downloads as the course sites make them, built from a folder of hand-ins (the fixture
+// hand-ins, or the real ones in ../shared/handins: test data, never copied into the project): a zip writer that can write what a student's zip
 // tool may (names in CP850 without the UTF-8 flag, two entries of the same name, "../", a
 // symbolic link, a bomb), and the three sites' downloads around a student's files.
 import { readFileSync, readdirSync, statSync } from 'node:fs';

@@ -11,7 +11,7 @@ import path from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { unzipSync } from 'fflate';
 import { makeZip } from './downloads.js';
-import { parseTable } from '../../grader/node/roster.js';
+import { readTable } from '../../grader/node/csv.js';
 
 const grade = fileURLToPath(new URL('../../grader/node/grade.js', import.meta.url));
 const run = (args) => spawnSync(process.execPath, [grade, ...args], { encoding: 'utf8' });
@@ -39,7 +39,7 @@ test('a download of hostile hand-ins only: each student told why, every part fai
     const aero = report.submissions.find((s) => s.name === 'aerosoeren');
     assert.deepEqual({ userId: aero.identity.userId, fileIds: aero.identity.fileIds, late: aero.identity.late }, { userId: '000123', fileIds: ['39787'], late: true });
     assert.ok(aero.parts.every((p) => p.verdict === 'fail' && p.status === 'not unpacked' && /not a zip file/.test(p.reasons[0])));
-    const canvas = parseTable(readFileSync(path.join(out, 'grades-canvas.csv'), 'utf8'));
+    const canvas = readTable(readFileSync(path.join(out, 'grades-canvas.csv'), 'utf8'));
     assert.deepEqual(canvas[0], ['Student', 'ID', 'SIS User ID', 'SIS Login ID', 'Section', 'Worksheet 4']);
     assert.deepEqual(canvas.find((l) => l[1] === '000123').slice(0, 5), ['Søren Ærø', '000123', 's0099', 'soeren', 'Hold 2'], 'the roster\'s columns, the id with its leading zeros');
     assert.deepEqual(canvas.find((l) => l[1] === '640693').slice(0, 3), ['rodriguezaiden', '640693', ''], 'a student the roster does not have: the download\'s name and id');
@@ -57,7 +57,7 @@ test('a download of hostile hand-ins only: each student told why, every part fai
     const again = run(['--report-only', '--out', out]);
     assert.equal(again.status, 0, again.stderr);
     assert.match(again.stdout, /grade: 1 verdict\(s\) set by the teacher/);
-    const line = parseTable(readFileSync(path.join(out, 'grades-canvas.csv'), 'utf8')).find((l) => l[1] === '000123');
+    const line = readTable(readFileSync(path.join(out, 'grades-canvas.csv'), 'utf8')).find((l) => l[1] === '000123');
     assert.deepEqual([line[2], line[5]], ['s0099', '0.5'], 'the roster kept in OUT from the first run; the override counted');
     assert.match(readFileSync(path.join(out, 'feedback', 'aerosoeren.html'), 'utf8'), /Your teacher set this verdict \(the grader said fail\)\. Send me the zip again by mail\./);
 

@@ -1,10 +1,13 @@
 // The grader's intake (grader/node/intake/): a download from each course site, built here from the
-// real hand-ins in ../shared/handins in the site's own names (a student's zip, a zip in a zip, loose
-// files, a resubmission, __MACOSX/, a name with æ/ø/å), and hostile hand-ins, each a student of its
-// own (a zip bomb, a "../" entry, a symbolic link, a corrupt zip, two entries of one name, a CP850
-// name): every real student's unpacked tree equals its folder file for file, each hostile one gets
-// its message while the others are unpacked, and nothing is written outside the output folder.
-import { test } from 'node:test';
+// fixture hand-ins (tests/fixtures/handins/, or the real ones in HANDINS_DIR) in the site's own
+// names (a student's zip, a zip in a zip, loose files, a resubmission, __MACOSX/, a name with
+// æ/ø/å), and hostile hand-ins, each a student of its own (a zip bomb, a "../" entry, a symbolic
+// link, a corrupt zip, two entries of one name, a CP850 name, too many files, zips too deep):
+// every real student's unpacked tree equals its folder file for file, each hostile one gets its
+// message while the others are unpacked, and nothing is written outside the output folder. The
+// same downloads wrapped in one more folder (zipped again on a Mac, or that zip unpacked) give the
+// same class, and a folder that is no download is refused with what was found.
+import { test, after } from 'node:test';
 import assert from 'node:assert/strict';
 import { existsSync, mkdirSync, mkdtempSync, readdirSync, readFileSync, rmSync, statSync, writeFileSync } from 'node:fs';
 import os from 'node:os';
@@ -13,13 +16,20 @@ import { fileURLToPath } from 'node:url';
 import { intake, readIntake } from '../../grader/node/intake/intake.js';
 import { brightspaceTime, detectSite, dueTime, groupBySite, lateOf } from '../../grader/node/intake/formats.js';
 import { decodeName, safeSegments } from '../../grader/node/intake/names.js';
+import { IntakeError } from '../../grader/node/intake/zip.js';
+import { feedbackZipPath } from '../../grader/node/feedback/write.js';
+import { findParts } from '../../grader/node/parts.js';
+import { copyHandins } from '../fixtures/handins.js';
 import { makeZip, cp850, tree, entriesOf, idsOf, lastFirst, siteName } from './downloads.js';
 
 const here = path.dirname(fileURLToPath(import.meta.url));
-const HANDINS = process.env.HANDINS_DIR || path.resolve(here, '../../../shared/handins');
-const have = existsSync(path.join(HANDINS, 'labels.tsv'));
-const skip = have ? false : `no hand-ins at ${HANDINS} (set HANDINS_DIR): skipped`;
-const students = have ? readdirSync(HANDINS).filter((n) => statSync(path.join(HANDINS, n)).isDirectory()).sort() : [];
+// the hand-ins the downloads are built from: HANDINS_DIR (the real ones, ../shared/handins) when
+// given, else the fixture hand-ins copied out (their borrowed files put in, as the students had them)
+const fixtureCopy = process.env.HANDINS_DIR ? null : mkdtempSync(path.join(os.tmpdir(), 'intake-handins-'));
+if (fixtureCopy) copyHandins(fixtureCopy);
+after(() => fixtureCopy && rmSync(fixtureCopy, { recursive: true, force: true }));
+const HANDINS = process.env.HANDINS_DIR || fixtureCopy;
+const students = readdirSync(HANDINS).filter((n) => statSync(path.join(HANDINS, n)).isDirectory()).sort();
 const rubric = JSON.parse(readFileSync(path.join(here, '../../grader/core/rubric.json'), 'utf8'));
 // small bounds, so that the bomb is small to build: 8 MB unpacked, 500 files, zips 3 deep
 const BOUNDS = { ...rubric.unpack, maxBytes: 8 << 20, maxFiles: 500 };
@@ -31,6 +41,11 @@ function handinZip(name, k) {
   if (k % 4 === 2) return makeZip([...own, { name: '__MACOSX/._x.html', data: 'junk' }, { name: '.DS_Store', data: 'junk' }, { name: 'Thumbs.db', data: 'junk' }]);
   return makeZip(own);
 }
+
+/** `n` small files, as zip entries. */
+const manyFiles = (n) => Array.from({ length: n }, (_, k) => ({ name: `f/${k}.txt`, data: 'x' }));
+/** A student's zip holding p1/index.html `depth` zips deep (1: in the student's zip itself). */
+const nested = (depth) => (depth === 1 ? makeZip([{ name: 'p1/index.html', data: '<p>' }]) : makeZip([{ name: 'inner.zip', data: nested(depth - 1), store: true }]));
 
 const bomb = () => makeZip([{ name: 'zeros.bin', data: new Uint8Array(40 << 20) }]);
 // each hostile hand-in: [name, zip, what its student must get]
@@ -44,6 +59,12 @@ const HOSTILE = [
   ['Zip Sixtyfour', () => makeZip([{ name: 'p1/index.html', data: '<p>64</p>' }, { name: 'zeros.bin', data: new Uint8Array(40 << 20), declared: 10 }], { zip64: true }), { error: /more than 8 MB/ }],
   ['Deep Path', () => makeZip([{ name: `${'deep/'.repeat(1000)}x.html`, data: '<p>' }]), { error: /could not be written here \(ENAMETOOLONG\)/ }],
   ['Åse Bødker-Ærø', () => makeZip([{ nameBytes: cp850('æble/øl å.html'), data: 'cp850' }, { name: 'utf8/æøå.html', data: 'utf8' }]), { files: ['utf8/æøå.html', 'æble/øl å.html'] }],
+  // unpack.maxFiles: as many files as the bound is a hand-in, one more is not
+  ['Files Enough', () => makeZip(manyFiles(BOUNDS.maxFiles)), { error: null, count: BOUNDS.maxFiles }],
+  ['Files Galore', () => makeZip(manyFiles(BOUNDS.maxFiles + 1)), { error: /more than 500 files \(the rubric's unpack\.maxFiles\)/ }],
+  // unpack.maxDepth: the student's zip is the first level, each zip inside it one more
+  ['Deep Enough', () => nested(BOUNDS.maxDepth), { files: ['p1/index.html'] }],
+  ['Deep Zips', () => nested(BOUNDS.maxDepth + 1), { error: /nested more than 3 deep \(the rubric's unpack\.maxDepth\)/ }],
 ];
 
 /** A download of `site` in `dir`: the real students and the hostile ones, as `site` names them. */
@@ -67,7 +88,7 @@ function buildDownload(site, dir) {
 }
 
 for (const site of ['brightspace', 'canvas', 'moodle']) {
-  test(`a ${site} download: the site said, each real hand-in unpacked file for file, each hostile one its message, nothing outside`, { skip }, () => {
+  test(`a ${site} download: the site said, each real hand-in unpacked file for file, each hostile one its message, nothing outside`, () => {
     const dir = mkdtempSync(path.join(os.tmpdir(), `intake-${site}-`));
     try {
       const { file, all } = buildDownload(site, dir);
@@ -100,6 +121,7 @@ for (const site of ['brightspace', 'canvas', 'moodle']) {
         else assert.equal(sub.error, null, `${name}: ${sub.error}`);
         if (want.note) assert.ok(sub.notes.some((n) => want.note.test(n)), `${name}: ${sub.notes.join(' | ')}`);
         if (want.files) assert.deepEqual(Object.keys(tree(sub.root)).sort(), want.files.sort(), name);
+        if (want.count) assert.equal(Object.keys(tree(sub.root)).length, want.count, name);
       }
       if (site === 'brightspace') {
         const first = find(all[0]);
@@ -119,7 +141,7 @@ for (const site of ['brightspace', 'canvas', 'moodle']) {
   });
 }
 
-test('the download unpacked by the teacher (a folder) is read as the zip is', { skip }, () => {
+test('the download unpacked by the teacher (a folder) is read as the zip is', () => {
   const dir = mkdtempSync(path.join(os.tmpdir(), 'intake-folder-'));
   try {
     // Brightspace's folders, unpacked into "Assignment 4 Download ..." with the hand-ins loose
@@ -142,7 +164,7 @@ test('the download unpacked by the teacher (a folder) is read as the zip is', { 
   }
 });
 
-test('a folder a student with no zip is graded where it is, as before', { skip }, () => {
+test('a folder a student with no zip is graded where it is, as before', () => {
   const out = mkdtempSync(path.join(os.tmpdir(), 'intake-plain-'));
   try {
     const got = intake(HANDINS, out, BOUNDS);
@@ -198,4 +220,147 @@ test('the sites\' other shapes: Brightspace\'s and Moodle\'s loose files, Canvas
   const mixed = groupBySite(f('39786-640693 - Aiden Rodriguez - Oct 10, 2025 1022 AM/a.html', 'stray/b.html'));
   assert.equal(mixed.site, 'brightspace');
   assert.deepEqual(mixed.notes, ['left out "stray": not named as brightspace names a hand-in']);
+});
+
+/** The class as the intake found it: each student's name, identity and the parts the grader finds in the hand-in. */
+const classOf = (got) => got.submissions.map((s) => ({ name: s.name, identity: s.identity, earlier: s.earlier, error: s.error, parts: s.error ? null : findParts(s.root) }));
+
+/** Writes `entries` ([{ name, data }]) as files under `dir`, as unpacking their zip would. */
+function writeEntries(dir, entries) {
+  for (const e of entries) {
+    mkdirSync(path.join(dir, path.dirname(e.name)), { recursive: true });
+    writeFileSync(path.join(dir, e.name), e.data);
+  }
+}
+
+/**
+ * `entries` zipped again one folder down, as macOS's Compress makes it: everything under `top`/,
+ * a .DS_Store in it, and __MACOSX/ beside it with a "._" file for each.
+ */
+const macWrapped = (top, entries) => [
+  ...entries.map((e) => ({ ...e, name: `${top}/${e.name}` })),
+  { name: `${top}/.DS_Store`, data: 'junk' },
+  ...entries.map((e) => ({ name: `__MACOSX/${top}/${path.posix.dirname(e.name)}/._${path.posix.basename(e.name)}`, data: 'junk' })),
+];
+
+// the downloads wrapped: a few real students (their own zips, a zip in a zip, loose files), each site's names
+const FEW = students.slice(0, 6);
+/** `site`'s download of FEW as zip entries ('folders': a folder a student, some with their zip, some loose). */
+function fewEntries(site) {
+  const entries = [];
+  for (const [k, n] of FEW.entries()) {
+    const s = { name: `${n} Student`, k };
+    const where = (file) => (site === 'folders' ? `${n}/${file}` : siteName(site, s, file));
+    if (k % 2 && site !== 'canvas') entries.push(...entriesOf(path.join(HANDINS, n), where('')));
+    else entries.push({ name: where('handin.zip'), data: handinZip(n, k) });
+  }
+  if (site === 'brightspace') entries.push({ name: 'index.html', data: '<table>the listing</table>' });
+  return entries;
+}
+
+for (const site of ['brightspace', 'canvas', 'moodle', 'folders']) {
+  test(`a ${site} download zipped again one folder down (with __MACOSX/), as a zip and unpacked, gives the same class as the download`, () => {
+    const dir = mkdtempSync(path.join(os.tmpdir(), `intake-wrapped-${site}-`));
+    try {
+      const entries = fewEntries(site);
+      const top = 'Worksheet 4 Download Oct 11, 2025 803 PM';
+      const inputs = {
+        download: path.join(dir, 'download.zip'),
+        unpacked: path.join(dir, 'unpacked'),
+        'zipped again': path.join(dir, 'again.zip'),
+        'zipped again, unpacked': path.join(dir, 'again'),
+      };
+      writeFileSync(inputs.download, makeZip(entries));
+      writeEntries(inputs.unpacked, entries);
+      writeFileSync(inputs['zipped again'], makeZip(macWrapped(top, entries)));
+      writeEntries(inputs['zipped again, unpacked'], macWrapped(top, entries));
+      const got = {};
+      for (const [how, input] of Object.entries(inputs)) {
+        const out = path.join(dir, `out-${how}`);
+        mkdirSync(out);
+        got[how] = intake(input, out, BOUNDS);
+      }
+      const want = classOf(got.download);
+      assert.equal(got.download.site, site);
+      assert.equal(want.length, FEW.length, want.map((s) => s.name).join(', '));
+      for (const s of want) assert.ok(s.error === null && Object.values(s.parts).some(Boolean), `${s.name}: parts found (${s.error})`);
+      for (const how of ['unpacked', 'zipped again', 'zipped again, unpacked']) {
+        assert.equal(got[how].site, site, how);
+        assert.deepEqual(classOf(got[how]), want, `${how}: the same students, identities and parts`);
+      }
+      for (const how of ['zipped again', 'zipped again, unpacked']) assert.ok(got[how].notes.includes(`looked through "${top}/": one folder around the download`), `${how}: ${got[how].notes.join(' | ')}`);
+    } finally {
+      rmSync(dir, { recursive: true, force: true });
+    }
+  });
+}
+
+test('a folder of mixed junk is refused, as a folder and as a zip, saying what was found and what each site\'s download looks like', () => {
+  const dir = mkdtempSync(path.join(os.tmpdir(), 'intake-junk-'));
+  try {
+    const junk = [
+      { name: 'notes.txt', data: 'remember the milk' }, { name: 'slides.pdf', data: '%PDF' }, { name: 'photo.jpg', data: 'jpeg' },
+      { name: 'old stuff/readme.md', data: '# old' }, { name: 'saved page/index.html', data: '<p>a web page</p>' }, { name: 'misc/data.csv', data: 'a,b' },
+      { name: '.DS_Store', data: 'junk' }, { name: '__MACOSX/._notes.txt', data: 'junk' },
+    ];
+    writeEntries(path.join(dir, 'junk'), junk);
+    writeFileSync(path.join(dir, 'junk.zip'), makeZip(junk));
+    writeFileSync(path.join(dir, 'junk-again.zip'), makeZip(macWrapped('Stuff', junk)));
+    for (const input of ['junk', 'junk.zip', 'junk-again.zip']) {
+      const out = path.join(dir, `out-${input}`);
+      mkdirSync(out);
+      assert.throws(() => intake(path.join(dir, input), out, BOUNDS), (err) => {
+        assert.ok(err instanceof IntakeError, String(err));
+        if (input !== 'junk-again.zip') assert.match(err.message, /holds 3 folder\(s\) \("misc", "old stuff", "saved page"\) and 3 file\(s\) \("notes\.txt", "photo\.jpg", "slides\.pdf"\): no folder holding a zip or a page named as a part/, input);
+        for (const site of [/Brightspace .*"<submission id>-<user id> - <name> - <date time>"/, /Canvas .*"<lastfirst>_<user id>_<file id>_<name>"/, /Moodle .*"<Full Name>_<participant id>_assignsubmission_file"/, /a folder a student/]) assert.match(err.message, site, input);
+        return true;
+      }, input);
+      assert.ok(!existsSync(path.join(out, 'handins')) && !existsSync(path.join(out, 'intake.json')), `${input}: nothing taken in`);
+    }
+  } finally {
+    rmSync(dir, { recursive: true, force: true });
+  }
+});
+
+test('a download is never one student: a folder holding a site\'s download beside others, and one student\'s hand-in given as a class, are refused', () => {
+  const dir = mkdtempSync(path.join(os.tmpdir(), 'intake-never-one-'));
+  try {
+    writeEntries(path.join(dir, 'two', 'Section A'), fewEntries('brightspace'));
+    writeEntries(path.join(dir, 'two', 'anna'), entriesOf(path.join(HANDINS, FEW[0])));
+    const out = path.join(dir, 'out');
+    mkdirSync(out);
+    assert.throws(() => intake(path.join(dir, 'two'), out, BOUNDS), /"Section A", each a course site's download, beside other folders: a download is never one student/);
+    // one student's hand-in (its pages named as parts at the top) is not a class of p1, p2, ...
+    writeEntries(path.join(dir, 'one'), [1, 2, 3].map((n) => ({ name: `p${n}/index.html`, data: '<p>' })));
+    assert.throws(() => intake(path.join(dir, 'one'), out, BOUNDS), /holds 3 folder\(s\) \("p1", "p2", "p3"\): folders or pages named as parts at the top: one student's hand-in, not a class/);
+    // and a class of one is that one student, not the folders of their hand-in
+    writeEntries(path.join(dir, 'class of one', 'anna'), [{ name: 'week4/p1.html', data: '<p>' }, { name: 'common/MV.js', data: '' }]);
+    assert.deepEqual(intake(path.join(dir, 'class of one'), out, BOUNDS).submissions.map((s) => s.name), ['anna']);
+  } finally {
+    rmSync(dir, { recursive: true, force: true });
+  }
+});
+
+test('Moodle\'s feedback zip: each page in the folder the download gave the student, as "download as folders" or loose files', () => {
+  const dir = mkdtempSync(path.join(os.tmpdir(), 'intake-moodle-feedback-'));
+  try {
+    const s = (k) => ({ name: `${FEW[k]} Student`, k });
+    const folders = fewEntries('moodle');
+    // Moodle without "download as folders": "<Full Name>_<participant id>_assignsubmission_file_<file>"
+    const loose = [{ name: `${s(0).name}_${idsOf(0).uid}_assignsubmission_file_handin.zip`, data: handinZip(FEW[0], 0) }];
+    for (const [how, entries] of [['folders', folders], ['loose', loose]]) {
+      const input = path.join(dir, `${how}.zip`), out = path.join(dir, `out-${how}`);
+      writeFileSync(input, makeZip(entries));
+      mkdirSync(out);
+      const got = intake(input, out, BOUNDS);
+      assert.equal(got.site, 'moodle');
+      // mod/assign/feedback/file/importziplib.php reads the participant from the folder's name
+      for (const sub of got.submissions) {
+        const k = FEW.indexOf(sub.identity.name.replace(/ Student$/, ''));
+        assert.equal(feedbackZipPath(sub, 'moodle'), `${s(k).name}_${idsOf(k).uid}_assignsubmission_file/feedback.html`, `${how}: ${sub.name}`);
+      }
+    }
+  } finally {
+    rmSync(dir, { recursive: true, force: true });
+  }
 });

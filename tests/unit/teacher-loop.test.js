@@ -14,8 +14,8 @@ import { readClass } from '../../grader/node/class-results.js';
 import { prepareClass, writeTeacherFiles } from '../../grader/node/teacher-loop.js';
 import { writeReport } from '../../grader/node/report.js';
 import { parseOverrides } from '../../grader/node/overrides.js';
-import { csvCell, studentPoints } from '../../grader/node/grades-export.js';
-import { parseTable } from '../../grader/node/roster.js';
+import { studentPoints } from '../../grader/node/grades-export.js';
+import { readTable } from '../../grader/node/csv.js';
 import { zipEntries, entryData } from '../../grader/node/intake/zip.js';
 import { PARTS } from '../../grader/node/parts.js';
 import { agreement } from '../../grader/node/labels.js';
@@ -59,7 +59,7 @@ after(() => rmSync(out, { recursive: true, force: true }));
 
 test('Brightspace grade import: OrgDefinedId with "#" (leading zeros kept), "<item> Points Grade", End-of-Line Indicator "#"', () => {
   const { rows } = runReport();
-  const table = parseTable(readFileSync(path.join(out, 'grades-brightspace.csv'), 'utf8'));
+  const table = readTable(readFileSync(path.join(out, 'grades-brightspace.csv'), 'utf8'));
   assert.deepEqual(table[0], ['OrgDefinedId', 'Worksheet 4 Points Grade', 'End-of-Line Indicator']);
   assert.equal(table.length, 1 + NAMES.length - 1, 'gus has parts not graded here: left out, never a 0');
   for (const n of NAMES.filter((x) => x !== 'gus')) {
@@ -73,7 +73,7 @@ test('Brightspace grade import: OrgDefinedId with "#" (leading zeros kept), "<it
   const html = readFileSync(path.join(out, 'report.html'), 'utf8');
   assert.match(html, /user id 640601 · submission 39701 · OrgDefinedId 00012345 · handed in 2025-10-10 10:22/, 'the report says who a hand-in is');
   assert.match(html, /Handed in earlier \(the latest is graded\):<\/p><ul class="earlier"><li>2025-10-09 21:58, submission 39650/, 'and the earlier hand-in with its time');
-  const points = parseTable(readFileSync(path.join(out, 'grades-points.csv'), 'utf8'));
+  const points = readTable(readFileSync(path.join(out, 'grades-points.csv'), 'utf8'));
   assert.deepEqual(points[0].slice(0, 6), ['name', 'site', 'user id', 'submission id', 'time', 'late']);
   assert.equal(points.find((r) => r[0] === 'gus')[PARTS.length + 6], '', 'no total with a part not graded');
 });
@@ -83,7 +83,7 @@ test('an override changes the grade file, the report and the feedback page, with
   const cy = before.rows.find((s) => s.name === 'cy');
   const graderSaid = cy.parts.find((p) => p.part === 'WP04P2').verdict;
   assert.notEqual(graderSaid, 'pass');
-  const total = () => Number(parseTable(readFileSync(path.join(out, 'grades-brightspace.csv'), 'utf8')).find((r) => r[0] === '#0099')[1]);
+  const total = () => Number(readTable(readFileSync(path.join(out, 'grades-brightspace.csv'), 'utf8')).find((r) => r[0] === '#0099')[1]);
   const was = total();
   writeFileSync(path.join(out, 'overrides.tsv'), 'student\tpart\tverdict\tnote\nCy Twombly\tWP04P2\tpass\tThe back faces are hidden in your own view: fine.\n');
   try {
@@ -96,7 +96,7 @@ test('an override changes the grade file, the report and the feedback page, with
     const page = readFileSync(path.join(out, 'feedback', 'cy.html'), 'utf8');
     assert.match(page, new RegExp(`Your teacher set this verdict \\(the grader said ${graderSaid}\\)\\. The back faces are hidden in your own view: fine\\.`));
     assert.match(page, /data-part="WP04P2" data-verdict="pass"/);
-    const points = parseTable(readFileSync(path.join(out, 'grades-points.csv'), 'utf8'));
+    const points = readTable(readFileSync(path.join(out, 'grades-points.csv'), 'utf8'));
     assert.equal(points.find((r) => r[0] === 'cy').at(-1), 'WP04P2', 'grades-points.csv says the teacher set it');
     const labelled = agreement([{ submission: 'cy', part: 'WP04P2', label: 'partial', reasons: '', unsure: false }], readClassWithLoop());
     assert.equal(labelled.agree, graderSaid === 'review' ? 1 : 0, 'a teacher\'s labels are held to the grader\'s verdict, not the override');
@@ -155,22 +155,20 @@ test('Canvas and Moodle import files have their documented columns', async () =>
   const { canvasCsv, moodleCsv } = await import('../../grader/node/grades-export.js');
   const { rows } = runReport();
   const ids = (n, extra) => ({ ...rows.find((s) => s.name === n), identity: { name: WHO[n].name, userId: WHO[n].userId, ...extra } });
-  const canvas = parseTable(canvasCsv([ids('ada', { sisUserId: 's012', sisLoginId: 'ada1', section: 'A' })], rubric.points).text);
+  const canvas = readTable(canvasCsv([ids('ada', { sisUserId: 's012', sisLoginId: 'ada1', section: 'A' })], rubric.points).text);
   assert.deepEqual(canvas[0], ['Student', 'ID', 'SIS User ID', 'SIS Login ID', 'Section', 'Worksheet 4']);
   assert.deepEqual(canvas[1].slice(0, 5), ['Ada Lovelace', '640601', 's012', 'ada1', 'A']);
-  const moodle = parseTable(moodleCsv([ids('cy', { idNumber: '007', email: 'cy@example.edu' })], rubric.points).text);
+  const moodle = readTable(moodleCsv([ids('cy', { idNumber: '007', email: 'cy@example.edu' })], rubric.points).text);
   assert.deepEqual(moodle[0], ['Full name', 'ID number', 'Email address', 'Worksheet 4', 'Feedback']);
   assert.deepEqual(moodle[1].slice(0, 3), ['Cy Twombly', '007', 'cy@example.edu']);
   assert.match(moodle[1][4], /^WP04P1 \w+; WP04P2/);
 });
 
-test('overrides.tsv: bad lines are named; CSV cells are quoted; points follow the rubric', () => {
+test('overrides.tsv: bad lines are named; points follow the rubric', () => {
   assert.throws(() => parseOverrides('student\tpart\tverdict\nada\tWP04P9\tpass\n'), /line 2: part "WP04P9"/);
   assert.throws(() => parseOverrides('student\tpart\tverdict\nada\tWP04P1\tgood\n'), /line 2: verdict "good"/);
   assert.throws(() => parseOverrides('who\tpart\n'), /must name the columns/);
   assert.deepEqual(parseOverrides('# teacher\nstudent\tpart\tverdict\tnote\nada\twp04p1\tpartial\tsee me\n'), [{ student: 'ada', part: 'WP04P1', verdict: 'review', note: 'see me', line: 3 }]);
-  assert.equal(csvCell('a,"b"'), '"a,""b"""');
-  assert.equal(csvCell('007'), '007');
   const s = { parts: PARTS.map((part, k) => ({ part, verdict: ['pass', 'review', 'fail', 'pass', 'review'][k] })) };
   assert.equal(studentPoints(s, { ...rubric.points, weights: { ...rubric.points.weights, WP04P5: 2 } }).total, 1 + 0.5 + 0 + 1 + 2 * 0.5);
 });

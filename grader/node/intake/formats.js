@@ -99,14 +99,13 @@ export function detectSite(tops) {
 }
 
 /**
- * The download's hand-ins: `files` ([{ segments, ... }], paths in the download) grouped by student.
+ * The download's hand-ins: `files` ([{ segments, ... }], paths in the download) grouped by student;
+ * `site`: the download's site, as detectSite tells it from the names at the top when not given.
  * Returns { site, students: [{ identity, files (segments relative to the hand-in), earlier }], notes }.
  * A student with several hand-ins (Brightspace keeps each one) is graded on the latest; the
  * earlier ones are listed with their times.
  */
-export function groupBySite(files) {
-  const tops = [...new Map(files.map((f) => [f.segments[0], { top: f.segments[0], isFile: f.segments.length === 1 }])).values()].filter((t) => !t.top.startsWith('.'));
-  const site = detectSite(tops);
+export function groupBySite(files, site = detectSite([...new Map(files.map((f) => [f.segments[0], { top: f.segments[0], isFile: f.segments.length === 1 }])).values()].filter((t) => !t.top.startsWith('.')))) {
   const notes = [];
   const byUser = new Map();
   for (const f of files) {

@@ -1,5 +1,6 @@
 // npm run grade -- --batch <download>: a course site's download (its .zip, or the folder it was
-// unpacked into) turned into one folder a student, each with the identity the site gave it.
+// unpacked into, either one inside a folder around it: wrapping.js) turned into one folder a
+// student, each with the identity the site gave it.
 // A folder a student with no zip in it is graded where it is, as before; everything else is
 // unpacked (safely, bounded: unpack.js) into OUT/handins/<student>/. What was found is written
 // to OUT/intake.json, which every later run of the report (--report-only, --audit-only) reads.
@@ -7,7 +8,8 @@ import { existsSync, lstatSync, readFileSync, readdirSync, rmSync, writeFileSync
 import path from 'node:path';
 import { IntakeError, TooBig, entryData, zipEntries } from './zip.js';
 import { isJunk, safeSegments } from './names.js';
-import { groupBySite, detectSite, lateOf, SITES } from './formats.js';
+import { groupBySite, lateOf, SITES } from './formats.js';
+import { findLayout } from './wrapping.js';
 import { unpackHandin } from './unpack.js';
 import { safeName } from '../layout.js';
 
@@ -51,15 +53,6 @@ function folderFiles(root) {
   return { files, notes };
 }
 
-/** A download wrapped in one folder (unpacked into "Assignment 1 Download ..."): its inside, when that is a site's. */
-function unwrap(files) {
-  const tops = new Set(files.map((f) => f.segments[0]));
-  if (tops.size !== 1 || files.some((f) => f.segments.length < 3)) return files;
-  const inner = files.map((f) => ({ ...f, segments: f.segments.slice(1) }));
-  const innerTops = [...new Map(inner.map((f) => [f.segments[0], { top: f.segments[0], isFile: f.segments.length === 1 }])).values()];
-  return detectSite(innerTops) === 'folders' ? files : inner;
-}
-
 /**
  * Reads the download `input` (a .zip or a folder) into one folder a student under `out`/handins.
  * `bounds`: the rubric's unpack; `due`: the due date (dueTime's form) that makes a timed hand-in
@@ -76,7 +69,9 @@ export function intake(input, out, bounds, due = null) {
     if (err instanceof IntakeError) throw new IntakeError(`${input} could not be read as a download: ${err.message}`);
     throw err;
   }
-  const { site, students, notes } = groupBySite(unwrap(listing.files));
+  // the site's own layout, looked for through any folder around it (wrapping.js)
+  const layout = findLayout(listing.files, input);
+  const { site, students, notes } = groupBySite(layout.files, layout.site);
   for (const s of students) {
     s.identity.late = lateOf(s.identity, due);
     for (const e of s.earlier) e.late = lateOf(e, due);
@@ -95,7 +90,7 @@ export function intake(input, out, bounds, due = null) {
     const sub = { name, identity: s.identity, earlier: s.earlier, notes: [], error: null };
     if (site === 'folders' && !isZipFile && !s.files.some((f) => /\.zip$/i.test(f.segments[f.segments.length - 1]))) {
       // as before: a plain folder is graded where it lies
-      return { ...sub, root: path.resolve(input, s.identity.source[0].replace(/\/$/, '')) };
+      return { ...sub, root: path.resolve(input, ...layout.prefix, s.identity.source[0].replace(/\/$/, '')) };
     }
     sub.root = path.join(handins, safeName(name));
     try {
@@ -109,7 +104,7 @@ export function intake(input, out, bounds, due = null) {
     }
     return sub;
   });
-  const result = { site, found: SITES[site], input: path.resolve(input), due, submissions, notes: [...listing.notes, ...notes], seconds: (Date.now() - t0) / 1000 };
+  const result = { site, found: SITES[site], input: path.resolve(input), due, submissions, notes: [...listing.notes, ...layout.notes, ...notes], seconds: (Date.now() - t0) / 1000 };
   writeFileSync(path.join(out, INTAKE_FILE), JSON.stringify(result, null, 1));
   return result;
 }
