@@ -50,8 +50,10 @@ fail) with reasons, from what the slide's step asks for. Our reference part is d
   --out DIR         where report.html, report.json (and grades.csv in batch mode) go
                     (default out/grade/<name>)
   --shard I/N       grade only the I-th of N shares of the parts (Playwright's sharding), to split a
-                    class across machines; gather the out folders and run --report-only on them
-  --report-only     rebuild the report from the parts already graded in --out
+                    class across machines: copy each machine's OUT/parts/ and OUT/artifacts/ into
+                    one OUT, and run --batch <the download> --report-only --out OUT on it
+  --report-only     rebuild the report, grade files and feedback from the parts already graded in
+                    --out (with --batch: the download's identities and similarity taken in again)
   --audit-only OUT  judge the parts graded in OUT again from their saved artifacts (OUT/artifacts/), with
                     the rubric given (--rubric) and no browser, in seconds; rewrites OUT's results and
                     report (with --labels, the agreement too). A part whose gathering read a key that
@@ -281,9 +283,14 @@ async function reportClass(o, out, rubric, labels, submissions) {
     fail(err.message, 2);
   }
   const { rows, agreed } = writeReport(out, graded, labels, similar);
-  if (o.batch) {
+  // a class (its intake.json: taken in by --batch, here or on the machine of each shard) gets its
+  // grades.csv from every part in parts/, --report-only too, so none is left from one shard or
+  // from before an override
+  const aClass = o.batch || existsSync(path.join(out, 'intake.json'));
+  if (aClass) {
     writeFileSync(path.join(out, 'grades.csv'), gradesCsv(rows, PARTS));
   }
+  if (aClass && !o.batch) console.log('grade: the similarity compares the hand-ins themselves: give --batch with the download as well to have it in the report');
   for (const s of rows) {
     console.log(`${s.name}: ${s.passes} of ${PARTS.length} pass · ` + s.parts.map((p) => `${p.part} ${p.verdict}${p.api ? ` (${p.api})` : ''}`).join(', '));
   }
