@@ -1,5 +1,5 @@
-// What the command-line tools share: node:util parseArgs with --help, and one kind of error for
-// bad usage, which each command reports with its help text and exit code 2.
+// What the command-line tools share: node:util parseArgs with --help, one kind of error for bad
+// usage, which each command reports with its help text and exit code 2, and the progress line.
 import { realpathSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
 import { parseArgs } from 'node:util';
@@ -41,25 +41,8 @@ export function wholeNumber(text, label, min, max) {
   return n;
 }
 
-/**
- * A progress line for a long run, on stderr: rewritten in place on a terminal, and in a log file
- * a line every 2 s at most. `progress(text)` shows it; `progress.last` is the last text shown.
- * @param {string} name the command's name, e.g. "bench"
- */
-export function progressLine(name) {
-  let printed = 0;
-  const progress = (text) => {
-    progress.last = text;
-    if (process.stderr.isTTY) {
-      process.stderr.write(`\r[${name}] ${text}`.padEnd(80));
-    } else if (Date.now() - printed > 2000) {
-      printed = Date.now();
-      process.stderr.write(`[${name}] ${text}\n`);
-    }
-  };
-  progress.last = '';
-  return progress;
-}
+// (the progress line lives beside the grader's, which uses it too)
+export { progressLine } from '../grader/node/progress-line.js';
 
 /** Whether the module at `moduleUrl` (its import.meta.url) is the script node was started with; importing it, as a test does, runs nothing. */
 export function isMainScript(moduleUrl) {

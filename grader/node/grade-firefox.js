@@ -10,6 +10,7 @@ import { launchFirefox } from './firefox.js';
 import { firefoxOpener } from './firefox-page.js';
 import { runPart } from './run-part.js';
 import { browserLabel } from './browser-version.js';
+import { verdictOfPart } from './progress.js';
 
 // nothing leaves the page but through the grader's serving (firefox-page.js): a request it does not
 // see (a popup's, a worker's) goes to a proxy that is not there; and no favicon is asked for (Chromium's
@@ -26,10 +27,11 @@ export const NO_NETWORK = {
 const sleep = (ms) => new Promise((resolve) => setTimeout(resolve, ms));
 
 /**
- * Grades `plan`'s items with `workers` Firefoxes at once. `say(line)` hears each part as it ends.
+ * Grades `plan`'s items with `workers` Firefoxes at once. `progress` (progress.js's
+ * gradingProgress) hears each part as it ends; without it, `say(line)` hears a line a part.
  * Returns { graded, timedOut }.
  */
-export async function gradeInFirefox(plan, { workers = 2, say = console.log } = {}) {
+export async function gradeInFirefox(plan, { workers = 2, say = console.log, progress = null } = {}) {
   const queue = [...plan.items];
   const total = queue.length;
   let graded = 0, timedOut = 0;
@@ -69,22 +71,25 @@ export async function gradeInFirefox(plan, { workers = 2, say = console.log } = 
           await end(); // a page that never lets go takes its Firefox with it
         } else if (how !== 'done') {
           // the grader's own trouble outside the part (the browser went away): the part stays a timeout
-          say(`  ✘ [${graded}/${total}] ${item.name} ${item.part}: ${how.message.split('\n')[0]}`);
+          const trouble = `the grader's own trouble: ${how.message.split('\n')[0]}`;
+          if (progress) progress.ended(item, { verdict: 'timeout', trouble });
+          else say(`  ✘ [${graded}/${total}] ${item.name} ${item.part}: ${trouble}`);
           await end();
           continue;
         }
-        let verdict = '';
-        try {
-          const r = JSON.parse(readFileSync(item.resultFile, 'utf8'));
-          verdict = r.status === 'missing' ? 'not handed in' : r.verdict;
-        } catch { /* (no result written) */ }
-        say(`  ${how === 'timeout' ? '✘' : '✓'} [${graded}/${total}] ${item.name} ${item.part} (${seconds} s) ${how === 'timeout' ? 'timeout' : verdict}`);
+        const verdict = verdictOfPart(item);
+        if (progress) progress.ended(item, { verdict });
+        else say(`  ${how === 'timeout' ? '✘' : '✓'} [${graded}/${total}] ${item.name} ${item.part} (${seconds} s) ${verdict}`);
       }
     } finally {
       await end();
     }
   };
-  await Promise.all(Array.from({ length: Math.max(1, Math.min(workers, total)) }, worker));
+  try {
+    await Promise.all(Array.from({ length: Math.max(1, Math.min(workers, total)) }, worker));
+  } finally {
+    progress?.finish();
+  }
   return { graded, timedOut };
 }
 

@@ -16,6 +16,7 @@ import { CHROMIUM, CHROMIUM_HOW, CHROMIUM_INSTALL, CHROMIUM_MISSING } from './ch
 import { FIREFOX, FIREFOX_INSTALL, FIREFOX_MISSING } from './firefox.js';
 import { versionOfExecutable, nameOfVersionLine } from './browser-version.js';
 import { gradeInFirefox } from './grade-firefox.js';
+import { gradingProgress } from './progress.js';
 import { auditAgain, regatherLines } from './audit-only.js';
 import { takeIn } from './intake/batch.js';
 import { dueTime } from './intake/formats.js';
@@ -50,8 +51,10 @@ fail) with reasons, from what the slide's step asks for. Our reference part is d
   --out DIR         where report.html, report.json (and grades.csv in batch mode) go
                     (default out/grade/<name>)
   --shard I/N       grade only the I-th of N shares of the parts (Playwright's sharding), to split a
-                    class across machines; gather the out folders and run --report-only on them
-  --report-only     rebuild the report from the parts already graded in --out
+                    class across machines: copy each machine's OUT/parts/ and OUT/artifacts/ into
+                    one OUT, and run --batch <the download> --report-only --out OUT on it
+  --report-only     rebuild the report, grade files and feedback from the parts already graded in
+                    --out (with --batch: the download's identities and similarity taken in again)
   --audit-only OUT  judge the parts graded in OUT again from their saved artifacts (OUT/artifacts/), with
                     the rubric given (--rubric) and no browser, in seconds; rewrites OUT's results and
                     report (with --labels, the agreement too). A part whose gathering read a key that
@@ -60,6 +63,10 @@ fail) with reasons, from what the slide's step asks for. Our reference part is d
                     gathered under the old value
   --regather-changed  with --audit-only: gathers those parts again in the browser, under that rubric
   --workers N       parts graded at once (default 2)
+  --verbose         a line a part as it ends (Playwright's own list; in Firefox the part's time and
+                    verdict) in place of the progress line (parts and hand-ins done of all, the time
+                    so far and about how long is left: rewritten in place on a terminal, a plain
+                    line a part in a log)
   --labels FILE     your own labels (TSV: submission, part, label = correct | partial | broken, reasons):
                     the report and stdout add the agreement per part, a label × verdict table and
                     every disagreement with both sides' reasons (correct → pass, partial → review,
@@ -119,6 +126,7 @@ function parseArgs(argv) {
       if (!BROWSERS.includes(o.browser)) fail(`--browser takes ${BROWSERS.join(' or ')}, not "${o.browser}"\n\n${HELP}`, 2);
     }
     else if (a === '--report-only') o.reportOnly = true;
+    else if (a === '--verbose') o.verbose = true;
     else if (a === '--audit-only') o.auditOnly = next();
     else if (a === '--regather-changed') o.regatherChanged = true;
     else if (a === '--similarity-only') o.similarityOnly = true;
@@ -241,7 +249,8 @@ async function runPlan(o, out, rubric, items, planFile) {
     const [i, n] = (o.shard || '1/1').split('/').map(Number);
     if (!(n >= 1 && i >= 1 && i <= n)) fail(`--shard takes I/N with 1 ≤ I ≤ N\n\n${HELP}`, 2);
     try {
-      await gradeInFirefox({ ...plan, items: items.filter((_, k) => k % n === i - 1) }, { workers: Number(o.workers || 2) });
+      const share = items.filter((_, k) => k % n === i - 1);
+      await gradeInFirefox({ ...plan, items: share }, { workers: Number(o.workers || 2), progress: o.verbose ? null : gradingProgress(share) });
     } catch (err) {
       fail(`could not grade in Firefox: ${err.message.split('\n')[0]}`);
     }
@@ -250,7 +259,7 @@ async function runPlan(o, out, rubric, items, planFile) {
     if (o.shard) args.push('--shard', o.shard);
     rmSync(path.join(out, 'blob-report'), { recursive: true, force: true });
     const run = spawnSync(process.execPath, [path.join(repo, 'node_modules/@playwright/test/cli.js'), ...args], {
-      cwd: here, stdio: 'inherit', env: { ...process.env, GRADE_PLAN: planFile, GRADE_WORKERS: o.workers || '2' },
+      cwd: here, stdio: 'inherit', env: { ...process.env, GRADE_PLAN: planFile, GRADE_WORKERS: o.workers || '2', ...(o.verbose ? { GRADE_VERBOSE: '1' } : {}) },
     });
     if (run.error) fail(`could not start Playwright: ${run.error.message}`);
   }
@@ -275,9 +284,14 @@ async function reportClass(o, out, rubric, labels, submissions) {
     fail(err.message, 2);
   }
   const { rows, agreed } = writeReport(out, graded, labels, similar);
-  if (o.batch) {
+  // a class (its intake.json: taken in by --batch, here or on the machine of each shard) gets its
+  // grades.csv from every part in parts/, --report-only too, so none is left from one shard or
+  // from before an override
+  const aClass = o.batch || existsSync(path.join(out, 'intake.json'));
+  if (aClass) {
     writeFileSync(path.join(out, 'grades.csv'), gradesCsv(rows, PARTS));
   }
+  if (aClass && !o.batch) console.log('grade: the similarity compares the hand-ins themselves: give --batch with the download as well to have it in the report');
   for (const s of rows) {
     console.log(`${s.name}: ${s.passes} of ${PARTS.length} pass · ` + s.parts.map((p) => `${p.part} ${p.verdict}${p.api ? ` (${p.api})` : ''}`).join(', '));
   }

@@ -1,5 +1,6 @@
 // The grader's own Playwright Test run: one test per part (grader/node/harness.js), its workers,
-// its --shard for splitting a class over machines, its reporters (blob for merge-reports, list).
+// its --shard for splitting a class over machines, its reporters: blob (for merge-reports) and the
+// progress line of progress-reporter.js, or Playwright's own list under --verbose (GRADE_VERBOSE).
 // Chromium gets a SwiftShader WebGPU adapter too: hand-ins come in both APIs. The browser is the
 // one grade.js found (the plan's browserPath: grader/node/find-browser.js).
 import { defineConfig } from '@playwright/test';
@@ -15,7 +16,7 @@ export default defineConfig({
   fullyParallel: true,
   retries: 0,
   outputDir: `${plan.out}/test-results`,
-  reporter: [['list'], ['blob', { outputDir: `${plan.out}/blob-report` }]],
+  reporter: [process.env.GRADE_VERBOSE ? ['list'] : ['./progress-reporter.js', { plan: process.env.GRADE_PLAN }], ['blob', { outputDir: `${plan.out}/blob-report` }]],
   use: {
     deviceScaleFactor: 1,
     viewport: { width: 900, height: 900 },

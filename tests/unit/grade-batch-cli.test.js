@@ -1,7 +1,7 @@
 // npm run grade's teacher's loop end to end, with no browser: a Canvas download whose every hand-in
 // is hostile (a zip bomb, a corrupt zip) is taken in, said, each student failed with the message,
 // and the report, grade files and feedback written; --report-only applies an override from
-// OUT/overrides.tsv; a bad overrides line is bad usage (exit 2); --help still answers.
+// OUT/overrides.tsv (grades.csv too); a bad overrides line is bad usage (exit 2); --help still answers.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { spawnSync } from 'node:child_process';
@@ -60,6 +60,8 @@ test('a download of hostile hand-ins only: each student told why, every part fai
     const line = readTable(readFileSync(path.join(out, 'grades-canvas.csv'), 'utf8')).find((l) => l[1] === '000123');
     assert.deepEqual([line[2], line[5]], ['s0099', '0.5'], 'the roster kept in OUT from the first run; the override counted');
     assert.match(readFileSync(path.join(out, 'feedback', 'aerosoeren.html'), 'utf8'), /Your teacher set this verdict \(the grader said fail\)\. Send me the zip again by mail\./);
+    const grades = parseTable(readFileSync(path.join(out, 'grades.csv'), 'utf8'));
+    assert.equal(grades.find((l) => l[0] === 'aerosoeren')[grades[0].indexOf('WP04P1')], 'review', 'grades.csv written again by --report-only, never left from before');
 
     writeFileSync(path.join(out, 'overrides.tsv'), 'student\tpart\tverdict\n000123\tWP04P7\tpass\n');
     const bad = run(['--report-only', '--out', out]);
