@@ -60,7 +60,7 @@ test('a download of hostile hand-ins only: each student told why, every part fai
     const line = readTable(readFileSync(path.join(out, 'grades-canvas.csv'), 'utf8')).find((l) => l[1] === '000123');
     assert.deepEqual([line[2], line[5]], ['s0099', '0.5'], 'the roster kept in OUT from the first run; the override counted');
     assert.match(readFileSync(path.join(out, 'feedback', 'aerosoeren.html'), 'utf8'), /Your teacher set this verdict \(the grader said fail\)\. Send me the zip again by mail\./);
-    const grades = parseTable(readFileSync(path.join(out, 'grades.csv'), 'utf8'));
+    const grades = readTable(readFileSync(path.join(out, 'grades.csv'), 'utf8'));
     assert.equal(grades.find((l) => l[0] === 'aerosoeren')[grades[0].indexOf('WP04P1')], 'review', 'grades.csv written again by --report-only, never left from before');
 
     writeFileSync(path.join(out, 'overrides.tsv'), 'student\tpart\tverdict\n000123\tWP04P7\tpass\n');

@@ -146,6 +146,7 @@ const ALLOWED = {
 const DEFAULTS_ALLOWED = {
   'browser/mesh.js': [60000, 65536],
   'node/browser-version.js': [5000],
+  'node/progress-line.js': [2000], // how often a log (not a terminal) gets a progress line
   '../check/host.js': [500, 5000],
   '../check/sw.js': [15000],
 };
