@@ -1,4 +1,4 @@
-// Issue 37, point 6: a part's page that is only a link to another part's page is graded once, as
+// A part's page that is only a link to another part's page is graded once, as
 // the part it links to; the linking part says so. Read from the page's HTML, with POSIX and Windows paths.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';

@@ -1,4 +1,4 @@
-// Issue 37, point 9: a normal colouring added to the lighting (0.5·p + 0.5·L_o) is read as lighting
+// A normal colouring added to the lighting (0.5·p + 0.5·L_o) is read as lighting
 // with WP04P1's colours mixed in, not as WP04P1's colours, and its light is fitted with them taken
 // out; the P1 colour alone, the P1 colour as the material and a plain material are not read so.
 import { test } from 'node:test';

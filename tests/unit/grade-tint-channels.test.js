@@ -1,4 +1,4 @@
-// Issue 30's gathering rules without a browser: the sliders of one parameter (ks r, g, b; a colour
+// Gathering rules without a browser: the sliders of one parameter (ks r, g, b; a colour
 // picker) found as one; a picture tinted by the normal colour told from one whose hue changes with
 // the lighting only, and fitted with the tint divided out; a washed-out picture's white share.
 import { test } from 'node:test';

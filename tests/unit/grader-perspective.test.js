@@ -1,4 +1,4 @@
-// WP04P1/P2 read from the normals the colours show (issue 30): "in perspective view" by how far
+// WP04P1/P2 read from the normals the colours show: "in perspective view" by how far
 // they reach at the rim, the slide's clockwise experiment as a note, and WP04P1's colours in a lit
 // step not taken for lighting. On pictures rendered here, exactly, with no browser.
 import { test } from 'node:test';

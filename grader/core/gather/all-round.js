@@ -1,4 +1,4 @@
-// A sphere closed from every side (issue 37, point 3). Where the page's mesh can be read, the
+// A sphere closed from every side. Where the page's mesh can be read, the
 // geometry audits know every side exactly (open edges, winding). Where it cannot (positions made in
 // a shader), the orbit is run on and the outline read at counted positions until the camera has
 // turned all the way round (the view matrix the page sends; where it sends none, roundSamples
