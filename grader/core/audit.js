@@ -8,6 +8,7 @@ import { analyse } from './measure.js';
 import { checkList, NOT_GRADED, tooSlowWords, tooHeavyWords } from './verdict.js';
 import { litView } from './computed/views.js';
 import { sphereView, shadingOf, viewFits } from './computed/evidence.js';
+import { exactLighting } from './computed/lighting.js';
 import { auditFirstFrame, notGradedHere, STOP } from './audits/first-frame.js';
 import { auditMeta } from './audits/index.js';
 import { tooSlow } from './audits/page.js';
@@ -18,6 +19,7 @@ import { auditDiffuse, auditPointLight, auditUnclipped, auditBrightened } from '
 import { auditOrbitStopsAgain, auditOrbit, auditNotStopped } from './audits/orbit.js';
 import { auditHighlight, auditPlaceFarther } from './audits/highlight.js';
 import { auditSliders } from './audits/sliders.js';
+import { auditSurfaceFit } from './audits/surface.js';
 import { auditLeastShininess, auditPerFragment } from './audits/shading.js';
 import { auditWinding, auditClosed, auditAllRound, auditPerFace, auditGrowth, auditLoopsMultiply, auditPictureNotGeometry } from './audits/geometry.js';
 
@@ -79,7 +81,12 @@ export function auditPart({ facts, images }, rubric) {
   auditDepthCulling(C);
   auditWinding(C);
   // a lit step that shows WP04P1's colours has no shading to judge: its colours are not lighting
-  const shaded = (must.has('diffuse') || must.has('highlight')) && !auditNormalsNotLight(C, judged);
+  // the lighting fitted on the page's own surface (its normals and positions as it drew them): evidence in the numbers
+  const litStep = must.has('diffuse') || must.has('highlight');
+  const exact = litStep ? exactLighting(facts, images, judged, T) : null;
+  if (exact) numbers.surfaceFit = exact.why ? { why: exact.why } : { samples: exact.samples, diffuse: exact.diffuse, slide: exact.slide, best: exact.best, variants: exact.variants.slice(0, 8) };
+  auditSurfaceFit(C, exact);
+  const shaded = litStep && !auditNormalsNotLight(C, judged);
   // a picture that clipped to white was read again with the page's own sliders lowered, one too
   // dim with its light raised (gather/visible.js)
   const shadeImg = facts.shadingImage ? images[facts.shadingImage] : img;

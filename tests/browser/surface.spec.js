@@ -8,7 +8,7 @@ import { readFileSync } from 'node:fs';
 import { nativesInit } from '../../grader/browser/natives.js';
 import { instrumentScript } from '../../grader/browser/instrument.js';
 import { recordersInit } from '../../grader/browser/geometry.js';
-import { surfaceOf, degreesBetween } from '../../grader/core/computed/surface.js';
+import { surfaceOf, degreesBetween, clipMatrix } from '../../grader/core/computed/surface.js';
 import { renderReference } from '../../tools/reference/render.js';
 
 const T = JSON.parse(readFileSync(new URL('../../grader/core/rubric.json', import.meta.url), 'utf8')).thresholds;
@@ -60,7 +60,8 @@ for (const api of ['webgl2', 'webgl']) {
         expect(compared).toBeGreaterThan(2000);
         expect(within / compared).toBeGreaterThanOrEqual(0.99);
         // the camera found from where the page's matrices put its positions is the scene's
-        const s = surfaceOf({ ...surface, normals: 'n', points: 'p' }, { n: surface.normals, p: surface.points }, T);
+        const clip = clipMatrix(surface.fit.map((f) => ({ p: f.slice(0, 3), clip: f.slice(3, 7) })));
+        const s = surfaceOf({ ...surface, clip, normals: 'n', points: 'p' }, { n: surface.normals, p: surface.points }, T);
         for (let k = 0; k < 3; k++) expect(Math.abs(s.camera.eye[k] - scene.camera.eye[k])).toBeLessThan(1e-3);
       } finally {
         await context.close();

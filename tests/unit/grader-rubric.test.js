@@ -1,4 +1,4 @@
-// Every threshold lives in the rubric and nowhere else (issue 28): each threshold the grader's
+// Every threshold lives in the rubric and nowhere else: each threshold the grader's
 // source reads is a key of grader/core/rubric.json, no rubric value has a number written beside
 // it as a fallback, and a teacher's rubric is merged over the default one key by key.
 import { test } from 'node:test';
@@ -106,7 +106,7 @@ test('a teacher\'s rubric is merged over the default key by key (mergeRubric)', 
   assert.equal(rubric.thresholds.roundness, 0.09, 'the default is left as it was');
 });
 
-// Issue 40, item 3: a number that decides a verdict lives in the rubric, or is a constant of
+// A number that decides a verdict lives in the rubric, or is a constant of
 // mathematics, of the slides or of a unit. Every number literal in grader/core/ and check/ is read,
 // and every default parameter with a number in grader/ and check/; what is left is listed below,
 // file by file, with why it is not the rubric's.
@@ -124,6 +124,8 @@ const PAGE = 'the check page\'s own plumbing (key codes, sizes of files, HTTP st
 const ALLOWED = {
   'core/part-names.js': { numbers: [5, 6, 120], why: 'the worksheet\'s five parts, the six patterns that name a part outright (a page\'s title may use those only), a title\'s words kept for a note: names, never a bound on what a page shows' },
   'core/computed/surface.js': { numbers: [7, 12], why: `a fit sample's indices (${MECHANICS})` },
+  'core/gather/geometry.js': { numbers: [7], why: `a fit sample's indices (${MECHANICS})` },
+  'core/measure/surface-fit.js': { numbers: [5, 10, 20, 40, 80, 160, 320, 0.1, 0.03, 0.01, 30, 10000, 100000], why: `the shininesses tried, the light's refinement steps, the least pixels a fit is solved on, and the rounding of what is kept (${MECHANICS})` },
   'core/computed/camera.js': { numbers: [5, 6, 9, 10], why: 'the 3×3 rotation inside a column-major 4×4 matrix' },
   'core/measure/linear.js': { numbers: [12], why: MECHANICS },
   'core/reference-state.js': { numbers: [500, 30], why: 'how long our own reference page runs before its picture is taken: our page, never a bound on a student\'s' },

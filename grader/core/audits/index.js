@@ -14,8 +14,9 @@ import { META as orbit } from './orbit.js';
 import { META as highlight } from './highlight.js';
 import { META as sliders } from './sliders.js';
 import { META as shading } from './shading.js';
+import { META as surface } from './surface.js';
 
-const modules = { page, firstFrame, channels, sphere, geometry, normals, diffuse, orbit, highlight, sliders, shading };
+const modules = { page, firstFrame, channels, sphere, geometry, normals, diffuse, orbit, highlight, sliders, shading, surface };
 
 /** id → { id, title, slide, note?, reads, module }. */
 export const AUDITS = {};

@@ -3,23 +3,10 @@
 // space, whether it is a front face, and w_o; the camera fitted exactly from where the page's own
 // matrices put each position (gl_Position = P V M p is linear in p: its 4×4 matrix is solved from
 // the samples). No guess from the silhouette: where the page could not be drawn again, `why` says so.
+import { solveNormal } from '../measure/linear.js';
 
-/** x of A x = b for a small square system (Gaussian elimination with partial pivoting); null where singular. */
-export function solve(A, b) {
-  const n = b.length, M = A.map((row, i) => [...row, b[i]]);
-  for (let c = 0; c < n; c++) {
-    let best = c;
-    for (let r = c + 1; r < n; r++) if (Math.abs(M[r][c]) > Math.abs(M[best][c])) best = r;
-    if (!(Math.abs(M[best][c]) > 1e-12)) return null;
-    [M[c], M[best]] = [M[best], M[c]];
-    for (let r = 0; r < n; r++) {
-      if (r === c) continue;
-      const f = M[r][c] / M[c][c];
-      for (let k = c; k <= n; k++) M[r][k] -= f * M[c][k];
-    }
-  }
-  return M.map((row, i) => row[n] / row[i]);
-}
+/** x of A x = b for a small square system (linear.js's elimination); null where singular. */
+export const solve = (A, b) => solveNormal(A.flat(), b, b.length);
 
 const dot = (a, b) => a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
 const cross = (a, b) => [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]];
@@ -68,24 +55,22 @@ export function cameraOfClip(A) {
 }
 
 /**
- * The surface as the artifact keeps it (facts.surface: { width, height, position, normal, box, fit,
- * normals, points }, the last two the names of its pictures in `images`; or { why }) as { width,
+ * The surface as the artifact keeps it (facts.surface: { width, height, position, normal, box, clip
+ * (the 4×4 P·V·M, rows), normals, points }, the last two the names of its pictures in `images`; or { why }) as { width,
  * height, position, normal, camera, clip, samples: [{ x, y, p, n, front, w_o }] } for every step-th
- * pixel it covers (about the rubric's maxSamples), or { why }. n is the normal attribute, else the position, as the
+ * pixel it covers (about the rubric's surfacePixels), or { why }. n is the normal attribute, else the position, as the
  * page interpolated it, normalised; w_o points from the position to the camera.
  */
 export function surfaceOf(surface, images, T) {
   if (!surface || surface.why) return { why: surface ? surface.why : 'the surface was not read' };
   const nImg = images[surface.normals], pImg = images[surface.points];
   if (!nImg || !pImg) return { why: 'the surface\'s pictures are missing from the artifact' };
-  const fit = (surface.fit || []).map((f) => ({ p: f.slice(0, 3), clip: f.slice(3, 7) }));
-  if (fit.length < 16) return { why: `the page's geometry covers ${fit.length} pixels: too few to read` };
-  const clip = clipMatrix(fit);
-  if (!clip) return { why: 'where the page\'s matrices put its positions could not be solved (its positions may all lie in a plane)' };
+  const { clip } = surface;
+  if (!clip) return { why: 'where the page\'s matrices put its positions was not read' };
   const camera = cameraOfClip(clip);
   if (!camera.back) return { why: 'the camera could not be found from the page\'s matrices' };
   const { width, height } = surface, [lo, hi] = surface.box;
-  const step = Math.max(1, Math.floor(Math.sqrt((surface.covered || width * height) / T.maxSamples)));
+  const step = Math.max(1, Math.floor(Math.sqrt((surface.covered || width * height) / T.surfacePixels)));
   const samples = [];
   for (let y = 0; y < height; y += step) {
     for (let x = 0; x < width; x += step) {

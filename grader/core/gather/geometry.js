@@ -2,6 +2,7 @@
 // geometry(): grader/browser/geometry.js records, grader/browser/mesh.js sums up). A measurement,
 // never a decision: the audits in core/audits/geometry.js judge it. A page interface without it
 // (an older check page) records nothing.
+import { clipMatrix } from '../computed/surface.js';
 
 /** The last frame's geometry, summed up within the rubric's sample bounds; null where not recorded. */
 export async function readGeometry(S) {
@@ -19,14 +20,17 @@ export async function readSent(S) {
 
 /**
  * The surface the last frame drew, per pixel (grader/browser/surface.js): facts (names, box, the
- * fit's samples) with its two pictures kept as `surface-normals` and `surface-points`; { why } where
- * it could not be drawn again; null where the page interface cannot.
+ * clip matrix P·V·M) with its two pictures kept as `surface-normals` and `surface-points`; { why }
+ * where it could not be drawn again; null where the page interface cannot.
  */
 export async function readSurface(S) {
   if (!S.page.surface) return null;
   S.outOfTime();
   const r = await S.page.surface({ fitSamples: S.T.surfaceFitSamples });
   if (!r || r.why) return { why: r ? r.why : 'the surface was not read' };
-  const { normals, points, ...facts } = r;
-  return { ...facts, normals: S.keep('surface-normals', normals), points: S.keep('surface-points', points) };
+  const { normals, points, fit, ...facts } = r;
+  // where the page's matrices put its positions: P·V·M, solved from the fit's samples (16 numbers kept, not the samples)
+  const clip = clipMatrix(fit.map((f) => ({ p: f.slice(0, 3), clip: f.slice(3, 7) })));
+  if (!clip) return { why: `where the page's matrices put its positions could not be solved from ${fit.length} of its pixels` };
+  return { ...facts, clip: clip.map((row) => row.map((v) => Math.round(v * 1e6) / 1e6)), normals: S.keep('surface-normals', normals), points: S.keep('surface-points', points) };
 }

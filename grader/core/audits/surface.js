@@ -1,0 +1,33 @@
+// The lighting read on the page's own surface (computed/lighting.js: the slide's model and its known
+// misreadings fitted where each pixel's normal and position are the page's own). A note for the
+// student and the teacher, never a change of verdict: it names what explains the picture best where
+// a misreading beats the slide's formula by the rubric's margin (surfaceVariantMargin).
+import { SLIDE } from './slides.js';
+
+/** This module's audits: id → title, the slide's sentence it checks, the artifacts it reads. */
+export const META = {
+  'surface-fit': { title: 'The lighting on the page\'s own surface', slide: SLIDE.eye, reads: ['facts.surface', 'images.judged'] },
+};
+
+const fmt = (x) => x.toFixed(3);
+
+/** What a variant means, in a student's words. */
+function inWords(best) {
+  const out = [];
+  if (best.tint === 'added') out.push('the colour carries WP04P1\'s normal colour 0.5·n + 0.5 added to the lighting');
+  if (best.tint === 'times') out.push('the lighting is coloured by WP04P1\'s normal colour 0.5·n + 0.5 (the material is the normal colour)');
+  if (best.view && best.view !== 'the slide') {
+    out.push(best.view.startsWith('fixed') ? 'w_o is one direction for the whole sphere (the eye space\'s (0, 0, 1)), not normalize(e − p) at each point'
+      : 'w_o points from the point to the world\'s origin, not to the eye (normalize(e − p))');
+  }
+  if (!best.form) out.push('no highlight is needed to explain it');
+  return out.join('; ');
+}
+
+/** Says, as a note, which misreading the page's own surface shows, where one explains the picture better than the slide's formula. */
+export function auditSurfaceFit({ sayAs }, exact) {
+  if (!exact || exact.why || !exact.slide) return;
+  const { best, slide } = exact;
+  if (best.name === slide.name) return;
+  sayAs('surface-fit')('pass', `note: on the page's own surface (its normals and positions as it drew them), ${inWords(best)}: that explains the picture with a residual of ${fmt(best.rms)}, the slide's formula with ${fmt(slide.rms)}`);
+}

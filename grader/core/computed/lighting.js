@@ -1,0 +1,22 @@
+// The lighting read on the page's own surface: the judged picture's pixels with the normal,
+// position and w_o the page drew them with (computed/surface.js), the slide's model and its known
+// misreadings fitted there (measure/surface-fit.js). Null where no surface was read (a step that
+// lights nothing, an older artifact); { why } where it was read but cannot be used for this picture.
+import { surfaceOf } from './surface.js';
+import { surfaceFit } from '../measure/surface-fit.js';
+
+const pct = (x) => `${Math.round(100 * x)}%`;
+
+/** The fits on the judged picture (`judged`: { img, an }) and its surface, or null / { why }. */
+export function exactLighting(facts, images, judged, T) {
+  if (!facts.surface) return null;
+  const s = surfaceOf(facts.surface, images, T);
+  if (s.why) return { why: s.why };
+  const { img, an } = judged;
+  if (s.width !== img.width || s.height !== img.height) return { why: `the page's surface (${s.width}×${s.height}) is not the picture's size (${img.width}×${img.height})` };
+  // the surface is the picture's: its pixels lie inside the sphere's outline (the view did not move between them)
+  const inside = s.samples.filter((q) => an.mask[q.y * img.width + q.x]).length / Math.max(1, s.samples.length);
+  if (inside < T.surfaceMatch) return { why: `the page's surface and its picture differ: ${pct(inside)} of the surface lies inside the picture's outline (the view moved between them)` };
+  const fit = surfaceFit(s, img, T);
+  return fit.why ? fit : { ...fit, camera: s.camera, normal: s.normal };
+}

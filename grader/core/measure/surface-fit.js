@@ -1,0 +1,198 @@
+// The slide's reflection model fitted on the page's own surface (core/computed/surface.js: each
+// pixel's normal, position and w_o as the page drew them), channel by channel:
+//   L_o = k_a L_a + k_d L_e max(n · w_i, 0) + k_s L_e max(w_r · w_o, 0)^s   (Phong; Blinn-Phong: n · w_h)
+// with w_i a direction fixed in the model's space (a directional light; one view cannot tell the
+// world from the eye's space: the camera's turn does), the material per channel (a, d, k: linear
+// once w_i, s and the form are chosen, so solved by least squares), channels that clip left out.
+// Beside it, the known misreadings, each fitted the same way and named: the normal colour of
+// WP04P1 added as a term of its own (0.5·n + 0.5, c = t·(0.5·n + 0.5) + …), and w_o taken as a fixed
+// direction (the eye space's (0, 0, 1)) or from the world origin (−p). Which explains the picture
+// best, and by how much, is evidence for the audits; a reason rests on it only past the rubric's margin.
+import { solveNormal } from './linear.js';
+import { DIRS } from './directions.js';
+
+const dot = (a, b) => a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+const unit = (v) => {
+  const l = Math.hypot(v[0], v[1], v[2]);
+  return l > 0 ? [v[0] / l, v[1] / l, v[2] / l] : v;
+};
+
+/** The samples with the picture's colour at each ([0, 1] a channel); back faces left out. */
+export function coloured(samples, img) {
+  const out = [];
+  for (const s of samples) {
+    if (!s.front) continue;
+    const o = 4 * (s.y * img.width + s.x);
+    out.push({ ...s, c: [img.data[o] / 255, img.data[o + 1] / 255, img.data[o + 2] / 255] });
+  }
+  return out;
+}
+
+/**
+ * The samples as columns, for fits that allocate nothing a sample: n, c, and for each channel
+ * whether it is neither clipped nor black (those are left out of that channel's fit).
+ */
+function columns(use, T) {
+  const m = use.length;
+  const n = new Float64Array(3 * m), c = new Float64Array(3 * m), ok = new Uint8Array(3 * m);
+  use.forEach((s, i) => {
+    for (let k = 0; k < 3; k++) {
+      n[3 * i + k] = s.n[k];
+      c[3 * i + k] = s.c[k];
+      ok[3 * i + k] = s.c[k] < T.clippedLevel && s.c[k] > T.blackLevel ? 1 : 0;
+    }
+  });
+  return { m, n, c, ok };
+}
+
+/**
+ * Least squares of each channel on the basis [1, D, S?, tint?] (D, S a sample's diffuse and
+ * specular terms, in `terms`; the normal colour 0.5·n_ch + 0.5 added or, `times`, multiplying them
+ * all) over the samples whose channel is neither clipped nor black: { coef: [per channel], sse,
+ * used }, or null where a channel cannot be solved. The residual comes from the normal equations.
+ */
+function fitChannels(cols, D, S, { tint = false, times = false } = {}) {
+  const k = 2 + (S ? 1 : 0) + (tint ? 1 : 0);
+  const N = new Float64Array(k * k), v = new Float64Array(k), r = new Float64Array(k);
+  const coef = [];
+  let sse = 0, used = 0;
+  for (let ch = 0; ch < 3; ch++) {
+    N.fill(0);
+    v.fill(0);
+    let yy = 0, count = 0;
+    for (let i = 0; i < cols.m; i++) {
+      if (!cols.ok[3 * i + ch]) continue;
+      const t = 0.5 * cols.n[3 * i + ch] + 0.5, w = times ? t : 1;
+      r[0] = w; r[1] = w * D[i];
+      let j = 2;
+      if (S) r[j++] = w * S[i];
+      if (tint) r[j] = t;
+      const y = cols.c[3 * i + ch];
+      for (let a = 0; a < k; a++) {
+        v[a] += r[a] * y;
+        for (let b = a; b < k; b++) N[a * k + b] += r[a] * r[b];
+      }
+      yy += y * y;
+      count++;
+    }
+    if (count < 8) return null;
+    for (let a = 0; a < k; a++) for (let b = 0; b < a; b++) N[a * k + b] = N[b * k + a];
+    const x = solveNormal(N, v, k);
+    if (!x) return null;
+    // Σ(y − r·x)² = Σy² − xᵀv at the least-squares solution
+    sse += Math.max(0, yy - x.reduce((acc, xi, a) => acc + xi * v[a], 0));
+    used += count;
+    coef.push(x);
+  }
+  return { coef, sse, used };
+}
+
+/** The forms of the specular term: each gives max(cos, 0)^s for a sample, a light and w_o. */
+const SPECULAR = {
+  phong: (n, wi, wo) => {
+    const c = dot(n, wi);
+    return c > 0 ? dot([2 * c * n[0] - wi[0], 2 * c * n[1] - wi[1], 2 * c * n[2] - wi[2]], wo) : 0;
+  },
+  'blinn-phong': (n, wi, wo) => (dot(n, wi) > 0 ? dot(n, unit([wi[0] + wo[0], wi[1] + wo[1], wi[2] + wo[2]])) : 0),
+};
+
+/** w_o as the slide says, and as it is got wrong. */
+const VIEW = {
+  'the slide': (s) => s.w_o,
+  'fixed at the eye space\'s (0, 0, 1)': (s, camera) => camera.back,
+  'from the world origin (−p)': (s) => unit(s.p.map((v) => -v)),
+};
+
+const SHININESS = [5, 10, 20, 40, 80, 160, 320];
+
+/** How the normal colour enters: not at all, added as a term of its own, or as the material (multiplying the lighting). */
+const TINTS = [[null, {}, ''], ['added', { tint: true }, ', the normal colour added'], ['times', { times: true }, ', the normal colour as the material']];
+
+/** max(n · w_i, 0) for every sample. */
+function diffuseTerm(cols, wi, out = new Float64Array(cols.m)) {
+  for (let i = 0; i < cols.m; i++) out[i] = Math.max(0, cols.n[3 * i] * wi[0] + cols.n[3 * i + 1] * wi[1] + cols.n[3 * i + 2] * wi[2]);
+  return out;
+}
+
+/**
+ * The best directional light for the diffuse term (with the normal colour as `how` says:
+ * { tint } added, { times } multiplying): { wi, fit } over the fibonacci directions, then refined
+ * around the best.
+ */
+function bestLight(cols, how) {
+  let best = null;
+  const D = new Float64Array(cols.m);
+  const tryLight = (wi) => {
+    const f = fitChannels(cols, diffuseTerm(cols, wi, D), null, how);
+    if (f && (!best || f.sse < best.fit.sse)) best = { wi, fit: f };
+  };
+  for (const d of DIRS) tryLight(d);
+  if (!best) return null;
+  for (const step of [0.1, 0.03, 0.01]) {
+    const c = best.wi;
+    for (const a of [-1, 0, 1]) for (const b of [-1, 0, 1]) for (const e of [-1, 0, 1]) if (a || b || e) tryLight(unit([c[0] + a * step, c[1] + b * step, c[2] + e * step]));
+  }
+  return best;
+}
+
+/**
+ * The model fitted on the page's surface and the picture: { samples, diffuse: { wi, rms, r2 }, slide:
+ * the slide's formula's best { name, rms, s }, best: { name, wi, form, view, s, rms, tint } (the slide's
+ * formula unless a variant beats it by the rubric's surfaceVariantMargin), variants: [{ name, rms }]
+ * (lowest residual first) }, or { why }.
+ * `surface` is core/computed/surface.js's (samples in the model's space, its camera).
+ */
+export function surfaceFit(surface, img, T) {
+  if (!surface || surface.why) return { why: surface ? surface.why : 'no surface' };
+  const use = coloured(surface.samples, img);
+  if (use.length < 30) return { why: `only ${use.length} pixels of the page's front faces to fit` };
+  const mean = [0, 1, 2].map((ch) => use.reduce((a, s) => a + s.c[ch], 0) / use.length);
+  const sst = use.reduce((a, s) => a + s.c.reduce((b, v, ch) => b + (v - mean[ch]) ** 2, 0), 0);
+  const cols = columns(use, T);
+  const rms = (f) => Math.sqrt(f.sse / Math.max(1, f.used));
+  const variants = [];
+  const lights = {};
+  for (const [key, how, words] of TINTS) {
+    const b = bestLight(cols, how);
+    if (!b) continue;
+    lights[key] = b;
+    variants.push({ name: `diffuse${words}`, wi: b.wi, tint: key, form: null, view: null, s: null, fit: b.fit });
+    const D = diffuseTerm(cols, b.wi), S = new Float64Array(cols.m);
+    for (const [form, spec] of Object.entries(SPECULAR)) {
+      for (const [view, wo] of Object.entries(VIEW)) {
+        const cosines = use.map((q) => Math.max(spec(q.n, b.wi, wo(q, surface.camera)), 0));
+        for (const sh of SHININESS) {
+          for (let i = 0; i < cols.m; i++) S[i] = cosines[i] ** sh;
+          const f = fitChannels(cols, D, S, how);
+          if (f) variants.push({ name: `${form}, w_o ${view}${words}`, wi: b.wi, tint: key, form, view, s: sh, fit: f });
+        }
+      }
+    }
+  }
+  if (!variants.length) return { why: 'the model could not be fitted on the page\'s surface' };
+  // one entry a name: its best shininess
+  const byName = new Map();
+  for (const v of variants) if (!byName.has(v.name) || v.fit.sse < byName.get(v.name).fit.sse) byName.set(v.name, v);
+  const ranked = [...byName.values()].sort((a, b) => rms(a.fit) - rms(b.fit));
+  // the slide's formula (w_o as the slide has it, nothing added) stands unless it leaves a visible
+  // residual (surfaceResidual) and a misreading explains the picture better by the rubric's margin
+  // (a term more always fits a little better, and lighting per vertex fits a per-fragment model only
+  // nearly); one misreading at a time: the normal colour first, then w_o given that colour
+  const slideView = (v) => !v.view || v.view === 'the slide';
+  const slide = ranked.find((v) => slideView(v) && !v.tint);
+  const better = (v, than) => rms(than.fit) >= T.surfaceResidual && rms(v.fit) < (1 - T.surfaceVariantMargin) * rms(than.fit);
+  let top = slide || ranked[0];
+  const tinted = slide && ranked.find((v) => slideView(v) && v.tint);
+  if (tinted && better(tinted, top)) top = tinted;
+  const viewed = slide && ranked.find((v) => !slideView(v) && v.tint === top.tint);
+  if (viewed && better(viewed, top)) top = viewed;
+  const d = lights.null;
+  return {
+    samples: use.length,
+    diffuse: d ? { wi: d.wi, rms: rms(d.fit), r2: sst > 0 ? 1 - d.fit.sse / sst : 0 } : null,
+    best: { name: top.name, wi: top.wi, form: top.form, view: top.view, s: top.s, tint: top.tint, rms: rms(top.fit), r2: sst > 0 ? 1 - top.fit.sse / sst : 0,
+      coef: top.fit.coef.map((c) => c.map((v) => Math.round(v * 1e4) / 1e4)) },
+    slide: slide ? { name: slide.name, form: slide.form, rms: rms(slide.fit), s: slide.s } : null,
+    variants: ranked.map((v) => ({ name: v.name, rms: Math.round(rms(v.fit) * 1e5) / 1e5, s: v.s })),
+  };
+}

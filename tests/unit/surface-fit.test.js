@@ -1,0 +1,62 @@
+// The slide's model fitted on the page's own surface (grader/core/measure/surface-fit.js): on
+// pictures made here from the exact sphere with a known light, material and form, the fit finds
+// the light and names the form, the normal colour added, and w_o as the slide has it or not.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { readFileSync } from 'node:fs';
+import { mat4 } from 'gl-matrix';
+import { surfaceUnder } from './surface-scenes.js';
+import { surfaceOf, degreesBetween } from '../../grader/core/computed/surface.js';
+import { surfaceFit } from '../../grader/core/measure/surface-fit.js';
+
+const T = JSON.parse(readFileSync(new URL('../../grader/core/rubric.json', import.meta.url), 'utf8')).thresholds;
+const eye = [1.2, 0.6, 3.2];
+const pv = mat4.multiply(mat4.create(), mat4.perspective(mat4.create(), Math.PI / 4, 1, 0.5, 10), mat4.lookAt(mat4.create(), eye, [0, 0, 0], [0, 1, 0]));
+const wi = (() => { const l = [0.3, 0.5, 1], n = Math.hypot(...l); return l.map((x) => x / n); })();
+const dot = (a, b) => a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+const unit = (v) => { const l = Math.hypot(...v); return v.map((x) => x / l); };
+
+/** L_o of the slides at p (n = p), w_o from `woOf(p)`, Phong with s = 40; the normal colour added with weight `tint`. */
+const model = ({ woOf = (p) => unit(eye.map((e, k) => e - p[k])), tint = 0, kd = [0.7, 0.5, 0.3] } = {}) => (p, k) => {
+  const c = dot(p, wi), wo = woOf(p);
+  const wr = p.map((n, j) => 2 * c * n - wi[j]);
+  const spec = c > 0 ? Math.max(dot(wr, wo), 0) ** 40 : 0;
+  return 0.1 + kd[k] * Math.max(c, 0) * 0.8 + 0.4 * spec + tint * (0.5 * p[k] + 0.5);
+};
+
+function fitOf(shade) {
+  const u = surfaceUnder(pv, eye, { shade });
+  return surfaceFit(surfaceOf(u.facts, u.images, T), u.picture, T);
+}
+
+test('the slide\'s Phong model: the light found, the slide\'s w_o named best', () => {
+  const f = fitOf(model());
+  assert.ok(!f.why, f.why);
+  assert.ok(degreesBetween(f.best.wi, wi) < 3, `light ${f.best.wi}`);
+  assert.equal(f.best.view, 'the slide');
+  assert.equal(f.best.tint, null);
+  assert.ok(f.best.rms < 0.01, `rms ${f.best.rms}`);
+});
+
+test('the normal colour added to the lighting is a term of its own; w_o fixed in the eye space is told from the slide\'s', () => {
+  const tinted = fitOf(model({ tint: 0.5, kd: [0.3, 0.3, 0.3] }));
+  assert.equal(tinted.best.tint, 'added', tinted.best.name);
+  assert.ok(degreesBetween(tinted.best.wi, wi) < 3);
+  const back = unit(eye);
+  const fixed = fitOf(model({ woOf: () => back }));
+  // (a term more fits a little better: among the fits with nothing added)
+  const plain = fixed.variants.filter((v) => !/normal colour/.test(v.name));
+  assert.equal(plain[0].name, 'phong, w_o fixed at the eye space\'s (0, 0, 1)');
+  const slide = fixed.variants.find((v) => v.name === 'phong, w_o the slide');
+  assert.ok(slide.rms > 1.5 * plain[0].rms, `${slide.rms} against ${plain[0].rms}`);
+  // named only where the slide's formula leaves a visible residual: here it is within surfaceResidual
+  assert.ok(slide.rms < T.surfaceResidual);
+  assert.equal(fixed.best.name, 'phong, w_o the slide');
+  assert.match(surfaceFit(null, null, T).why, /no surface/);
+});
+
+test('the normal colour as the material, multiplying the lighting, is named as such', () => {
+  const times = fitOf((p, k) => (0.5 * p[k] + 0.5) * model({ kd: [1, 1, 1] })(p, k));
+  assert.equal(times.best.tint, 'times', times.best.name);
+  assert.ok(degreesBetween(times.best.wi, wi) < 3);
+});
