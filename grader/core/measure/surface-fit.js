@@ -126,9 +126,10 @@ function bestLight(cols, how) {
     const f = fitChannels(cols, diffuseTerm(cols, wi, D), null, how);
     if (f && (!best || f.sse < best.fit.sse)) best = { wi, fit: f };
   };
-  for (const d of DIRS) tryLight(d);
+  // a coarse search over every fourth direction, then refined: the diffuse fit's error is smooth in w_i
+  for (let k = 0; k < DIRS.length; k += 4) tryLight(DIRS[k]);
   if (!best) return null;
-  for (const step of [0.1, 0.03, 0.01]) {
+  for (const step of [0.15, 0.05, 0.015, 0.005]) {
     const c = best.wi;
     for (const a of [-1, 0, 1]) for (const b of [-1, 0, 1]) for (const e of [-1, 0, 1]) if (a || b || e) tryLight(unit([c[0] + a * step, c[1] + b * step, c[2] + e * step]));
   }
