@@ -41,6 +41,11 @@ test('the slide\'s Phong model: the light found, the slide\'s w_o named best', (
 test('the normal colour added to the lighting is a term of its own; w_o fixed in the eye space is told from the slide\'s', () => {
   const tinted = fitOf(model({ tint: 0.5, kd: [0.3, 0.3, 0.3] }));
   assert.equal(tinted.best.tint, 'added', tinted.best.name);
+  // the lighting is there beside the normal colour; WP04P1's colouring alone is not lit
+  assert.equal(tinted.lit, true);
+  const p1 = fitOf((p, k) => 0.5 * p[k] + 0.5);
+  assert.equal(p1.lit, false);
+  assert.ok(p1.normalColourAlone.rms < 0.005);
   assert.ok(degreesBetween(tinted.best.wi, wi) < 3);
   const back = unit(eye);
   const fixed = fitOf(model({ woOf: () => back }));

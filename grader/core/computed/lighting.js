@@ -16,7 +16,7 @@ export function exactLighting(facts, images, judged, T) {
   if (s.width !== img.width || s.height !== img.height) return { why: `the page's surface (${s.width}×${s.height}) is not the picture's size (${img.width}×${img.height})` };
   // the surface is the picture's: its pixels lie inside the sphere's outline (the view did not move between them)
   const inside = s.samples.filter((q) => an.mask[q.y * img.width + q.x]).length / Math.max(1, s.samples.length);
-  if (inside < T.surfaceMatch) return { why: `the page's surface and its picture differ: ${pct(inside)} of the surface lies inside the picture's outline (the view moved between them)` };
+  if (inside < T.surfaceMatch) return { why: `the page's surface, drawn again by the grader, is not its picture: ${pct(inside)} of it lies inside the picture's outline (the view moved between them, or the page draws with something the grader's copy leaves out, such as instancing or a second program's draw)` };
   const fit = surfaceFit(s, img, T);
   return fit.why ? fit : { ...fit, camera: s.camera, normal: s.normal };
 }

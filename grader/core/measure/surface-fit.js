@@ -17,11 +17,13 @@ const unit = (v) => {
   return l > 0 ? [v[0] / l, v[1] / l, v[2] / l] : v;
 };
 
-/** The samples with the picture's colour at each ([0, 1] a channel); back faces left out. */
+/**
+ * The samples with the picture's colour at each ([0, 1] a channel). Front and back faces alike: a
+ * page that winds its triangles the other way and culls nothing shows its outside as back faces.
+ */
 export function coloured(samples, img) {
   const out = [];
   for (const s of samples) {
-    if (!s.front) continue;
     const o = 4 * (s.y * img.width + s.x);
     out.push({ ...s, c: [img.data[o] / 255, img.data[o + 1] / 255, img.data[o + 2] / 255] });
   }
@@ -46,13 +48,13 @@ function columns(use, T) {
 }
 
 /**
- * Least squares of each channel on the basis [1, D, S?, tint?] (D, S a sample's diffuse and
+ * Least squares of each channel on the basis [1, D?, S?, tint?] (D, S a sample's diffuse and
  * specular terms, in `terms`; the normal colour 0.5·n_ch + 0.5 added or, `times`, multiplying them
  * all) over the samples whose channel is neither clipped nor black: { coef: [per channel], sse,
  * used }, or null where a channel cannot be solved. The residual comes from the normal equations.
  */
 function fitChannels(cols, D, S, { tint = false, times = false } = {}) {
-  const k = 2 + (S ? 1 : 0) + (tint ? 1 : 0);
+  const k = 1 + (D ? 1 : 0) + (S ? 1 : 0) + (tint ? 1 : 0);
   const N = new Float64Array(k * k), v = new Float64Array(k), r = new Float64Array(k);
   const coef = [];
   let sse = 0, used = 0;
@@ -63,8 +65,9 @@ function fitChannels(cols, D, S, { tint = false, times = false } = {}) {
     for (let i = 0; i < cols.m; i++) {
       if (!cols.ok[3 * i + ch]) continue;
       const t = 0.5 * cols.n[3 * i + ch] + 0.5, w = times ? t : 1;
-      r[0] = w; r[1] = w * D[i];
-      let j = 2;
+      r[0] = w;
+      let j = 1;
+      if (D) r[j++] = w * D[i];
       if (S) r[j++] = w * S[i];
       if (tint) r[j] = t;
       const y = cols.c[3 * i + ch];
@@ -146,7 +149,7 @@ function bestLight(cols, how) {
 export function surfaceFit(surface, img, T) {
   if (!surface || surface.why) return { why: surface ? surface.why : 'no surface' };
   const use = coloured(surface.samples, img);
-  if (use.length < 30) return { why: `only ${use.length} pixels of the page's front faces to fit` };
+  if (use.length < 30) return { why: `only ${use.length} pixels of the page's surface to fit` };
   const mean = [0, 1, 2].map((ch) => use.reduce((a, s) => a + s.c[ch], 0) / use.length);
   const sst = use.reduce((a, s) => a + s.c.reduce((b, v, ch) => b + (v - mean[ch]) ** 2, 0), 0);
   const cols = columns(use, T);
@@ -170,6 +173,8 @@ export function surfaceFit(surface, img, T) {
       }
     }
   }
+  // WP04P1's colouring alone, no light at all: c = a + t·(0.5·n + 0.5)
+  const alone = fitChannels(cols, null, null, { tint: true });
   if (!variants.length) return { why: 'the model could not be fitted on the page\'s surface' };
   // one entry a name: its best shininess
   const byName = new Map();
@@ -194,6 +199,9 @@ export function surfaceFit(surface, img, T) {
     best: { name: top.name, wi: top.wi, form: top.form, view: top.view, s: top.s, tint: top.tint, rms: rms(top.fit), r2: sst > 0 ? 1 - top.fit.sse / sst : 0,
       coef: top.fit.coef.map((c) => c.map((v) => Math.round(v * 1e4) / 1e4)) },
     slide: slide ? { name: slide.name, form: slide.form, rms: rms(slide.fit), s: slide.s } : null,
+    // the lighting is there, beside the normal colour: the colour alone leaves a visible residual that the lighting halves
+    normalColourAlone: alone ? { rms: rms(alone) } : null,
+    lit: !!alone && !!tinted && better(tinted, { fit: alone }),
     variants: ranked.map((v) => ({ name: v.name, rms: Math.round(rms(v.fit) * 1e5) / 1e5, s: v.s })),
   };
 }
