@@ -12,6 +12,7 @@ import { clipMatrix } from '../../grader/core/computed/surface.js';
 export function surfaceUnder(pv, eye, { normal = null, shade = null } = {}) {
   const W = 64, normals = { width: W, height: W, data: new Uint8Array(W * W * 4) }, points = { width: W, height: W, data: new Uint8Array(W * W * 4) };
   const fit = [];
+  let covered = 0;
   const picture = { width: W, height: W, data: new Uint8Array(W * W * 4).fill(255) };
   const inv = mat4.invert(mat4.create(), pv);
   for (let y = 0; y < W; y++) {
@@ -33,10 +34,11 @@ export function surfaceUnder(pv, eye, { normal = null, shade = null } = {}) {
         points.data[i + k] = Math.round(((p[k] + 1) / 2) * 255);
       }
       normals.data[i + 3] = points.data[i + 3] = 255;
+      covered++;
       if (shade) for (let k = 0; k < 3; k++) picture.data[i + k] = Math.round(Math.max(0, Math.min(1, shade(p, k))) * 255);
       if ((x + y) % 7 === 0) fit.push([...p, ...vec4.transformMat4(vec4.create(), [...p, 1], pv)]);
     }
   }
-  return { facts: { width: W, height: W, position: 'a', normal: normal ? 'n' : null, box: [[-1, -1, -1], [1, 1, 1]], covered: W * W, fit, clip: clipMatrix(fit.map((f) => ({ p: f.slice(0, 3), clip: f.slice(3, 7) }))), normals: 'n', points: 'p' }, images: { n: normals, p: points }, picture };
+  return { facts: { width: W, height: W, position: 'a', normal: normal ? 'n' : null, box: [[-1, -1, -1], [1, 1, 1]], covered, fit, clip: clipMatrix(fit.map((f) => ({ p: f.slice(0, 3), clip: f.slice(3, 7) }))), normals: 'n', points: 'p' }, images: { n: normals, p: points }, picture };
 }
 
