@@ -4,37 +4,27 @@
 // matrices put each position (gl_Position = P V M p is linear in p: its 4×4 matrix is solved from
 // the samples). No guess from the silhouette: where the page could not be drawn again, `why` says so.
 import { solveNormal } from '../measure/linear.js';
+import { dot, cross, unit } from '../measure/vectors.js';
 
 /** x of A x = b for a small square system (linear.js's elimination); null where singular. */
 export const solve = (A, b) => solveNormal(A.flat(), b, b.length);
-
-const dot = (a, b) => a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-const cross = (a, b) => [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]];
-const unit = (v) => {
-  const l = Math.hypot(v[0], v[1], v[2]);
-  return l > 0 ? [v[0] / l, v[1] / l, v[2] / l] : null;
-};
 
 /**
  * The matrix that takes a position to gl_Position (P V M as the page multiplied it), row by row,
  * fitted by least squares to the samples ([p, clip] pairs); null where the samples do not fix it.
  */
 export function clipMatrix(samples) {
-  const rows = [];
-  for (let r = 0; r < 4; r++) {
-    const AtA = [[0, 0, 0, 0], [0, 0, 0, 0], [0, 0, 0, 0], [0, 0, 0, 0]], Atb = [0, 0, 0, 0];
-    for (const { p, clip } of samples) {
-      const x = [p[0], p[1], p[2], 1];
-      for (let i = 0; i < 4; i++) {
-        Atb[i] += x[i] * clip[r];
-        for (let j = 0; j < 4; j++) AtA[i][j] += x[i] * x[j];
-      }
+  // one normal matrix [p, 1]ᵀ[p, 1] for the four rows; a right-hand side a row
+  const AtA = [[0, 0, 0, 0], [0, 0, 0, 0], [0, 0, 0, 0], [0, 0, 0, 0]], Atb = [[0, 0, 0, 0], [0, 0, 0, 0], [0, 0, 0, 0], [0, 0, 0, 0]];
+  for (const { p, clip } of samples) {
+    const x = [p[0], p[1], p[2], 1];
+    for (let i = 0; i < 4; i++) {
+      for (let r = 0; r < 4; r++) Atb[r][i] += x[i] * clip[r];
+      for (let j = 0; j < 4; j++) AtA[i][j] += x[i] * x[j];
     }
-    const row = solve(AtA, Atb);
-    if (!row) return null;
-    rows.push(row);
   }
-  return rows;
+  const rows = Atb.map((b) => solve(AtA, b));
+  return rows.every(Boolean) ? rows : null;
 }
 
 /**
@@ -49,9 +39,7 @@ export function cameraOfClip(A) {
   const back = unit(eye ? A3.map((x) => -x) : A2.map((x) => -x));
   const right = back && unit(cross(cross(back, A0), back));
   const up = back && right && cross(back, right);
-  let towards = null;
-  if (!eye && back) towards = back;
-  return { eye, towards, right, up, back };
+  return { eye, towards: eye ? null : back, right, up, back };
 }
 
 /**

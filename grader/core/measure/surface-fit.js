@@ -10,12 +10,7 @@
 // best, and by how much, is evidence for the audits; a reason rests on it only past the rubric's margin.
 import { solveNormal } from './linear.js';
 import { DIRS } from './directions.js';
-
-const dot = (a, b) => a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-const unit = (v) => {
-  const l = Math.hypot(v[0], v[1], v[2]);
-  return l > 0 ? [v[0] / l, v[1] / l, v[2] / l] : v;
-};
+import { dot, unit } from './vectors.js';
 
 /**
  * The samples with the picture's colour at each ([0, 1] a channel). Front and back faces alike: a
@@ -48,8 +43,8 @@ function columns(use, T) {
 }
 
 /**
- * Least squares of each channel on the basis [1, D?, S?, tint?] (D, S a sample's diffuse and
- * specular terms, in `terms`; the normal colour 0.5·n_ch + 0.5 added or, `times`, multiplying them
+ * Least squares of each channel on the basis [1, D?, S?, tint?] (D, S each sample's diffuse and
+ * specular terms, or null; the normal colour 0.5·n_ch + 0.5 added or, `times`, multiplying them
  * all) over the samples whose channel is neither clipped nor black: { coef: [per channel], sse,
  * used }, or null where a channel cannot be solved. The residual comes from the normal equations.
  */
@@ -96,14 +91,17 @@ const SPECULAR = {
     const c = dot(n, wi);
     return c > 0 ? dot([2 * c * n[0] - wi[0], 2 * c * n[1] - wi[1], 2 * c * n[2] - wi[2]], wo) : 0;
   },
-  'blinn-phong': (n, wi, wo) => (dot(n, wi) > 0 ? dot(n, unit([wi[0] + wo[0], wi[1] + wo[1], wi[2] + wo[2]])) : 0),
+  'blinn-phong': (n, wi, wo) => {
+    const h = dot(n, wi) > 0 && unit([wi[0] + wo[0], wi[1] + wo[1], wi[2] + wo[2]]); // (no w_h where w_i = −w_o)
+    return h ? dot(n, h) : 0;
+  },
 };
 
 /** w_o as the slide says, and as it is got wrong. */
 const VIEW = {
   'the slide': (s) => s.w_o,
   'fixed at the eye space\'s (0, 0, 1)': (s, camera) => camera.back,
-  'from the world origin (−p)': (s) => unit(s.p.map((v) => -v)),
+  'from the world origin (−p)': (s) => unit(s.p.map((v) => -v)) || [0, 0, 0],
 };
 
 const SHININESS = [5, 10, 20, 40, 80, 160, 320];

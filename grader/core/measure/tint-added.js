@@ -8,9 +8,8 @@
 // α·R·n taken out, and α again with the lighting, in turns.
 import { diffuseFit } from './diffuse.js';
 import { leastSquares, symmetricEigenvalues3 } from './linear.js';
+import { dot, cross } from './vectors.js';
 
-const dot = (a, b) => a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-const cross = (a, b) => [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]];
 const det = (A) => dot(A[0], cross(A[1], A[2]));
 const clipped = (s, T) => Math.min(...s.c) <= T.blackLevel || Math.max(...s.c) >= T.clippedLevel;
 
