@@ -66,7 +66,7 @@ export function effectOf({ before, after, later, wasMoving }, T) {
   }
   // at a high level: a few outline pixels flip, all of them at the outline, and the area moves with them
   const f = outlineFlips(before.an, after.an, T);
-  if (f && f.flips >= T.outlineFlips && f.atOutline >= T.outlineFlipsAtEdge * f.flips && Math.abs(f.area) >= Math.max(2, 0.5 * f.flips)) return f.area > 0 ? 'finer' : 'coarser';
+  if (f && f.flips >= T.outlineFlips && f.atOutline >= T.outlineFlipsAtEdge * f.flips && Math.abs(f.area) >= Math.max(T.outlineAreaLeast, T.outlineAreaPerFlip * f.flips)) return f.area > 0 ? 'finer' : 'coarser';
   return pictureChange(before.img, after.img, T) > T.pictureChanged ? 'shading' : 'none';
 }
 

@@ -22,10 +22,10 @@ export async function lookAllRound(S) {
   await readCamera(S);
   let last = S.camera, turned = last ? 0 : null, gap = null;
   // frames a step, at 60 Hz: as many as the page's work a frame allows (orbitSampleWork), as orbit.js's samples
-  const most = () => Math.max(1, Math.min(Math.round(60 * T.orbitSampleSeconds), Math.floor(T.orbitSampleWork / Math.max(1, S.frameWork))));
-  let frames = 4;
+  const most = () => Math.max(1, Math.min(Math.round(T.framesPerSecond * T.orbitSampleSeconds), Math.floor(T.orbitSampleWork / Math.max(1, S.frameWork))));
+  let frames = T.roundFirstFrames;
   for (let k = 0; k < T.roundSamples && !(turned >= 360); k++) {
-    await S.tick((1000 * frames) / 60, frames);
+    await S.tick((1000 * frames) / T.framesPerSecond, frames);
     const sh = await S.shot();
     await readCamera(S);
     const step = turned !== null ? cameraTurn([last, S.camera], T.cameraRotationTolerance) : null;

@@ -34,12 +34,12 @@ export async function probeFaces(S, controls, judged) {
     if (faces.depthTest && faces.culling) {
       const before = (await S.page.state()).draws;
       await S.page.setNoCull(true);
-      await S.tick(100);
+      await S.tick(S.T.actionTickMs);
       const s = await S.shot();
       // a page that draws only when a control asks drew nothing here: its picture tells nothing
       facts.noCull.draws = (await S.page.state()).draws - before;
       await S.page.setNoCull(false);
-      await S.tick(100);
+      await S.tick(S.T.actionTickMs);
       if (s) facts.noCull.image = S.keep('no-cull', s.img);
     }
   }

@@ -25,14 +25,14 @@ export async function raiseHighlight(S, controls) {
     const c = g.controls[0];
     const vs = await setGroup(S, g, to);
     set.push(g);
-    await S.tick(100);
+    await S.tick(S.T.actionTickMs);
     const sh = await S.shot();
     const seen = !!sh && highlightIn(sh.img, T);
     raised.push({ role: r, ...groupFacts(g, vs), value: vs[0], broad: r === 's' && s10(c) < Number(S.now(c)), image: sh ? S.keep(`raised-${r}`, sh.img) : null, seen });
     S.act(`set ${describeGroup(g)} to ${vs[0]} to look for a highlight${seen ? ': one shows' : ''}`);
   }
   for (const g of set) await setGroup(S, g, (c) => S.now(c));
-  if (set.length) await S.tick(100);
+  if (set.length) await S.tick(S.T.actionTickMs);
 }
 
 /**

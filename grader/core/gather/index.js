@@ -64,14 +64,14 @@ async function firstFrame(S) {
   const { page, T, facts, must } = S;
   S.step(FIRST_FRAME);
   await S.settle();
-  await S.tick(1000, 1);
+  await S.tick(T.firstTickMs, 1);
   for (let k = 0; k < T.firstFrameTicks; k++) {
     const s = await S.settle();
     if (s.draws > 0 && (s.api !== 'webgpu' || s.frames > 0)) break;
     if (s.adapter === null || s.shaderErrors.length || (!s.api && k >= T.noContextTicks)) break;
     // it threw or alerted: no need to wait longer
     if (k >= T.errorTicks && page.errors().some((e) => /^(page error|dialog)/.test(e))) break;
-    await S.tick(16);
+    await S.tick(T.frameMs);
   }
   const g = await page.state();
   facts.api = g.api;
@@ -83,7 +83,7 @@ async function firstFrame(S) {
   // same colour, say) has its chance: a counted number of frames more, then the picture it shows then is its first
   if (firstShot.an.blank && g.draws > 0 && !g.shaderErrors.length && !g.gpuErrors.length) {
     S.step('waiting for a visible frame');
-    await S.tick(T.blankWaitFrames * 16, T.blankWaitFrames);
+    await S.tick(T.blankWaitFrames * T.frameMs, T.blankWaitFrames);
     const later = await S.shot();
     facts.first.waited = T.blankWaitFrames;
     if (later) firstShot = later;

@@ -25,7 +25,7 @@ async function levelButtons(S, clickables, levelBy) {
       effect = await S.tryClick(c, 'a control', { watchMotion: !S.R.orbit && S.must.has('diffuse') });
       // a page that starts as round as pixels allow shows one level's change nowhere on the
       // outline: a few more clicks of a button that may be a level control, against the picture before
-      for (let k = 0; k < 3 && (effect === 'shading' || effect === 'none') && [null, 'subdivide', 'coarsen'].includes(nameRole(c, P)); k++) {
+      for (let k = 0; k < T.levelClicksAgain && (effect === 'shading' || effect === 'none') && [null, 'subdivide', 'coarsen'].includes(nameRole(c, P)); k++) {
         if (!await S.press(c, 'again')) break;
         const now = await S.shot();
         if (!now) break;
@@ -61,16 +61,16 @@ async function levelSliderByEffect(S, valued) {
     S.trialsMade++;
     // to its least, then one up: a level control makes the silhouette rounder
     await S.page.setValue(c, values[0], ['input', 'change']);
-    await S.tick(100);
+    await S.tick(S.T.actionTickMs);
     S.cur = await S.shot();
-    const effect = await S.trial(async () => { await S.page.setValue(c, values[1], ['input', 'change']); await S.tick(100); return true; }, { watchMotion: false });
+    const effect = await S.trial(async () => { await S.page.setValue(c, values[1], ['input', 'change']); await S.tick(S.T.actionTickMs); return true; }, { watchMotion: false });
     S.act(`set ${describe(c)} from ${values[0]} to ${values[1]} → ${effectWords[effect]}`);
     if (effect === 'finer') {
       S.assign('levelSlider', c, 'rounder-up');
       return c;
     }
     await S.page.setValue(c, c.value, ['input', 'change']); // not the level: back where it was
-    await S.tick(100);
+    await S.tick(S.T.actionTickMs);
     S.cur = await S.shot();
   }
   return null;
@@ -79,7 +79,7 @@ async function levelSliderByEffect(S, valued) {
 /** Keys: when nothing on the page changes the level, the arrow keys or + and − may. */
 async function levelKeys(S, levelBy) {
   for (const [up, down] of LEVEL_KEYS) {
-    const key = (k) => async () => { await S.page.press(k); S.act(`pressed ${k}`); await S.tick(100); return true; };
+    const key = (k) => async () => { await S.page.press(k); S.act(`pressed ${k}`); await S.tick(S.T.actionTickMs); return true; };
     const e1 = await S.trial(key(up), { watchMotion: false });
     S.act(`  → ${effectWords[e1]}`);
     const e2 = e1 === 'finer' || e1 === 'none' ? await S.trial(key(down), { watchMotion: false }) : 'none';
@@ -181,7 +181,7 @@ export async function climb(S) {
     ladder.length = 0;
     for (const v of values) {
       await S.page.setValue(c, v, ['input', 'change']);
-      await S.tick(100);
+      await S.tick(S.T.actionTickMs);
       const s = await S.shot();
       const settled = ladder.length && settledSilhouette(ladder[ladder.length - 1], s);
       ladder.push(s);

@@ -31,7 +31,7 @@ function turnedTooLittle(S) {
 // runs more frames as the search goes on, as many as orbitSampleWork affords a page of this cost
 export const tickOrbit = async (S, k) => {
   await S.tick(S.T.orbitSampleSeconds * 1000,
-    Math.max(2, Math.min(8 << k, Math.round(60 * S.T.orbitSampleSeconds), Math.floor(S.T.orbitSampleWork / Math.max(1, S.frameWork)))));
+    Math.max(S.T.orbitSampleLeastFrames, Math.min(S.T.orbitSampleFirstFrames << k, Math.round(S.T.framesPerSecond * S.T.orbitSampleSeconds), Math.floor(S.T.orbitSampleWork / Math.max(1, S.frameWork)))));
   await readCamera(S);
 };
 
@@ -52,7 +52,7 @@ export async function sampleOrbit(S, afterLadder = false) {
   // a lit view and two samples at least; where the page sends its view matrix, until the camera has
   // turned cameraTurnDegrees over the lit views (a slow orbit: a light that moves with the camera
   // and one that stays in the world look alike over a small turn)
-  for (; k < T.orbitSamples && (!look(S, img) || k < 2 || turnedTooLittle(S)); k++) {
+  for (; k < T.orbitSamples && (!look(S, img) || k < T.orbitLeastSamples || turnedTooLittle(S)); k++) {
     await tickOrbit(S, k);
     img = await S.page.snap();
   }

@@ -140,7 +140,7 @@ function trials(S) {
         return false;
       }
       S.act(`clicked ${what} ${describe(c)}`);
-      await S.tick(100);
+      await S.tick(S.T.actionTickMs);
       return true;
     },
     /** Tries one action from the state as it is and says what it did to the picture. */
@@ -151,7 +151,7 @@ function trials(S) {
       if (!after) return 'none';
       let later = after;
       if (watchMotion || S.moving) {
-        await S.tick(T.trialTickMs, 2); // three frames: an orbit a small step a frame shows it moved
+        await S.tick(T.trialTickMs, T.trialFrames); // trialFrames + 1 frames: an orbit a small step a frame shows it moved
         later = await S.shot();
       }
       const effect = effectOf({ before, after, later, wasMoving: S.moving }, T);
@@ -171,7 +171,7 @@ function trials(S) {
     },
     /** Does the picture move by itself over three frames? */
     async watch() {
-      await S.tick(T.watchTickMs, 2);
+      await S.tick(T.watchTickMs, T.watchFrames);
       const next = await S.shot();
       S.moving = pictureChange(S.cur.img, next.img, T) > T.pictureMoves;
       S.cur = next;

@@ -25,7 +25,7 @@ export async function trySliders(S, controls) {
       return k === 's' ? (Number(S.now(c)) > (lo + hi) / 2 ? lo : hi) : (Number(S.now(c)) > lo ? lo : hi); // s: far from where it is; others: to the least
     };
     const vs = await setGroup(S, g, target, ['input']);
-    await S.tick(100);
+    await S.tick(S.T.actionTickMs);
     let after = await S.page.snap();
     // what the page sent differently (sentChanges) decides where the picture moves by itself
     const sent = { input: sentChanges(sentBefore, await readSent(S), animated), change: null };
@@ -35,7 +35,7 @@ export async function trySliders(S, controls) {
     let how = 'input';
     if (!sliderActed({ moving: S.moving, picture: changed.input > T.sliderChange, sent: sent.input })) {
       await setGroup(S, g, target, ['change']);
-      await S.tick(100);
+      await S.tick(S.T.actionTickMs);
       after = await S.page.snap();
       sent.change = sentChanges(sentBefore, await readSent(S), animated);
       changed.change = pictureChange(base, after, T);
@@ -48,7 +48,7 @@ export async function trySliders(S, controls) {
     // back to where it was (drawn with the next slider's frame, or the last one below)
     await setGroup(S, g, (c) => S.now(c));
   }
-  await S.tick(100);
+  await S.tick(S.T.actionTickMs);
 }
 
 /** s at its least (where that is 0 or below): one picture, in the judged view; then s back. */
@@ -58,9 +58,9 @@ export async function leastShininess(S, controls) {
   const lo = c.min === '' || c.min === undefined || c.min === null ? 0 : Number(c.min); // a range's min defaults to 0
   if (!(lo <= 0)) return;
   await S.page.setValue(c, lo, ['input', 'change']);
-  await S.tick(100);
+  await S.tick(S.T.actionTickMs);
   const after = await S.page.snap();
   await S.page.setValue(c, S.now(c), ['input', 'change']);
-  await S.tick(100);
+  await S.tick(S.T.actionTickMs);
   if (after) S.facts.leastS = { value: lo, image: S.keep('least-s', after) };
 }

@@ -43,7 +43,7 @@ export async function unclip(S, controls, img, an) {
       return Math.round(1000 * (lo + (v - lo) / 2)) / 1000;
     });
     g.controls.forEach((c, i) => S.values.set(c.index, vs[i]));
-    await S.tick(100);
+    await S.tick(S.T.actionTickMs);
     const sh = await S.shot();
     if (!sh || sh.an.blank) break;
     shot = sh;
@@ -80,13 +80,13 @@ export async function brighten(S, controls, img, an) {
   if (!g || g.controls.every((c) => Number(S.now(c)) >= greatest(c))) return null;
   S.step('raising the page\'s own light: the picture is too dim to show its shading');
   const vs = await setGroup(S, g, greatest);
-  await S.tick(100);
+  await S.tick(S.T.actionTickMs);
   const sh = await S.shot();
   const after = sh && !sh.an.blank ? brightnessSpread(sh.img, an, T) : 0;
   if (after < T.litSpread) {
     // raised as far as the page lets it and still too dim to read: set back, and read as it was seen
     await setGroup(S, g, (c) => S.now(c));
-    await S.tick(100);
+    await S.tick(S.T.actionTickMs);
     return null;
   }
   g.controls.forEach((c, i) => S.values.set(c.index, vs[i]));
