@@ -1,11 +1,13 @@
 // A part's artifact on disk (Lighthouse's latest-run/): `facts.json` (what the page showed, as
 // plain data) and its pictures as PNG files beside it, a picture shown twice stored once
-// (facts.json's `files` maps each picture's name to its file). Read back, it audits as it did
-// when gathered: `npm run grade -- --audit-only OUT` re-judges a class with no browser.
+// (facts.json's `files` maps each picture's name to its file; its `schema` numbers its shape).
+// Read back, it audits as it did when gathered: `npm run grade -- --audit-only OUT` re-judges a
+// class with no browser.
 import { createHash } from 'node:crypto';
 import { existsSync, mkdirSync, readFileSync, readdirSync, rmSync, writeFileSync } from 'node:fs';
 import path from 'node:path';
 import { PNG } from 'pngjs';
+import { ARTIFACT_SCHEMA, currentFacts } from '../core/artifact-schema.js';
 
 /** A picture ({ width, height, data }) as PNG bytes: RGB where every pixel is opaque (the same pixels read back), else RGBA. */
 export function pngOf(img) {
@@ -31,15 +33,18 @@ export function writeArtifact(dir, { facts, images }) {
     }
     files[name] = byHash.get(hash);
   }
-  writeFileSync(path.join(dir, 'facts.json'), `${JSON.stringify({ ...facts, files }, null, 1)}\n`);
+  writeFileSync(path.join(dir, 'facts.json'), `${JSON.stringify({ schema: ARTIFACT_SCHEMA, ...facts, files }, null, 1)}\n`);
   return files;
 }
 
-/** The artifact in `dir`: { facts, images, files }; null when there is none. */
+/**
+ * The artifact in `dir`: { facts, images, files }, its facts in today's shape (an older one brought
+ * up to it by core/artifact-schema.js); null when there is none.
+ */
 export function readArtifact(dir) {
   const f = path.join(dir, 'facts.json');
   if (!existsSync(f)) return null;
-  const { files = {}, ...facts } = JSON.parse(readFileSync(f, 'utf8'));
+  const { files = {}, ...facts } = currentFacts(JSON.parse(readFileSync(f, 'utf8')));
   const images = {};
   const read = new Map();
   for (const [name, file] of Object.entries(files)) {

@@ -14,6 +14,7 @@ import { auditDirs } from '../../grader/node/audit-pool.js';
 import { regatherLines } from '../../grader/node/audit-only.js';
 import { recording, staleKeys } from '../../grader/core/gather/reads.js';
 import { rolesInWords } from '../../grader/core/computed/roles.js';
+import { currentFacts } from '../../grader/core/artifact-schema.js';
 import { mergeRubric } from '../../grader/core/rubric.js';
 
 const here = path.dirname(fileURLToPath(import.meta.url));
@@ -100,7 +101,7 @@ test('the roles are kept as facts and put in words under the rubric given: a sli
   }
   const ada = read(path.join(dirOf('ada', 'WP04P1'), 'facts.json'));
   assert.match(rolesInWords(ada, rubric.thresholds).subdivide, /\(listens: click\): the silhouette got rounder$/);
-  // an artifact from before roles were kept as facts: its sentences as they were
-  assert.deepEqual(rolesInWords({ roles: { orbit: 'button "Spin": the picture stopped moving' } }, rubric.thresholds), { orbit: 'button "Spin": the picture stopped moving' });
+  // an artifact from before roles were kept as facts, read as readArtifact reads it: its sentences as they were
+  assert.deepEqual(rolesInWords(currentFacts({ roles: { orbit: 'button "Spin": the picture stopped moving' } }), rubric.thresholds), { orbit: 'button "Spin": the picture stopped moving' });
 });
 

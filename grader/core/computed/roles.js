@@ -18,7 +18,7 @@ const FOUND = {
 
 /** One role in words: "button "Subdivide #up" (listens: click): the silhouette got rounder", "the ArrowUp key: …". */
 function roleWords(r, facts, T) {
-  if (typeof r === 'string') return r; // (an artifact from before roles were kept as facts)
+  if (r.words) return r.words; // (a role kept as a sentence only: core/artifact-schema.js)
   const slider = r.found === 'shading' ? (facts.sliders || []).find((s) => s.control === r.control) : null;
   const found = FOUND[r.found](r, slider ? sliderEvent(slider, T) : null);
   if (r.key) return `the ${r.key} key: ${found}`;

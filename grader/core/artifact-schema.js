@@ -1,0 +1,27 @@
+// The shape of a part's artifact (facts.json), by number: `schema` says which shape a file has,
+// and an artifact of an older shape is brought to today's here, in one place, so that no audit
+// guesses a shape. Shapes:
+//   1: no `schema` key; a role in facts.roles may be a sentence (written before roles were kept as
+//      facts: the control, its description and a word for what was seen)
+//   2: `schema` is 2; every role is an object (today's)
+
+/** The shape the grader writes and audits. */
+export const ARTIFACT_SCHEMA = 2;
+
+/** What each older shape needs to become the next one: schema → (facts) → facts. */
+const UPGRADES = {
+  1: (facts) => ({
+    ...facts,
+    ...(facts.roles ? { roles: Object.fromEntries(Object.entries(facts.roles).map(([role, r]) => [role, typeof r === 'string' ? { words: r } : r])) } : {}),
+  }),
+};
+
+/** An artifact's facts read from a file, in today's shape (`schema` set); throws on a shape newer than this grader's. */
+export function currentFacts(facts) {
+  let from = facts.schema ?? 1;
+  if (!Number.isInteger(from) || from < 1) throw new Error(`this artifact's schema (${JSON.stringify(facts.schema)}) is not one the grader knows`);
+  if (from > ARTIFACT_SCHEMA) throw new Error(`this artifact was written by a newer grader (schema ${from}; this grader reads up to ${ARTIFACT_SCHEMA}): grade it with that grader, or gather it again`);
+  let out = facts;
+  for (; from < ARTIFACT_SCHEMA; from++) out = UPGRADES[from](out);
+  return { ...out, schema: ARTIFACT_SCHEMA };
+}
