@@ -6,7 +6,7 @@
 import { existsSync, readFileSync, readdirSync } from 'node:fs';
 import path from 'node:path';
 import { readArtifact, listArtifacts } from '../grader/node/artifacts.js';
-import { parseOptions, UsageError } from './cli.js';
+import { parseOptions, UsageError, progressLine } from './cli.js';
 
 const HELP = `usage: node tools/compare-gradings.js --a OUT1 --b OUT2
 Compares two grading out folders part by part: verdicts and reasons (parts/), facts and pictures
@@ -52,8 +52,9 @@ function main() {
   // (a folder of artifacts, such as tests/fixtures/artifacts, compares as it is)
   const artifactsOf = (out) => (existsSync(path.join(out, 'artifacts')) ? path.join(out, 'artifacts') : out);
   const arts = listArtifacts(artifactsOf(o.a));
+  const progress = progressLine('compare-gradings');
   for (const [k, { submission, part, dir }] of arts.entries()) {
-    process.stderr.write(`\rcompare-gradings: artifact ${k + 1} of ${arts.length}`);
+    progress(`artifact ${k + 1} of ${arts.length}`);
     const a = readArtifact(dir), b = readArtifact(path.join(artifactsOf(o.b), submission, part));
     if (!b) { diffs.push(`${submission} ${part}: no artifact in ${o.b}`); continue; }
     parts++;
@@ -64,7 +65,7 @@ function main() {
       if (!x || !y || x.width !== y.width || x.height !== y.height || Buffer.compare(Buffer.from(x.data), Buffer.from(y.data)) !== 0) diffs.push(`${submission} ${part}: picture ${name} differs`);
     }
   }
-  process.stderr.write('\n');
+  progress.end(`${arts.length} artifacts compared`);
   for (const d of diffs) console.log(d);
   console.log(`compare-gradings: ${ra.size} parts' verdicts and reasons, ${parts} artifacts with ${pictures} pictures: ${diffs.length ? `${diffs.length} differences` : 'the same'}`);
   process.exit(diffs.length ? 1 : 0);
