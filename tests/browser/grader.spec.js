@@ -3,7 +3,7 @@
 // exactly their recorded artifacts (which tests/unit/grader-class.test.js audits against the class's
 // labels); and the course's real hand-ins, gathered live, against their labels.
 import { spawn, spawnSync } from 'node:child_process';
-import { cpSync, existsSync, mkdirSync, mkdtempSync, readFileSync, readdirSync, statSync, writeFileSync } from 'node:fs';
+import { cpSync, existsSync, mkdirSync, mkdtempSync, readFileSync, readdirSync, rmSync, statSync, writeFileSync } from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
 import { test, expect, chromium } from '@playwright/test';
@@ -231,10 +231,22 @@ test.describe('grading real hand-ins against their labels', () => {
     const rubric = path.join(out, 'rubric.json');
     writeFileSync(rubric, JSON.stringify({ reference: false, timeoutSeconds: 300 }));
     const names = readdirSync(HANDINS).filter((n) => statSync(path.join(HANDINS, n)).isDirectory()).sort();
+    // the real class has no broken part: beside it one of ours, eve (a page that throws, one that draws
+    // nothing, one with no canvas, a shader that does not compile; her page that never returns left
+    // out, for time), labelled broken, so that "no broken part passed" is a test that can fail
+    const cls = mkdtempSync(path.join(os.tmpdir(), 'handins-class-'));
+    cpSync(HANDINS, cls, { recursive: true });
+    const fixtures = mkdtempSync(path.join(os.tmpdir(), 'handins-fixtures-'));
+    buildClass(fixtures);
+    cpSync(path.join(fixtures, 'eve'), path.join(cls, 'eve'), { recursive: true });
+    rmSync(path.join(cls, 'eve', 'Part3.html'));
+    const eve = JSON.parse(readFileSync(path.join(fixtures, 'labels.json'), 'utf8')).eve;
+    const broken = ['WP04P1', 'WP04P2', 'WP04P4', 'WP04P5'].map((part) => ['eve', part, 'broken', 'WebGL', '', `${eve[part].because} (a fixture of ours)`].join('\t'));
+    writeFileSync(path.join(cls, 'labels.tsv'), `${readFileSync(path.join(HANDINS, 'labels.tsv'), 'utf8').trimEnd()}\n${broken.join('\n')}\n`);
     const started = Date.now();
     const firefox = await launchFirefox();
     const [graded, checked] = await Promise.all([
-      run(['grader/node/grade.js', '--batch', HANDINS, '--labels', path.join(HANDINS, 'labels.tsv'), '--rubric', rubric, '--out', out], 2_400_000),
+      run(['grader/node/grade.js', '--batch', cls, '--labels', path.join(cls, 'labels.tsv'), '--rubric', rubric, '--out', out], 2_400_000),
       checkClassInFirefox(firefox, baseURL, HANDINS, checkedInFirefox(names), mkdtempSync(path.join(os.tmpdir(), 'handins-zip-'))).finally(() => firefox.close()),
     ]);
     expect(graded.status, graded.stderr + graded.stdout.slice(-3000)).toBe(0);
@@ -242,8 +254,10 @@ test.describe('grading real hand-ins against their labels', () => {
     const a = report.labels;
     const summary = graded.stdout.split('\n').filter((l) => l.startsWith('labels:')).join('\n');
     console.log(`graded and checked in Firefox ${HANDINS} in ${((Date.now() - started) / 1000).toFixed(0)} s\n${summary}`);
-    // what is measured, with the labels of 2026-11-25: 33 of 34, 13 of 13, 0 broken, 1 of 21 partial, every part judged
-    expect(a.agree, summary).toBeGreaterThanOrEqual(Math.min(a.total, Math.ceil((33 / 34) * a.total)));
+    // what is measured, with the labels of 2026-11-25: 33 of 34, 13 of 13, 1 of 21 partial, every part
+    // judged; and eve's 4 broken parts failed
+    expect(a.broken, summary).toBe(4);
+    expect(a.agree, summary).toBeGreaterThanOrEqual(Math.min(a.total, Math.ceil((33 / 34) * (a.total - 4)) + 4));
     expect(a.notGraded, summary).toEqual([]);
     expect(a.correctPassed, summary).toBe(a.correct);
     expect(a.brokenPassed, summary).toBe(0);
