@@ -173,11 +173,3 @@ export function sentChanges(before, after, animated = []) {
   const skip = new Set(animated);
   return Object.keys(after).filter((k) => !skip.has(k) && k in before && before[k] !== after[k]).sort();
 }
-
-/**
- * Did an event on a slider change what the page shows? Where the picture moves by itself (an orbit
- * that cannot be stopped), a changed picture is no evidence: what the page sent is (`sent`, the keys
- * it changed; null where not recorded, and then the picture decides). Where it stands still, the
- * picture decides, as before.
- */
-export const sliderActed = ({ moving, picture, sent }) => (moving && sent ? sent.length > 0 : picture);

@@ -8,7 +8,8 @@ import { readFileSync } from 'node:fs';
 import { meshAnalysis } from '../../grader/browser/mesh.js';
 import { auditWinding, auditClosed, auditPerFace, auditGrowth } from '../../grader/core/audits/geometry.js';
 import { checkList } from '../../grader/core/verdict.js';
-import { sentChanges, sliderActed } from '../../grader/core/controls.js';
+import { sentChanges } from '../../grader/core/controls.js';
+import { sliderEvent } from '../../grader/core/computed/slider-event.js';
 import { tetrahedronSphere, vertexCount } from '../../common/sphere.js';
 
 const rubric = JSON.parse(readFileSync(new URL('../../grader/core/rubric.json', import.meta.url), 'utf8'));
@@ -179,9 +180,17 @@ test('what the page sent: the keys a slider changed, the animated ones and buffe
   assert.deepEqual(sentChanges(before, after, ['uniform view']), ['uniform kd']);
   assert.deepEqual(sentChanges(before, { ...before, 'uniform view': '0,0,1' }, ['uniform view']), []);
   assert.equal(sentChanges(null, after), null);
-  // moving: what was sent decides; standing still (or nothing recorded): the picture
-  assert.equal(sliderActed({ moving: true, picture: true, sent: [] }), false);
-  assert.equal(sliderActed({ moving: true, picture: false, sent: ['uniform kd'] }), true);
-  assert.equal(sliderActed({ moving: false, picture: true, sent: [] }), true);
-  assert.equal(sliderActed({ moving: true, picture: true, sent: null }), true);
+  // the slider's event, one reading for the gathering and the audits: moving, what was sent decides;
+  // standing still (or nothing sent recorded), how much the picture changed against sliderChange
+  const T = { sliderChange: 0.002 };
+  const big = 0.1, none = 0;
+  assert.equal(sliderEvent({ moving: true, sent: { input: [], change: [] }, changed: { input: big, change: big } }, T), 'none');
+  assert.equal(sliderEvent({ moving: true, sent: { input: ['uniform kd'], change: null }, changed: { input: none, change: null } }, T), 'input');
+  assert.equal(sliderEvent({ moving: true, sent: { input: [], change: ['uniform kd'] }, changed: { input: none, change: none } }, T), 'change');
+  assert.equal(sliderEvent({ moving: true, sent: { input: [], change: null }, changed: { input: big, change: null } }, T), 'none', 'the change event not tried yet');
+  assert.equal(sliderEvent({ changed: { input: big, change: null } }, T), 'input');
+  assert.equal(sliderEvent({ changed: { input: none, change: null } }, T), 'none', 'the change event not tried yet');
+  assert.equal(sliderEvent({ changed: { input: none, change: big } }, T), 'change');
+  assert.equal(sliderEvent({ changed: { input: none, change: 0.001 } }, T), 'none');
+  assert.equal(sliderEvent({ how: 'change' }, T), 'change', 'an artifact from before the changes were kept: the gathering\'s reading');
 });

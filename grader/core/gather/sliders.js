@@ -2,7 +2,8 @@
 // sliders set far from where they are, on input (else change), with how much the picture changed on
 // each event; s at its least.
 import { pictureChange } from '../measure.js';
-import { describeGroup, sentChanges, sliderActed } from '../controls.js';
+import { describeGroup, sentChanges } from '../controls.js';
+import { sliderEvent } from '../computed/slider-event.js';
 import { readSent } from './geometry.js';
 import { groupsOf, setGroup, least, free, groupFacts } from './params.js';
 
@@ -29,22 +30,24 @@ export async function trySliders(S, controls) {
     let after = await S.page.snap();
     // what the page sent differently (sentChanges) decides where the picture moves by itself
     const sent = { input: sentChanges(sentBefore, await readSent(S), animated), change: null };
-    // how much the picture changed on each event tried (the audit decides the event from these);
-    // the change event is tried where the input event showed nothing
+    // how much the picture changed on each event tried; the event it acted on is decided by the
+    // one reading the audits use (computed/slider-event.js), on what was seen so far: the change
+    // event is tried where the input event showed nothing
     const changed = { input: pictureChange(base, after, T), change: null };
-    let how = 'input';
-    if (!sliderActed({ moving: S.moving, picture: changed.input > T.sliderChange, sent: sent.input })) {
+    const seen = () => ({ changed, ...(S.moving && sent.input ? { moving: true, sent } : {}) });
+    let how = sliderEvent(seen(), T);
+    if (how !== 'input') {
       await setGroup(S, g, target, ['change']);
       await S.tick(S.T.actionTickMs);
       after = await S.page.snap();
       sent.change = sentChanges(sentBefore, await readSent(S), animated);
       changed.change = pictureChange(base, after, T);
-      how = sliderActed({ moving: S.moving, picture: changed.change > T.sliderChange, sent: sent.change }) ? 'change' : 'none';
+      how = sliderEvent(seen(), T);
     }
     const r = k && k !== 'levelSlider' ? k : null;
     S.act(`set ${describeGroup(g)} to ${vs[0]} (${how === 'none' ? 'no visible change' : `the picture changed on the ${how} event`})`);
     if (how !== 'none' && k !== 'levelSlider') facts.roles[r || `slider ${Object.keys(facts.roles).length}`] = { control: g.controls[0].index, what: describeGroup(g), found: 'shading' };
-    facts.sliders.push({ ...groupFacts(g, vs), role: r, levelSlider: k === 'levelSlider', target: vs[0], how, changed, ...(S.moving && sent.input ? { moving: true, sent } : {}), image: S.keep(`slider-${facts.sliders.length}`, after) });
+    facts.sliders.push({ ...groupFacts(g, vs), role: r, levelSlider: k === 'levelSlider', target: vs[0], how, ...seen(), image: S.keep(`slider-${facts.sliders.length}`, after) });
     // back to where it was (drawn with the next slider's frame, or the last one below)
     await setGroup(S, g, (c) => S.now(c));
   }
