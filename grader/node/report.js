@@ -86,7 +86,9 @@ th[data-sort]{cursor:pointer;text-decoration:underline dotted}.num{text-align:ri
 changing, and judged the picture by what the slide's step asks for (a round sphere; normals as colours; diffuse shading for a
 fitted light; a highlight; sliders on the input event; shading per fragment). Verdicts: pass, review (a teacher should look),
 fail. Click a cell for its reasons and pictures; click a column head to sort.</p>
-<p class="browsers">Graded in ${browsers.length ? browsers.map(esc).join(' and ') : 'a browser that did not say its version (graded before the report named it)'}.</p>
+<p class="browsers">${browsers.length ? `Graded in ${browsers.map(esc).join(' and ')}.`
+    : rows.every((s) => s.parts.every((x) => x.status === 'missing')) ? 'No page was opened in a browser: no part was handed in.'
+      : 'Graded in a browser that did not say its version (graded before the report named it).'}</p>
 <table id="grid"><thead><tr><th data-sort="name">submission</th><th data-sort="passes">passes</th>${PARTS.map((p, i) => `<th data-sort="${i + 2}">${p}</th>`).join('')}</tr></thead>
 <tbody>
 ${grid}
