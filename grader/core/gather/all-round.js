@@ -7,7 +7,7 @@
 // hole seen obliquely notches the outline; it shows as a gap only near face-on). Each position's
 // outline is kept as numbers, the first with a gap as a picture; the audit (auditAllRound) judges them.
 import { cameraTurn } from '../computed/camera.js';
-import { readCamera } from './orbit.js';
+import { readCamera, orbitSampleFrames } from './orbit.js';
 
 /** Looks at the sphere all round its orbit where its mesh cannot be read: sets facts.allRound. */
 export async function lookAllRound(S) {
@@ -21,8 +21,8 @@ export async function lookAllRound(S) {
   const views = [];
   await readCamera(S);
   let last = S.camera, turned = last ? 0 : null, gap = null;
-  // frames a step, at 60 Hz: as many as the page's work a frame allows (orbitSampleWork), as orbit.js's samples
-  const most = () => Math.max(1, Math.min(Math.round(T.framesPerSecond * T.orbitSampleSeconds), Math.floor(T.orbitSampleWork / Math.max(1, S.frameWork))));
+  // frames a step: at most an orbit sample's (orbit.js), at least one
+  const most = () => Math.max(1, orbitSampleFrames(S));
   let frames = T.roundFirstFrames;
   for (let k = 0; k < T.roundSamples && !(turned >= 360); k++) {
     await S.tick((1000 * frames) / T.framesPerSecond, frames);

@@ -27,11 +27,13 @@ function turnedTooLittle(S) {
   return turn !== null && turn < S.T.cameraTurnDegrees;
 }
 
+/** The most frames an orbit sample runs: orbitSampleSeconds of frames, as many as orbitSampleWork affords a page of this cost. */
+export const orbitSampleFrames = (S) => Math.min(Math.round(S.T.framesPerSecond * S.T.orbitSampleSeconds), Math.floor(S.T.orbitSampleWork / Math.max(1, S.frameWork)));
+
 // the k-th orbit sample's frames: many pages turn the camera a fixed step a frame, so each sample
-// runs more frames as the search goes on, as many as orbitSampleWork affords a page of this cost
+// runs more frames as the search goes on, up to orbitSampleFrames
 export const tickOrbit = async (S, k) => {
-  await S.tick(S.T.orbitSampleSeconds * 1000,
-    Math.max(S.T.orbitSampleLeastFrames, Math.min(S.T.orbitSampleFirstFrames << k, Math.round(S.T.framesPerSecond * S.T.orbitSampleSeconds), Math.floor(S.T.orbitSampleWork / Math.max(1, S.frameWork)))));
+  await S.tick(S.T.orbitSampleSeconds * 1000, Math.max(S.T.orbitSampleLeastFrames, Math.min(S.T.orbitSampleFirstFrames << k, orbitSampleFrames(S))));
   await readCamera(S);
 };
 
