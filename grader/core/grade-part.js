@@ -16,10 +16,10 @@ export async function gradePart(page, { part, rubric, progress, deadline, timing
   return { ...judged(artifact, rubric), timing, busy: timing.tick ? timing.tick.ms : 0 };
 }
 
-/** An artifact's audit in the shape a report reads. */
-export function judged(artifact, rubric) {
+/** An artifact's audit in the shape a report reads (`audits`: the units run, audits/list.js's by default). */
+export function judged(artifact, rubric, { audits } = {}) {
   const { facts, images } = artifact;
-  const a = auditPart(artifact, rubric);
+  const a = auditPart(artifact, rubric, audits ? { audits } : {});
   const shown = {};
   for (const [k, name] of Object.entries(a.shown)) if (images[name]) shown[k] = images[name];
   return { artifact, fail: a.fail, failId: a.failId, checks: a.checks, numbers: a.numbers, tooSlow: a.tooSlow, tooHeavy: a.tooHeavy, notGraded: a.notGraded || null, notGradedId: a.notGradedId, images: shown, shown: a.shown,

@@ -15,9 +15,10 @@ const WORKER = fileURLToPath(new URL('./audit-worker.js', import.meta.url));
  * Judges the artifact in each of `dirs` under `rubric`: a Map dir → { fail, checks, numbers, shown,
  * tooSlow, api, canvas, actions, controls, files, errors, stale } (null where there is no artifact;
  * `stale`: the keys its gathering read that `rubric` gives other values, gather/reads.js).
- * `progress(done, total)` hears each one.
+ * `progress(done, total)` hears each one; `strict`: the audit units run strictly (audits/strict.js: a
+ * unit that reads a fact it does not name throws), as the tests run them.
  */
-export async function auditDirs(dirs, rubric, { workers = os.availableParallelism(), progress = () => {} } = {}) {
+export async function auditDirs(dirs, rubric, { workers = os.availableParallelism(), progress = () => {}, strict = false } = {}) {
   const results = new Map();
   // the largest artifacts (the most pictures to read and fit) first, so that no process is left
   // with a long one at the end
@@ -51,7 +52,7 @@ export async function auditDirs(dirs, rubric, { workers = os.availableParallelis
       progress(++done, dirs.length);
       next();
     });
-    child.send({ rubric });
+    child.send({ rubric, strict });
     next();
   });
   await Promise.all(Array.from({ length: Math.max(1, Math.min(workers, dirs.length)) }, run));

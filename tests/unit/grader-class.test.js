@@ -22,10 +22,11 @@ const results = read(path.join(RECORDED, 'results.json'));
 const labelled = Object.entries(labels).flatMap(([name, parts]) => Object.entries(parts).map(([part, label]) => ({ name, part, label })));
 const dirOf = (name, part) => path.join(RECORDED, name, part);
 const recorded = labelled.map(({ name, part }) => dirOf(name, part)).filter((d) => existsSync(path.join(d, 'facts.json')));
-// the class judged once under the test rubric (in one process a core: audit-pool.js), and again under others where a test asks
+// the class judged once under the test rubric (in one process a core: audit-pool.js), and again under others where a test asks;
+// strictly: an audit unit that reads a fact it does not name fails it (audits/strict.js, tests/unit/audit-list.test.js)
 const audits = new Map();
 async function auditAll(r = rubric, dirs = recorded) {
-  if (!audits.has(r)) audits.set(r, await auditDirs(dirs, r));
+  if (!audits.has(r)) audits.set(r, await auditDirs(dirs, r, { strict: true }));
   return audits.get(r);
 }
 

@@ -1,6 +1,7 @@
 // A page must not show one thing and hand the grader another: each picture that decides a verdict
 // is read back by the page (the grader's own functions, kept from before the page ran) and taken
 // as the browser shows it (a screenshot from outside the page), and the two must agree.
+import { unit } from './unit.js';
 
 /** This module's audits: id → title, the slide's sentence it checks, the artifacts it reads. */
 export const META = {
@@ -23,3 +24,6 @@ export function auditShown({ facts, T, sayAs, imagesShown }) {
   }
   return off.some((d) => d.at === 'first');
 }
+
+/** This module's audit units (audits/list.js runs them in its order). */
+export const UNITS = [unit(META, 'shown-channels', auditShown)];

@@ -3,6 +3,7 @@
 import { nearPointLight, clearlyBetter } from '../measure.js';
 import { fmt } from '../format.js';
 import { SLIDE } from './slides.js';
+import { unit } from './unit.js';
 
 /** This module's audits: id → title, the slide's sentence it checks, the artifacts it reads. */
 export const META = {
@@ -73,3 +74,11 @@ export function auditBrightened({ facts, sayAs, imagesShown }) {
   imagesShown.brightened = b.image;
   say('pass', `note: the sphere is too dim to show its shading (brightness spread ${fmt(b.before, 3)}: a dark light); it was judged with the page's own slider raised: ${settings(b.steps)} (spread ${fmt(b.after, 3)} then)`);
 }
+
+/** This module's audit units (audits/list.js runs them in its order). */
+export const UNITS = [
+  unit(META, 'unclipped', (C, { shading }) => (shading.shaded ? auditUnclipped(C) : null), { uses: ['shading'] }),
+  unit(META, 'brightened', (C, { shading }) => (shading.shaded ? auditBrightened(C) : null), { uses: ['shading'] }),
+  unit(META, 'diffuse', (C, { shading, 'lit-views': lit }) => (shading.shaded ? auditDiffuse(C, shading.shading, lit) : null), { uses: ['shading', 'lit-views'] }),
+  unit(META, 'point-light', (C, { shading }) => (shading.shaded ? auditPointLight(C, shading.shading) : null), { uses: ['shading'] }),
+];

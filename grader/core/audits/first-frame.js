@@ -4,6 +4,7 @@
 import { analyse } from '../measure.js';
 import { NOT_GRADED } from '../verdict.js';
 import { SLIDE } from './slides.js';
+import { unit, end } from './unit.js';
 
 /** This module's audits: id → title, the slide's sentence it checks, the artifacts it reads. */
 export const META = {
@@ -55,3 +56,19 @@ export function notGradedHere({ facts }) {
   return `${NOT_GRADED}: this part uses WebGPU (it asked for navigator.gpu or a 'webgpu' canvas), and this browser has no WebGPU ` +
     '(Firefox ESR has none): grade it in Chromium, npm run grade without --browser firefox';
 }
+
+/** This module's audit units (audits/list.js runs them in its order). */
+export const UNITS = [
+  unit(META, 'not-graded', (C) => {
+    const reason = notGradedHere(C);
+    if (reason) C.notGraded = { reason, id: 'not-graded' };
+  }),
+  // a part that drew nothing ends here; where what the grader read is not what a student sees
+  // (shown-channels), the review stands and nothing is failed on it
+  unit(META, 'first-frame', (C, results) => {
+    const fail = auditFirstFrame(C);
+    if (fail === STOP) return end();
+    if (fail) return results['shown-channels'] ? end() : end(fail, 'first-frame');
+    return null;
+  }, { also: ['shaders-compile', 'webgpu-adapter'], uses: ['shown-channels'] }),
+];

@@ -6,15 +6,16 @@
 
 const pct = (x) => `${Math.round(100 * x)}%`;
 import { SLIDE } from './slides.js';
+import { unit } from './unit.js';
 
 /** This module's audits: id → title, the slide's sentence it checks, the artifacts it reads. */
 export const META = {
-  winding: { title: 'The triangles wound so that the culling keeps the near side', slide: SLIDE.depthCulling, reads: ['facts.geometry', 'facts.geometryAtFirst', 'facts.faces'] },
-  closed: { title: 'A closed mesh: every edge in two triangles', slide: SLIDE.sphere, reads: ['facts.geometry'] },
-  'per-face': { title: 'n = p at each vertex, not a colour per face', slide: SLIDE.normalColour, reads: ['facts.geometry'] },
+  winding: { title: 'The triangles wound so that the culling keeps the near side', slide: SLIDE.depthCulling, reads: ['facts.geometry', 'facts.geometryAtFirst', 'facts.faces', 'facts.api'] },
+  closed: { title: 'A closed mesh: every edge in two triangles', slide: SLIDE.sphere, reads: ['facts.geometry', 'facts.geometryAtFirst'] },
+  'per-face': { title: 'n = p at each vertex, not a colour per face', slide: SLIDE.normalColour, reads: ['facts.geometry', 'facts.geometryAtFirst'] },
   growth: { title: 'The mesh not built again every frame', slide: SLIDE.recycle, reads: ['facts.geometryAtFirst'] },
   'loops-multiply': { title: 'One animation loop, however often a control is used', slide: null, reads: ['facts.frameDraws'] },
-  'picture-not-geometry': { title: 'A sphere of triangles, not a picture', slide: SLIDE.sphere, reads: ['facts.geometry', 'images.judged'] },
+  'picture-not-geometry': { title: 'A sphere of triangles, not a picture', slide: SLIDE.sphere, reads: ['facts.geometry', 'images.judged', 'facts.geometryAtFirst'] },
   'all-round': { title: 'Closed from every side seen along the orbit', slide: SLIDE.sphere, reads: ['facts.allRound'] },
 };
 
@@ -131,3 +132,14 @@ export function auditAllRound({ facts, T, sayAs, numbers, imagesShown }) {
     say('pass', `closed from every side it was seen from: ${round.length} round, filled outlines ${where} (${why}, so it was looked at all round)`);
   } else say('pass', `note: could not see whether the sphere is closed all round: no view ${where} showed a round outline (${why})`);
 }
+
+/** This module's audit units (audits/list.js runs them in its order). */
+export const UNITS = [
+  unit(META, 'closed', auditClosed),
+  unit(META, 'all-round', auditAllRound),
+  unit(META, 'growth', auditGrowth),
+  unit(META, 'loops-multiply', auditLoopsMultiply),
+  unit(META, 'picture-not-geometry', (C, results) => auditPictureNotGeometry(C, results['judged-picture']), { uses: ['judged-picture'] }),
+  unit(META, 'per-face', auditPerFace),
+  unit(META, 'winding', auditWinding),
+];

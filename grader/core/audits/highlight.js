@@ -6,6 +6,8 @@ import { highlightEvidence } from '../computed/evidence.js';
 import { fullFit, lightAngle } from '../computed/views.js';
 import { fmt } from '../format.js';
 import { SLIDE } from './slides.js';
+import { viewFits } from '../computed/evidence.js';
+import { unit } from './unit.js';
 
 /** This module's audits: id → title, the slide's sentence it checks, the artifacts it reads. */
 export const META = {
@@ -81,3 +83,12 @@ function unsure(tint, T) {
   }
   return why.length ? why.join(' and ') : `a fit of R² under ${T.diffuseR2}`;
 }
+
+/** This module's audit units (audits/list.js runs them in its order). */
+export const UNITS = [
+  // the highlight read on the judged picture and on the lit views' full fits; its result (the place
+  // nearer the viewer) is read again farther along (highlight-place)
+  unit(META, 'highlight', (C, { shading, 'lit-views': lit }) => (shading.shaded ? auditHighlight(C, shading.shading, viewFits(lit.map((v) => ({ img: C.images[v.image] })), C.T)) : null),
+    { also: ['highlight-place'], uses: ['shading', 'lit-views'] }),
+  unit(META, 'highlight-place', (C, { highlight }) => (highlight ? auditPlaceFarther(C, highlight) : null), { uses: ['highlight'] }),
+];

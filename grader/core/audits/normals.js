@@ -6,14 +6,15 @@ import { analyse, samples, normalColours, facesViewer, pictureChange, addedTintF
 import { rimAngle } from '../measure/perspective.js';
 import { fmt } from '../format.js';
 import { SLIDE } from './slides.js';
+import { unit } from './unit.js';
 
 /** This module's audits: id → title, the slide's sentence it checks, the artifacts it reads. */
 export const META = {
-  'normal-colours': { title: 'Colours that are the normals, 0.5·n + 0.5', slide: SLIDE.normalColour, reads: ['images.judged', 'facts.facesImage'] },
+  'normal-colours': { title: 'Colours that are the normals, 0.5·n + 0.5', slide: SLIDE.normalColour, reads: ['images.judged', 'facts.facesImage', 'facts.api'] },
   'front-faces': { title: 'The normals facing the viewer: front faces only', slide: SLIDE.depthCulling, reads: ['images.judged', 'facts.noCull', 'facts.faces'] },
   perspective: { title: 'In perspective view (how far the normals reach at the rim)', slide: SLIDE.sphere, note: 'an orthographic view shows the normals out to 90° at the rim', reads: ['images.judged'] },
   'normals-not-light': { title: 'A lit step that shows the normal colouring, not lighting', slide: SLIDE.gouraud, reads: ['images.judged'] },
-  'depth-culling': { title: 'The depth test and back-face culling enabled', slide: SLIDE.depthCulling, reads: ['facts.faces'] },
+  'depth-culling': { title: 'The depth test and back-face culling enabled', slide: SLIDE.depthCulling, reads: ['facts.faces', 'facts.api'] },
 };
 
 /**
@@ -127,3 +128,12 @@ export function auditDepthCulling({ facts, must, sayAs, numbers }) {
   if (faces.culling) say('pass', `back-face culling is enabled (${api.cull}${faces.cullMode && faces.cullMode !== 'back' ? `, culling ${faces.cullMode} faces` : ''})`);
   else say('mistake', `back-face culling is never enabled (${api.cull}): the slide asks for it, though it shows no visible effect`);
 }
+
+/** This module's audit units (audits/list.js runs them in its order). */
+export const UNITS = [
+  unit(META, 'normal-colours', (C, results) => auditNormals(C, results['judged-picture']), { also: ['front-faces'], uses: ['judged-picture'] }),
+  unit(META, 'perspective', (C, results) => auditPerspective(C, results['normal-colours']), { uses: ['normal-colours'] }),
+  unit(META, 'depth-culling', auditDepthCulling),
+  // a lit step that shows WP04P1's colours has no shading to judge (true then): its colours are not lighting
+  unit(META, 'normals-not-light', (C, results) => C.litStep && auditNormalsNotLight(C, results['judged-picture']), { uses: ['judged-picture'] }),
+];

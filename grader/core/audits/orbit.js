@@ -5,12 +5,13 @@ import { cameraRotations, rotationsTurn, staysInWorld } from '../computed/camera
 import { fmt } from '../format.js';
 import { SLIDE } from './slides.js';
 import { rolesInWords } from '../computed/roles.js';
+import { unit } from './unit.js';
 
 /** This module's audits: id → title, the slide's sentence it checks, the artifacts it reads. */
 export const META = {
   'orbit-stops': { title: 'The orbit stops, and stops again', slide: SLIDE.orbit, reads: ['facts.stopped', 'facts.orbitKeptMoving'] },
   'orbit-light': { title: 'The lit side turns as the camera orbits', slide: SLIDE.orbit, reads: ['facts.views'] },
-  'orbit-toggle': { title: 'A button toggles the orbit', slide: SLIDE.orbit, reads: ['facts.orbit', 'facts.controls', 'facts.roles'] },
+  'orbit-toggle': { title: 'A button toggles the orbit', slide: SLIDE.orbit, reads: ['facts.orbit', 'facts.controls', 'facts.roles', 'facts.level'] },
 };
 
 const signedAngle = (a, b) => (180 / Math.PI) * Math.acos(Math.max(-1, Math.min(1, (a[0] * b[0] + a[1] * b[1] + a[2] * b[2]) / (Math.hypot(...a) * Math.hypot(...b)))));
@@ -68,3 +69,10 @@ export function auditNotStopped({ facts, sayAs }) {
   const say = sayAs('orbit-stops');
   if (!facts.stopped) say('pass', 'note: the orbit could not be stopped: the pictures were judged as it moves');
 }
+
+/** This module's audit units (audits/list.js runs them in its order). */
+export const UNITS = [
+  unit(META, 'orbit-stops-again', auditOrbitStopsAgain, { says: ['orbit-stops'] }),
+  unit(META, 'orbit-light', (C, results) => auditOrbit(C, results['lit-views']), { also: ['orbit-toggle'], uses: ['lit-views'] }),
+  unit(META, 'orbit-not-stopped', auditNotStopped, { says: ['orbit-stops'] }),
+];

@@ -3,7 +3,8 @@
 // of the grading as a whole (a page that replaced what the grader reads through, a part too slow
 // on this machine): ids as the audits' are, so that every reason carries one.
 import { SLIDE } from './slides.js';
-import { NOT_GRADED } from '../verdict.js';
+import { NOT_GRADED, tooSlowWords, tooHeavyWords } from '../verdict.js';
+import { unit, end } from './unit.js';
 
 /** These reasons' ids: id → title, the slide's sentence a miss quotes (or null), what it reads. */
 export const META = {
@@ -50,3 +51,33 @@ export const asFail = (f) => ({ fail: f.reason, failId: f.id });
 
 /** The grader's own trouble with a page (`err`): never a pass on it, a teacher looks. A check. */
 export const graderTrouble = (err) => finding('grader-trouble', 'review', `the grader could not finish on this page: ${err.message.split('\n')[0]}`);
+
+/** A page that replaced what the grader reads through may show one thing and hand the grader another. */
+function auditTamper({ facts, sayAs }) {
+  if (facts.tampered) sayAs('tamper')('review', `the page replaced or probed what the grader reads it through: ${facts.tampered.join(', ')} (a hand-in must not change the browser's own functions or the grader's, nor draw otherwise under a test driver): what it showed may not be what the grader saw, a teacher looks`);
+}
+
+/**
+ * Nothing is judged where the gathering ran out of its bound: where it ran out depends on the
+ * machine, the verdict must not. A page that draws is not broken for being slow: not graded here
+ * (the rubric's tooSlowVerdict), or said at that verdict.
+ */
+function auditTooSlow(C) {
+  const { facts, rubric, sayAs } = C;
+  if (!facts.tooSlow) return null;
+  const slow = tooSlow(rubric, facts.tooHeavy != null ? tooHeavyWords(rubric, facts.tooSlow, facts.tooHeavy) : tooSlowWords(rubric, facts.tooSlow));
+  if (slow.level === NOT_GRADED) C.notGraded = { reason: slow.reason, id: slow.id };
+  else sayAs(slow.id)(slow.level, slow.reason);
+  return end();
+}
+
+/** This module's audit units (audits/list.js runs them in its order). */
+export const UNITS = [
+  unit(META, 'tamper', auditTamper),
+  unit(META, 'too-slow', auditTooSlow),
+  // the gathering stopped before it climbed the levels: nothing past the first frame can be judged
+  unit(META, 'ladder-climbed', ({ facts }) => (facts.ladder ? null : end('the grader stopped before the level ladder', 'level-ladder')), { says: ['level-ladder'] }),
+  unit(META, 'level-ladder', ({ facts, sayAs }) => {
+    if (facts.blankAtHigherLevel) sayAs('level-ladder')('mistake', 'the picture goes blank at a higher level: judged at the last level that drew');
+  }),
+];

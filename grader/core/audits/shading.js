@@ -4,11 +4,12 @@
 import { analyse, darkSpots, shadingChange, unnormalisedInputs } from '../measure.js';
 import { fmt } from '../format.js';
 import { SLIDE } from './slides.js';
+import { unit } from './unit.js';
 
 /** This module's audits: id → title, the slide's sentence it checks, the artifacts it reads. */
 export const META = {
   'least-s': { title: 's at its least: pow(0, 0) guarded', slide: SLIDE.guardPow, reads: ['facts.leastS', 'images.judged'] },
-  'per-fragment': { title: 'The Phong model per fragment, its vectors normalised there', slide: SLIDE.phongShading, reads: ['facts.ladder', 'facts.sources', 'images.judged'] },
+  'per-fragment': { title: 'The Phong model per fragment, its vectors normalised there', slide: SLIDE.phongShading, reads: ['facts.ladder', 'facts.sources', 'images.judged', 'facts.judgedLevel', 'facts.level', 'facts.stopped', 'facts.viewMoved'] },
 };
 
 /** The picture at the least s against the judged one (`judged`: { img, an }; the same view). */
@@ -60,3 +61,11 @@ export function auditPerFragment({ facts, images, T, must, sayAs, numbers, image
   } else if (fragmentPow(facts.sources)) say('pass', `no coarse level to compare${facts.level.coarsen ? '' : ' (nothing found that coarsens)'}; the fragment shader evaluates the specular term (pow): per fragment`);
   else say('mistake', 'no coarse level to compare, and no pow() in the fragment shader: the model seems evaluated per vertex');
 }
+
+/** This module's audit units (audits/list.js runs them in its order). */
+export const UNITS = [
+  // s at its least, read in the picture the shading was read in (gather/visible.js)
+  unit(META, 'least-s', (C, { 'judged-picture': judged, shading }) => (C.must.has('highlight') ? auditLeastShininess(C, { ...judged, img: shading.shadeImg }, shading.shading) : null),
+    { uses: ['judged-picture', 'shading'] }),
+  unit(META, 'per-fragment', (C, results) => auditPerFragment(C, results['judged-picture'], results.shading.shading), { uses: ['judged-picture', 'shading'] }),
+];

@@ -5,6 +5,7 @@ import { fullFit } from '../computed/views.js';
 import { sliderEvent } from '../computed/slider-event.js';
 import { fmt } from '../format.js';
 import { SLIDE } from './slides.js';
+import { unit } from './unit.js';
 
 /** This module's audits: id → title, the slide's sentence it checks, the artifacts it reads. */
 export const META = {
@@ -59,3 +60,8 @@ export function auditSliders({ facts, images, T, must, sayAs, rubric, part }, ju
   else if (missing.length && inputOk) say('pass', `note: no slider found for ${missing.join(', ')}`);
   if (must.has('sliderEffects') && dead) say('pass', `note: ${dead} slider(s) change nothing in the picture`);
 }
+
+/** This module's audit units (audits/list.js runs them in its order). */
+export const UNITS = [
+  unit(META, 'sliders', (C, results) => auditSliders(C, results['judged-picture'], results.shading.shading), { also: ['input-event', 'ks-used'], uses: ['judged-picture', 'shading'] }),
+];

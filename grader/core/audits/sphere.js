@@ -3,6 +3,9 @@
 import { fmt } from '../format.js';
 import { SLIDE } from './slides.js';
 import { rolesInWords } from '../computed/roles.js';
+import { sphereView } from '../computed/evidence.js';
+import { analyse } from '../measure.js';
+import { unit, end } from './unit.js';
 
 /** This module's audits: id → title, the slide's sentence it checks, the artifacts it reads. */
 export const META = {
@@ -50,3 +53,25 @@ export function auditSphere({ T, sayAs, numbers }, judged, ladder, firstRoundnes
     if (rs[0] > rs[rs.length - 1] + T.rounderBy) say('pass', `rounder with each level (roundness ${fmt(rs[0], 3)} → ${fmt(rs[rs.length - 1], 3)})`);
   }
 }
+
+/**
+ * The judged picture (the level judged, as facts.judged names it) and its sphere's outline ({ img,
+ * an, raw, circleArc }, for the units that use it), or the end of the judging where it is blank.
+ */
+function judgedPicture({ facts, images, T, imagesShown }) {
+  imagesShown.judged = facts.facesImage || facts.judged;
+  const img = images[facts.judged];
+  const raw = analyse(img, T);
+  if (raw.blank) return end('the picture went blank after the controls were used', 'sphere');
+  const { an, circleArc } = sphereView(img, T);
+  return { img, an, raw, circleArc };
+}
+
+/** This module's audit units (audits/list.js runs them in its order). */
+export const UNITS = [
+  unit(META, 'heavy-level', auditHeavyLevel),
+  unit(META, 'level-controls', auditLevelControls),
+  unit(META, 'judged-picture', judgedPicture, { says: ['sphere'], reads: ['facts.judged', 'facts.facesImage'] }),
+  unit(META, 'sphere', (C, results) => auditSphere(C, results['judged-picture'], C.facts.ladder.map((l) => l.roundness), analyse(C.images.first, C.T).roundness),
+    { uses: ['judged-picture'] }),
+];

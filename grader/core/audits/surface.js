@@ -3,6 +3,8 @@
 // student and the teacher, never a change of verdict: it names what explains the picture best where
 // a misreading beats the slide's formula by the rubric's margin (surfaceVariantMargin).
 import { SLIDE } from './slides.js';
+import { exactLighting } from '../computed/lighting.js';
+import { unit } from './unit.js';
 
 /** This module's audits: id → title, the slide's sentence it checks, the artifacts it reads. */
 export const META = {
@@ -31,3 +33,15 @@ export function auditSurfaceFit({ sayAs }, exact) {
   if (best.name === slide.name) return;
   sayAs('surface-fit')('pass', `note: on the page's own surface (its normals and positions as it drew them), ${inWords(best)}: that explains the picture with a residual of ${fmt(best.rms)}, the slide's formula with ${fmt(slide.rms)}`);
 }
+
+/** The lighting fitted on the page's own surface (its normals and positions as it drew them): evidence in the numbers, and the note. */
+function auditLightingOnSurface(C, results) {
+  const exact = C.litStep ? exactLighting(C.facts, C.images, results['judged-picture'], C.T) : null;
+  if (exact) C.numbers.surfaceFit = exact.why ? { why: exact.why } : { samples: exact.samples, diffuse: exact.diffuse, slide: exact.slide, best: exact.best, variants: exact.variants.slice(0, 8) };
+  auditSurfaceFit(C, exact);
+}
+
+/** This module's audit units (audits/list.js runs them in its order). */
+export const UNITS = [
+  unit(META, 'surface-fit', auditLightingOnSurface, { uses: ['judged-picture'] }),
+];
