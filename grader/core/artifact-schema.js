@@ -3,16 +3,23 @@
 // guesses a shape. Shapes:
 //   1: no `schema` key; a role in facts.roles may be a sentence (written before roles were kept as
 //      facts: the control, its description and a word for what was seen)
-//   2: `schema` is 2; every role is an object (today's)
+//   2: `schema` is 2; every role is an object
+//   3: the rubric's `must` (kept in gatheredWith, as the gathering read it) lists audit ids, not the
+//      older names (MUST_RENAMED in core/rubric.js) (today's)
+import { mustIds } from './rubric.js';
 
 /** The shape the grader writes and audits. */
-export const ARTIFACT_SCHEMA = 2;
+export const ARTIFACT_SCHEMA = 3;
 
 /** What each older shape needs to become the next one: schema → (facts) → facts. */
 const UPGRADES = {
   1: (facts) => ({
     ...facts,
     ...(facts.roles ? { roles: Object.fromEntries(Object.entries(facts.roles).map(([role, r]) => [role, typeof r === 'string' ? { words: r } : r])) } : {}),
+  }),
+  2: (facts) => ({
+    ...facts,
+    ...(facts.gatheredWith ? { gatheredWith: Object.fromEntries(Object.entries(facts.gatheredWith).map(([k, v]) => [k, /^parts\.[^.]+\.must$/.test(k) && Array.isArray(v) ? mustIds(v) : v])) } : {}),
   }),
 };
 

@@ -156,7 +156,11 @@ function readRubric(file) {
       return fail(`cannot read the rubric ${f}: ${err.message}`, 2);
     }
   };
-  return mergeRubric(load(DEFAULT_RUBRIC), file ? load(file) : null);
+  try {
+    return mergeRubric(load(DEFAULT_RUBRIC), file ? load(file) : null);
+  } catch (err) {
+    return fail(`${file}: ${err.message}`, 2);
+  }
 }
 
 async function main() {

@@ -1,5 +1,5 @@
 // An artifact's shape by number (grader/core/artifact-schema.js): one of each older shape is read
-// in today's shape, today's is left as it is, a newer one is refused with a message, and what
+// in today's shape (the rubric's must in older names, in gatheredWith, read as audit ids), today's is left as it is, a newer one is refused with a message, and what
 // writeArtifact writes carries today's number.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
@@ -10,7 +10,9 @@ import { ARTIFACT_SCHEMA, currentFacts } from '../../grader/core/artifact-schema
 import { readArtifact, writeArtifact } from '../../grader/node/artifacts.js';
 import { rolesInWords } from '../../grader/core/computed/roles.js';
 import { mergeRubric } from '../../grader/core/rubric.js';
+import { staleKeys } from '../../grader/core/gather/reads.js';
 
+const SHIPPED = JSON.parse(readFileSync(new URL('../../grader/core/rubric.json', import.meta.url), 'utf8'));
 const T = mergeRubric({}).thresholds;
 const ROLE = { control: 3, what: 'button "Subdivide"', listens: ['click'], found: 'rounder' };
 
@@ -22,6 +24,15 @@ test('shape 1 (no schema; a role kept as a sentence) is read in today\'s shape, 
   assert.deepEqual(rolesInWords(now, T), { subdivide: 'button "Subdivide": the silhouette got rounder', coarsen: 'button "Subdivide" (listens: click): the silhouette got rounder' });
   assert.equal(typeof old.roles.subdivide, 'string', 'the facts read are not changed in place');
   assert.deepEqual(currentFacts({ part: 'WP04P1' }), { part: 'WP04P1', schema: ARTIFACT_SCHEMA }, 'a part with no roles');
+});
+
+test('shape 2 (the rubric\'s must in older names, as the gathering read it) is read with audit ids, so that today\'s rubric finds nothing to gather again', () => {
+  const old = { schema: 2, part: 'WP04P4', gatheredWith: { 'parts.WP04P4.must': ['diffuse', 'highlight', 'sliders', 'sliderEffects'], sliderChange: 0.01 } };
+  const now = currentFacts(old);
+  assert.deepEqual(now.gatheredWith, { 'parts.WP04P4.must': ['diffuse', 'highlight', 'sliders'], sliderChange: 0.01 });
+  assert.deepEqual(staleKeys(now.gatheredWith, mergeRubric({ ...SHIPPED, thresholds: { ...SHIPPED.thresholds, sliderChange: 0.01 } })), []);
+  assert.deepEqual(staleKeys(old.gatheredWith, mergeRubric({ ...SHIPPED, thresholds: { ...SHIPPED.thresholds, sliderChange: 0.01 } })), ['parts.WP04P4.must'], 'read as it was written, it would be');
+  assert.deepEqual(currentFacts({ schema: 2, part: 'WP04P4' }), { schema: ARTIFACT_SCHEMA, part: 'WP04P4' }, 'no gatheredWith');
 });
 
 test('today\'s shape is left as it is; a newer or a made-up one is refused, with what to do', () => {

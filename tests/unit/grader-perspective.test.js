@@ -81,7 +81,7 @@ test('rimAngle reads the projection from the normals: orthographic 90°, an eye 
 
 test('WP04P1 in perspective view: an orthographic picture is a review in the slide\'s words; an eye 3 or 10 radii away passes', () => {
   const judge = (o) => {
-    const { C, checks } = context(['normalColours', 'perspective']);
+    const { C, checks } = context(['normal-colours', 'perspective']);
     auditPerspective(C, auditNormals(C, judgedOf(sphere(o))));
     return checks.filter((k) => /perspective/.test(k.reason));
   };
@@ -95,7 +95,7 @@ test('WP04P1 in perspective view: an orthographic picture is a review in the sli
     assert.equal(got[0].level, 'pass', got[0].reason);
   }
   // the rule belongs to the parts whose rubric asks for it
-  const { C, checks } = context(['normalColours']);
+  const { C, checks } = context(['normal-colours']);
   auditPerspective(C, auditNormals(C, judgedOf(sphere({ d: Infinity }))));
   assert.ok(!checks.some((k) => /perspective/.test(k.reason)));
 });
@@ -103,7 +103,7 @@ test('WP04P1 in perspective view: an orthographic picture is a review in the sli
 test('WP04P2: the inside of the far side with clockwise front faces and back faces culled is the slide\'s experiment (a note); without them a review', () => {
   const far = judgedOf(sphere({ d: 3, far: true }));
   const judge = (faces, api = 'webgl') => {
-    const { C, checks } = context(['normalColours', 'frontFaces'], { api, faces });
+    const { C, checks } = context(['normal-colours', 'front-faces'], { api, faces });
     auditNormals(C, far);
     return checks;
   };
@@ -119,7 +119,7 @@ test('WP04P2: the inside of the far side with clockwise front faces and back fac
   // page drew nothing meanwhile (it draws only when a control asks): then it tells nothing
   const faces = { depthTest: true, culling: true, frontFace: 'cw' };
   const probe = (draws) => {
-    const { C, checks } = context(['normalColours', 'frontFaces'], { api: 'webgl', faces, noCull: { faces, image: 'no-cull', draws } });
+    const { C, checks } = context(['normal-colours', 'front-faces'], { api: 'webgl', faces, noCull: { faces, image: 'no-cull', draws } });
     C.images['no-cull'] = far.img;
     auditNormals(C, far);
     return checks.map((k) => k.reason).join(' | ');
@@ -131,7 +131,7 @@ test('WP04P2: the inside of the far side with clockwise front faces and back fac
 
 test('a lit step that shows WP04P1\'s colours is not lit; a lit sphere, white or tinted by the normal colour, is not taken for them', () => {
   const judge = (shade) => {
-    const { C, checks } = context(['sphere', 'diffuse', 'orbitToggle']);
+    const { C, checks } = context(['sphere', 'diffuse', 'orbit-toggle']);
     return { said: auditNormalsNotLight(C, judgedOf(sphere({ d: 3, shade }))), checks };
   };
   const p1 = judge(undefined);
@@ -145,7 +145,7 @@ test('a lit step that shows WP04P1\'s colours is not lit; a lit sphere, white or
     assert.equal(got.said, false);
     assert.deepEqual(got.checks, []);
   }
-  const { C, checks } = context(['normalColours']);
+  const { C, checks } = context(['normal-colours']);
   assert.equal(auditNormalsNotLight(C, judgedOf(sphere({ d: 3 }))), false);
   assert.deepEqual(checks, []);
 });

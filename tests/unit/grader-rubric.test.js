@@ -7,6 +7,7 @@ import { readFileSync, readdirSync } from 'node:fs';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
 import * as acorn from 'acorn';
+import { AUDITS } from '../../grader/core/audits/index.js';
 import { mergeRubric } from '../../grader/core/rubric.js';
 
 const grader = fileURLToPath(new URL('../../grader/', import.meta.url));
@@ -104,6 +105,15 @@ test('a teacher\'s rubric is merged over the default key by key (mergeRubric)', 
   assert.deepEqual(r.parts.WP04P1, rubric.parts.WP04P1);
   assert.deepEqual(r.parts.WP04P9, { must: ['sphere'] });
   assert.equal(rubric.thresholds.roundness, 0.09, 'the default is left as it was');
+});
+
+test('a part\'s must lists audit ids: an older rubric\'s names are read as their ids, an id no audit has is refused with the ids there are', () => {
+  for (const [part, p] of Object.entries(rubric.parts)) for (const id of p.must) assert.ok(AUDITS[id], `${part}: ${id}`);
+  const older = mergeRubric(rubric, { parts: { WP04P2: { must: ['subdivideControls', 'normalColours', 'perspective', 'frontFaces', 'depthCulling'] }, WP04P4: { must: ['diffuse', 'highlight', 'sliders', 'sliderEffects'] } } });
+  assert.deepEqual(older.parts.WP04P2.must, rubric.parts.WP04P2.must);
+  assert.deepEqual(older.parts.WP04P4.must, rubric.parts.WP04P4.must);
+  assert.throws(() => mergeRubric(rubric, { parts: { WP04P3: { must: ['diffuse', 'difuse'] } } }), /parts\.WP04P3\.must names "difuse", which no audit has: a part's must lists audit ids \(grader\/README\.md, the table of audit units\), such as level-controls/);
+  assert.throws(() => mergeRubric(rubric, { parts: { WP04P3: { must: 'diffuse' } } }), /parts\.WP04P3\.must is not a list of audit ids \(it is "diffuse"\)/);
 });
 
 // A number that decides a verdict lives in the rubric, or is a constant of

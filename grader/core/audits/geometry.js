@@ -48,7 +48,7 @@ export function auditWinding({ facts, T, must, sayAs, numbers }) {
   const read = `read from the ${g.analysed} triangles the page sent`;
   if (share >= T.windingCulledShare) {
     // (P2: clockwise front faces over a counter-clockwise mesh is the slide's own experiment, said by the normals' audit)
-    if (must.has('frontFaces') && mode === 'back' && front === 'cw' && g.cw <= 1 - T.windingCulledShare) return;
+    if (must.has('front-faces') && mode === 'back' && front === 'cw' && g.cw <= 1 - T.windingCulledShare) return;
     say('mistake', `the near side of the sphere is culled and the inside of the far side shows: ${pct(g.cw)} of its triangles are wound clockwise seen from outside (${read}; the textbook's tetrahedron winds its faces so), and ${setting} culls the faces that point toward the viewer`);
   } else if (share >= T.windingHoleShare) {
     say('mistake', `a hole shows from some side: ${pct(share)} of the triangles are wound the other way from the rest (${read}), and ${setting} takes them away where they face the viewer`);
@@ -67,7 +67,7 @@ export function auditClosed({ facts, T, sayAs }) {
 /** WP04P1/P2: n = p at each vertex, not a colour or normal per face. */
 export function auditPerFace({ facts, T, must, sayAs }) {
   const say = sayAs('per-face');
-  if (!must.has('normalColours')) return;
+  if (!must.has('normal-colours')) return;
   const g = judgedGeometry(facts);
   if (!g || !g.perFace) return;
   const face = g.perFace.find((a) => /norm|col/i.test(a.name) && a.share >= T.perFaceShare && a.distinct >= T.perFaceDistinct);

@@ -23,7 +23,7 @@ export const META = {
  */
 export function auditNormals({ facts, images, T, must, sayAs, numbers }, judged) {
   const say = sayAs('normal-colours');
-  if (!must.has('normalColours') && !must.has('frontFaces')) return null;
+  if (!must.has('normal-colours') && !must.has('front-faces')) return null;
   let { img, an } = judged;
   if (facts.facesImage) {
     img = images[facts.facesImage];
@@ -35,7 +35,7 @@ export function auditNormals({ facts, images, T, must, sayAs, numbers }, judged)
   // on and culling off the nearest faces show; if the picture stays, they were what showed
   let nearest = null;
   const probe = facts.noCull;
-  if (must.has('frontFaces') && probe) {
+  if (must.has('front-faces') && probe) {
     if (probe.faces.depthTest && probe.faces.culling) {
       // (a page that drew nothing while culling was off shows its last frame: that tells nothing)
       const s = probe.image && probe.draws !== 0 ? images[probe.image] : null;
@@ -51,7 +51,7 @@ export function auditNormals({ facts, images, T, must, sayAs, numbers }, judged)
     say('mistake', `the colours are not 0.5·n + 0.5: 2c − 1 is not a unit vector (off by ${fmt(nc.unitError)} on average)`);
   } else say('pass', `colours decode to unit normals 2c − 1 (off by ${fmt(nc.unitError, 3)})`);
   const sayFaces = sayAs('front-faces');
-  if (must.has('frontFaces') && nc && nc.spread >= T.normalsSpread) {
+  if (must.has('front-faces') && nc && nc.spread >= T.normalsSpread) {
     if (facesViewer(nc, T)) sayFaces('pass', 'the visible colours are the normals facing the viewer: front faces only');
     else if (nearest) sayFaces('pass', 'the visible faces are the nearest ones (the depth test is on, and culling off draws the same picture): the view looks along +z (clip space without a view matrix?), so their normals point away from +z');
     else if (nc.det < 0 && nc.residual <= T.facingResidual) {
@@ -119,7 +119,7 @@ export function auditNormalsNotLight({ T, must, sayAs, numbers }, judged) {
 /** P2: the depth test and back-face culling enabled (the slide: "no visible effect of the back face culling"). */
 export function auditDepthCulling({ facts, must, sayAs, numbers }) {
   const say = sayAs('depth-culling');
-  if (!must.has('depthCulling')) return;
+  if (!must.has('depth-culling')) return;
   const faces = facts.faces || {};
   const api = facts.api === 'webgpu' ? { depth: 'depthStencil with a depthCompare', cull: "cullMode: 'back'" } : { depth: 'gl.enable(gl.DEPTH_TEST)', cull: 'gl.enable(gl.CULL_FACE)' };
   numbers.faces = faces;

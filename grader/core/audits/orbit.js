@@ -48,12 +48,12 @@ export function auditOrbit({ facts, T, must, sayAs, numbers }, lit) {
     // on a sphere only the shading shows the orbit: where the step asks for the orbit (P3) a light that
     // moves with the camera hides it; elsewhere the slides leave the light's space to the student
     if (rs && apart < T.lightSeparationDegrees && turn < T.lightClearTurnDegrees) {
-      say(must.has('orbitToggle') ? 'review' : 'pass', `${must.has('orbitToggle') ? '' : 'note: '}the camera turned too little between the lit views seen to tell whether the light stays in the world (${words}; ${T.lightSeparationDegrees}° at least are needed)`);
+      say(must.has('orbit-toggle') ? 'review' : 'pass', `${must.has('orbit-toggle') ? '' : 'note: '}the camera turned too little between the lit views seen to tell whether the light stays in the world (${words}; ${T.lightSeparationDegrees}° at least are needed)`);
     } else if (turn < Math.max(T.lightTurnDegrees, rs ? T.lightFollowsWorld * apart : 0)) {
-      say(must.has('orbitToggle') ? 'review' : 'pass', `${must.has('orbitToggle') ? 'the orbit does not show in the shading: ' : 'note: '}while the camera orbits, the lit side stays where it is on screen (${words}): the light moves with the camera (given in eye space, or light and normals in different spaces?)`);
+      say(must.has('orbit-toggle') ? 'review' : 'pass', `${must.has('orbit-toggle') ? 'the orbit does not show in the shading: ' : 'note: '}while the camera orbits, the lit side stays where it is on screen (${words}): the light moves with the camera (given in eye space, or light and normals in different spaces?)`);
     } else say('pass', `the lit side turns as the camera orbits (${rs ? words : `${fmt(turn, 0)}° over ${orbitFits.length} views`}): the light stays in the world`);
   }
-  if (must.has('orbitToggle')) {
+  if (must.has('orbit-toggle')) {
     const sayToggle = sayAs('orbit-toggle');
     const o = facts.orbit;
     const control = o.control === null ? null : facts.controls.find((c) => c.index === o.control);

@@ -45,7 +45,7 @@ export function fragmentPow(sources) {
 /** P5: the highlight per fragment: as smooth at a coarse level as at the finest; else pow() in the fragment shader. */
 export function auditPerFragment({ facts, images, T, must, sayAs, numbers, imagesShown }, judged, shading) {
   const say = sayAs('per-fragment');
-  if (!must.has('perFragment') || !shading || !shading.fit) return;
+  if (!must.has('per-fragment') || !shading || !shading.fit) return;
   const raw = facts.sources ? unnormalisedInputs(facts.sources) : [];
   if (raw.length) say('mistake', `the fragment shader takes the interpolated ${raw.join(' and ')} into dot() or reflect() without normalising ${raw.length > 1 ? 'them' : 'it'}: interpolated directions are shorter than 1 between the vertices (the slides: "most importantly, we must normalize the direction vectors in the fragment shader")`);
   const j = facts.judgedLevel;

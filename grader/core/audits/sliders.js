@@ -58,7 +58,7 @@ export function auditSliders({ facts, images, T, must, sayAs, rubric, part }, ju
   const requiredMissing = required.filter((k) => !found[k]);
   if (requiredMissing.length) say('review', `no slider found for ${requiredMissing.join(', ')} (this rubric asks for each)`);
   else if (missing.length && inputOk) say('pass', `note: no slider found for ${missing.join(', ')}`);
-  if (must.has('sliderEffects') && dead) say('pass', `note: ${dead} slider(s) change nothing in the picture`);
+  if (must.has('sliders') && dead) say('pass', `note: ${dead} slider(s) change nothing in the picture`);
 }
 
 /** This module's audit units (audits/list.js runs them in its order). */

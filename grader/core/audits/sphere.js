@@ -18,7 +18,7 @@ export const META = {
 export function auditLevelControls({ facts, T, must, sayAs }) {
   const say = sayAs('level-controls');
   const L = facts.level;
-  if (!must.has('subdivideControls') || !L) return;
+  if (!must.has('level-controls') || !L) return;
   const hasLevel = L.subdivide || L.slider;
   const roles = rolesInWords(facts, T);
   if (hasLevel) say('pass', `has controls to subdivide (${roles.subdivide || roles.levelSlider})`);

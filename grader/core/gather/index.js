@@ -117,7 +117,7 @@ async function orbitAndLevel(S, controls) {
   // sampled, off again; the view it stops at is judged. Only where it buys evidence: the judged view
   // is unlit, or the step asks for the orbit (P3)
   const { orbit } = S;
-  if (orbit.later && must.has('diffuse') && (must.has('orbitToggle') || !look(S, ladder[ladder.length - 1].img, { orbiting: false, keep: false }))) {
+  if (orbit.later && must.has('diffuse') && (must.has('orbit-toggle') || !look(S, ladder[ladder.length - 1].img, { orbiting: false, keep: false }))) {
     const at = ladder.length - 1;
     if (!stopped) {
       await sampleOrbit(S, true);
@@ -143,7 +143,7 @@ async function orbitAndLevel(S, controls) {
   // each level's outline as measured on the way up; its picture where an audit reads it (the judged
   // level; every level where a coarse one is compared with it, P5)
   facts.ladder = ladder.map((s, k) => ({ roundness: s.an.roundness, blank: !!s.an.blank,
-    ...(k === j || must.has('perFragment') ? { image: S.keep(`level-${k}`, s.img) } : {}) }));
+    ...(k === j || must.has('per-fragment') ? { image: S.keep(`level-${k}`, s.img) } : {}) }));
   facts.judgedLevel = j;
   facts.geometry = await readGeometry(S);
   // the judged view's surface per pixel, where the lighting is judged: each pixel's position and normal as the page drew them
@@ -157,8 +157,8 @@ async function whatTheStepAsks(S, controls, img) {
   const { page, T, facts, must, orbit } = S;
   const stopped = facts.stopped;
   const { an } = sphereView(img, T);
-  if (must.has('frontFaces')) await probeFaces(S, controls, { img, an });
-  if (must.has('depthCulling')) await probeDepthCulling(S, controls);
+  if (must.has('front-faces')) await probeFaces(S, controls, { img, an });
+  if (must.has('depth-culling')) await probeDepthCulling(S, controls);
   // a picture that clips to white over much of the sphere: read with the page's own kd, Le, La
   // lowered; one too dim to show its shading, with the page's own Le (else kd) raised
   const shaded = must.has('diffuse') || must.has('highlight');

@@ -161,7 +161,7 @@ export async function climb(S) {
   const settledSilhouette = (a, b) => silhouetteChange(a.an, b.an) <= T.silhouetteSettled || (!b.an.blank && b.an.roundness <= T.roundEnough);
   let coarsened = false;
   // (down first only where a coarse level is judged: P5's highlight per fragment)
-  if (levelBy.coarsen && !S.moving && S.must.has('perFragment')) {
+  if (levelBy.coarsen && !S.moving && S.must.has('per-fragment')) {
     const down = await step(levelBy.coarsen, T.maxCoarsenings, (a, b) => same(a, b) || b.an.blank || b.an.roundness > 2 * T.coarseRoundness);
     if (down.length) ladder[0] = down[down.length - 1];
     coarsened = down.length > 0;
