@@ -22,7 +22,7 @@ export default [
   },
   { files: ['common/boot.js'], languageOptions: { sourceType: 'script' } },
   {
-    files: ['grader/node/**'],
+    files: ['grader/node/**', 'grader/files/**', 'grader/similarity/**'],
     languageOptions: { globals: { ...globals.node, ...globals.browser } },
   },
   // the check page is a site page, and the grader owns what it runs (its browser launchers
@@ -30,6 +30,26 @@ export default [
   {
     files: ['check/**', 'grader/**'],
     rules: { 'no-restricted-imports': ['error', { patterns: [NOT_TOOLS] }] },
+  },
+  // no arrow sideways or up: the command (grader/node/) and the similarity report
+  // (grader/similarity/) share what lies below both (grader/files/: parts on disk, the out folder's
+  // layout, CSV; grader/core/), never each other's modules one way (similarity never imports node/);
+  // the check page and the grader share only core/
+  {
+    files: ['grader/files/**'],
+    rules: { 'no-restricted-imports': ['error', { patterns: [NOT_TOOLS, { regex: '(^|/)(node|similarity|check)/', message: 'grader/files/ lies below the command and the similarity report: it imports only grader/core/ and packages' }] }] },
+  },
+  {
+    files: ['grader/similarity/**'],
+    rules: { 'no-restricted-imports': ['error', { patterns: [NOT_TOOLS, { regex: '(^|/)(node|check)/', message: 'the similarity report takes what it shares with the command from grader/files/ or grader/core/, never from grader/node/' }] }] },
+  },
+  {
+    files: ['grader/node/**'],
+    rules: { 'no-restricted-imports': ['error', { patterns: [NOT_TOOLS, { regex: '(^|/)check/', message: 'the grader takes what it shares with the check page from grader/core/, never from check/' }] }] },
+  },
+  {
+    files: ['check/**'],
+    rules: { 'no-restricted-imports': ['error', { patterns: [NOT_TOOLS, { regex: '(^|/)grader/(node|similarity|files)/', message: 'the check page takes the grader from grader/core/ only' }] }] },
   },
   // the grader's core runs in Node (npm run grade) and in the browser (the check page) alike: no
   // Node module, no DOM; only the language and the timers both have

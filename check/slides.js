@@ -1,23 +1,6 @@
-// The slide's sentence a part misses, for each review or fail the grader gives: found by the
-// reason's audit id (grader/core/audits/index.js, where each audit names the sentence it checks),
-// never by its words; and our step that does it right.
-import { AUDITS } from '../grader/core/audits/index.js';
+// What the check page's cards link and quote: the slide's sentence a part misses (the grader's
+// core/audits/missed-slides.js, shared with the feedback pages) and our step that does it right.
+export { missedSlides } from '../grader/core/audits/missed-slides.js';
 
 /** Our own step for a part, relative to the check page. */
 export const stepLink = (part) => `../${part}/`;
-
-/**
- * The slide's sentences behind a part's reviews and fails (`findings`: { id, level, reason }):
- * [{ reason, slide, note?, id }], one per different sentence. A part not judged here misses none;
- * an audit about the page rather than the step (its slide null) names none.
- */
-export function missedSlides(findings) {
-  const out = [];
-  for (const f of findings) {
-    if (f.level !== 'fail' && f.level !== 'review') continue;
-    const audit = AUDITS[f.id];
-    if (!audit || !audit.slide) continue;
-    if (!out.some((o) => o.slide === audit.slide)) out.push({ reason: f.reason, slide: audit.slide, note: audit.note, id: f.id });
-  }
-  return out;
-}

@@ -9,8 +9,8 @@ import { existsSync, readFileSync, readdirSync, writeFileSync } from 'node:fs';
 import path from 'node:path';
 import { auditDirs } from './audit-pool.js';
 import { applyAudit } from '../core/part-result.js';
-import { PARTS } from './parts.js';
-import { hrefOf } from './layout.js';
+import { PARTS } from '../files/parts.js';
+import { hrefOf } from '../files/layout.js';
 
 /**
  * Re-judges every part under `out` that has an artifact; `progress(done, total)`. Returns {

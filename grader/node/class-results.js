@@ -3,7 +3,7 @@
 // parts (one not graded in this run says so).
 import { existsSync, readFileSync, readdirSync } from 'node:fs';
 import path from 'node:path';
-import { PARTS } from './parts.js';
+import { PARTS } from '../files/parts.js';
 import { withFindings } from '../core/part-result.js';
 
 /** The students graded under `partsDir` (OUT/parts): [{ name, parts: [result, ...] }], parts in order. */

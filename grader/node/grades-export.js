@@ -11,9 +11,9 @@
 // And grades-points.csv, ours: every part's points, the total, and which parts a teacher set.
 import { writeFileSync } from 'node:fs';
 import path from 'node:path';
-import { PARTS } from './parts.js';
+import { PARTS } from '../files/parts.js';
 import { NOT_GRADED } from '../core/verdict.js';
-import { csvText } from './csv.js';
+import { csvText } from '../files/csv.js';
 
 // (each file's lines end in CRLF, as the sites' own exports do)
 const importText = (rows) => csvText(rows, { eol: '\r\n' });

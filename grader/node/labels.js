@@ -6,7 +6,7 @@
 import { readFileSync } from 'node:fs';
 import { NOT_GRADED } from '../core/verdict.js';
 import { asking } from '../core/part-result.js';
-import { readRows } from './csv.js';
+import { readRows } from '../files/csv.js';
 
 /** The verdict a label asks for: correct → pass, partial → review, broken → fail. */
 export const VERDICT_OF_LABEL = { correct: 'pass', partial: 'review', broken: 'fail', pass: 'pass', review: 'review', fail: 'fail' };

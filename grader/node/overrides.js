@@ -5,8 +5,8 @@
 // and say a teacher set it.
 import { readFileSync } from 'node:fs';
 import { VERDICT_OF_LABEL } from './labels.js';
-import { safeName } from './layout.js';
-import { readRows } from './csv.js';
+import { safeName } from '../files/layout.js';
+import { readRows } from '../files/csv.js';
 
 export const OVERRIDES_FILE = 'overrides.tsv';
 

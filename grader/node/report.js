@@ -3,8 +3,8 @@
 // part's reasons, pictures and numbers), as npm run grade writes them.
 import { writeFileSync } from 'node:fs';
 import path from 'node:path';
-import { PARTS } from './parts.js';
-import { safeName } from './layout.js';
+import { PARTS } from '../files/parts.js';
+import { safeName } from '../files/layout.js';
 import { agreement, agreementHtml } from './labels.js';
 import { NOT_GRADED } from '../core/verdict.js';
 import { findingsOfResult } from '../core/part-result.js';

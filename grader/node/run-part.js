@@ -9,7 +9,7 @@ import path from 'node:path';
 import { PNG } from 'pngjs';
 import { compareImages } from './compare.js';
 import { writeArtifact, pngOf } from './artifacts.js';
-import { hrefOf } from './layout.js';
+import { hrefOf } from '../files/layout.js';
 import { applyAudit, withFindings } from '../core/part-result.js';
 import { missingPage, timedOut, stoppedAtFirstFrame, tooSlow, linkedPage, notOpened, asFail, graderTrouble } from '../core/audits/page.js';
 import { tooSlowWords } from '../core/verdict.js';

@@ -5,7 +5,7 @@ import { partSources } from './sources.js';
 import { tokenStreams } from './tokens.js';
 import { markGiven } from './template.js';
 import { ownTokens, clonesOf } from './match.js';
-import { PARTS } from '../node/parts.js';
+import { PARTS } from '../files/parts.js';
 
 export const DEFAULTS = {
   bound: 0.5, // a pair is listed when a part's score or the overall score reaches it

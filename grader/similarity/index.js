@@ -2,7 +2,7 @@
 // and the pictures' (pictures.js), in one list, highest first. A pointer for a person, never a verdict.
 import { compareClass, DEFAULTS } from './compare.js';
 import { samePictures } from './pictures.js';
-import { PARTS, findParts } from '../node/parts.js';
+import { PARTS, findParts } from '../files/parts.js';
 
 export { DEFAULTS };
 

@@ -5,7 +5,7 @@ import { createHash } from 'node:crypto';
 import { existsSync, readFileSync } from 'node:fs';
 import path from 'node:path';
 import { PNG } from 'pngjs';
-import { partFiles } from '../node/layout.js';
+import { partFiles } from '../files/layout.js';
 
 /** The judged picture of a hand-in's part in a grading out folder (its artifact: grader/node/artifacts.js), or null. */
 export function judgedPicture(out, name, part) {

@@ -1,7 +1,7 @@
 // The similarity check in the grader's report: report.json's `similarity`, similar.csv, and a
 // section of report.html that the class grid links to (a badge on both hand-ins' rows).
-import { PARTS } from '../node/parts.js';
-import { csvText } from '../node/csv.js';
+import { PARTS } from '../files/parts.js';
+import { csvText } from '../files/csv.js';
 
 const esc = (s) => String(s).replace(/[&<>"']/g, (c) => ({ '&': '&amp;', '<': '&lt;', '>': '&gt;', '"': '&quot;', "'": '&#39;' })[c]);
 const pct = (x) => `${Math.round(100 * x)}%`;

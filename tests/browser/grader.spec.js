@@ -10,7 +10,7 @@ import { test, expect, chromium } from '@playwright/test';
 import { buildClass } from '../fixtures/build.js';
 import { copyHandins } from '../fixtures/handins.js';
 import { readArtifact } from '../../grader/node/artifacts.js';
-import { findParts, partNumber } from '../../grader/node/parts.js';
+import { findParts, partNumber } from '../../grader/files/parts.js';
 import { partOpener } from '../../grader/node/playwright-page.js';
 import { CHROMIUM, CHROMIUM_ARGS, WEBGPU_ARGS } from '../../grader/node/chromium.js';
 import { webgpuCaptureScript, readWebGPUFrame } from '../../grader/browser/webgpu-capture.js';

@@ -14,7 +14,7 @@ import { AUDITS } from '../../grader/core/audits/index.js';
 import { missedSlides } from '../../check/slides.js';
 import { gradesCsv } from '../../grader/node/grades-csv.js';
 import { PARTS } from '../../grader/core/part-names.js';
-import { readTable } from '../../grader/node/csv.js';
+import { readTable } from '../../grader/files/csv.js';
 
 const here = path.dirname(fileURLToPath(import.meta.url));
 const root = path.join(here, '../..');

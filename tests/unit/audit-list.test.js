@@ -16,7 +16,7 @@ import { mergeRubric } from '../../grader/core/rubric.js';
 import { PARTS } from '../../grader/core/part-names.js';
 import { readArtifact, listArtifacts } from '../../grader/node/artifacts.js';
 import { gradesCsv } from '../../grader/node/grades-csv.js';
-import { readTable } from '../../grader/node/csv.js';
+import { readTable } from '../../grader/files/csv.js';
 import { auditTable, withTable, README } from '../../tools/audit-table.js';
 
 const here = path.dirname(fileURLToPath(import.meta.url));

@@ -5,7 +5,7 @@
 // quote or a line break, a BOM, CRLF, comment lines), and what the grader writes read back cell for cell.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { csvText, readRows, readTable } from '../../grader/node/csv.js';
+import { csvText, readRows, readTable } from '../../grader/files/csv.js';
 import { matchRoster, parseRoster } from '../../grader/node/roster.js';
 import { parseLabels } from '../../grader/node/labels.js';
 import { parseOverrides } from '../../grader/node/overrides.js';

@@ -11,7 +11,7 @@ import path from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { unzipSync } from 'fflate';
 import { makeZip } from './downloads.js';
-import { readTable } from '../../grader/node/csv.js';
+import { readTable } from '../../grader/files/csv.js';
 
 const grade = fileURLToPath(new URL('../../grader/node/grade.js', import.meta.url));
 const run = (args) => spawnSync(process.execPath, [grade, ...args], { encoding: 'utf8' });

@@ -3,7 +3,7 @@
 import { fileURLToPath } from 'node:url';
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { partNumber } from '../../grader/node/parts.js';
+import { partNumber } from '../../grader/files/parts.js';
 import { partsOf } from '../../grader/core/part-names.js';
 import { findStandIn, typeOf } from '../../grader/core/standin.js';
 import { serveSubmission } from '../../grader/node/serve-submission.js';

@@ -18,7 +18,7 @@ import { brightspaceTime, detectSite, dueTime, groupBySite, lateOf } from '../..
 import { decodeName, safeSegments } from '../../grader/node/intake/names.js';
 import { IntakeError } from '../../grader/node/intake/zip.js';
 import { feedbackZipPath } from '../../grader/node/feedback/write.js';
-import { findParts } from '../../grader/node/parts.js';
+import { findParts } from '../../grader/files/parts.js';
 import { copyHandins } from '../fixtures/handins.js';
 import { makeZip, cp850, tree, entriesOf, idsOf, lastFirst, siteName } from './downloads.js';
 

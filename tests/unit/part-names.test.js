@@ -7,7 +7,7 @@ import { mkdtempSync, mkdirSync, writeFileSync, rmSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import path from 'node:path';
 import { partsFound, stepOfTitle, titleOfPage } from '../../grader/core/part-names.js';
-import { findPartsWithNotes } from '../../grader/node/parts.js';
+import { findPartsWithNotes } from '../../grader/files/parts.js';
 import { handInFrom, partsOfHandIn, titlesOfHandIn } from '../../check/files.js';
 
 const join = (s) => s.join('/');

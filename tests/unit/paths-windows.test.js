@@ -6,8 +6,8 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import path from 'node:path';
-import { findParts } from '../../grader/node/parts.js';
-import { partFiles, hrefOf, fileOfHref, safeName } from '../../grader/node/layout.js';
+import { findParts } from '../../grader/files/parts.js';
+import { partFiles, hrefOf, fileOfHref, safeName } from '../../grader/files/layout.js';
 import { fileOf, urlOf } from '../../grader/node/serve-submission.js';
 
 const SYSTEMS = [

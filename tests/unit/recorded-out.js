@@ -7,7 +7,7 @@ import path from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { auditAgain } from '../../grader/node/audit-only.js';
 import { mergeRubric } from '../../grader/core/rubric.js';
-import { PARTS } from '../../grader/node/parts.js';
+import { PARTS } from '../../grader/files/parts.js';
 
 const here = path.dirname(fileURLToPath(import.meta.url));
 const RECORDED = path.join(here, '../fixtures/artifacts');

@@ -8,7 +8,7 @@ import path from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { tokenStreams } from '../../grader/similarity/tokens.js';
 import { compareClass } from '../../grader/similarity/compare.js';
-import { findParts } from '../../grader/node/parts.js';
+import { findParts } from '../../grader/files/parts.js';
 import { copyHandins } from '../fixtures/handins.js';
 
 const here = path.dirname(fileURLToPath(import.meta.url));

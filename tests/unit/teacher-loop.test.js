@@ -15,9 +15,9 @@ import { prepareClass, writeTeacherFiles } from '../../grader/node/teacher-loop.
 import { writeReport } from '../../grader/node/report.js';
 import { parseOverrides } from '../../grader/node/overrides.js';
 import { studentPoints } from '../../grader/node/grades-export.js';
-import { readTable } from '../../grader/node/csv.js';
+import { readTable } from '../../grader/files/csv.js';
 import { zipEntries, entryData } from '../../grader/node/intake/zip.js';
-import { PARTS } from '../../grader/node/parts.js';
+import { PARTS } from '../../grader/files/parts.js';
 import { agreement } from '../../grader/node/labels.js';
 
 const NAMES = ['ada', 'cy', 'eve', 'gus'];

@@ -4,10 +4,10 @@
 // plainly, the slide's sentence it misses, the student's own pictures beside our reference, the
 // controls the grader found and what it did with them, and how to check again before handing in.
 import { existsSync, readFileSync } from 'node:fs';
-import { missedSlides } from '../../../check/slides.js';
+import { missedSlides } from '../../core/audits/missed-slides.js';
 import { findingsOfResult, asks } from '../../core/part-result.js';
 import { NOT_GRADED } from '../../core/verdict.js';
-import { fileOfHref } from '../layout.js';
+import { fileOfHref } from '../../files/layout.js';
 
 const esc = (s) => String(s).replace(/[&<>"']/g, (c) => ({ '&': '&amp;', '<': '&lt;', '>': '&gt;', '"': '&quot;', "'": '&#39;' })[c]);
 

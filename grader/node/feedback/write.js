@@ -14,7 +14,7 @@ import { mkdirSync, rmSync, writeFileSync } from 'node:fs';
 import path from 'node:path';
 import { zipSync, strToU8 } from 'fflate';
 import { feedbackHtml } from './page.js';
-import { safeName } from '../layout.js';
+import { safeName } from '../../files/layout.js';
 
 export const FEEDBACK_FILE = 'feedback.html';
 

@@ -5,8 +5,8 @@ import { mkdirSync, writeFileSync } from 'node:fs';
 import path from 'node:path';
 import { intake } from './intake.js';
 import { IntakeError } from './zip.js';
-import { PARTS } from '../parts.js';
-import { safeName } from '../layout.js';
+import { PARTS } from '../../files/parts.js';
+import { safeName } from '../../files/layout.js';
 import { withFindings } from '../../core/part-result.js';
 
 /** The status of a part whose hand-in could not be unpacked. */

@@ -11,7 +11,7 @@ import { isJunk, safeSegments } from './names.js';
 import { groupBySite, lateOf, SITES } from './formats.js';
 import { findLayout } from './wrapping.js';
 import { unpackHandin } from './unpack.js';
-import { safeName } from '../layout.js';
+import { safeName } from '../../files/layout.js';
 
 export const INTAKE_FILE = 'intake.json';
 
