@@ -60,7 +60,7 @@ export default [
       'no-restricted-imports': ['error', { patterns: [NOT_TOOLS, CORE_ONLY] }],
     },
   },
-  // a module a maintainer reads in one sitting, a function on one screen (issue 40); the functions
+  // a module a maintainer reads in one sitting, a function on one screen; the functions
   // still to split say so where they are (eslint-disable-next-line, with why)
   {
     files: ['grader/**', 'check/**'],

@@ -29,11 +29,11 @@ export function auditPart({ facts, images }, rubric, { audits = AUDIT_LIST } = {
   const declared = new Map(audits.flatMap((u) => Object.entries(u.meta)));
   // an audit says its findings under an id it declares (audits/index.js, or a unit of the list)
   const sayAs = (id) => list.sayAs(declared.has(id) ? id : auditMeta(id).id);
-  const C = { facts, images, T, rubric, part, must, litStep, sayAs, numbers, imagesShown: shown, notGraded: null };
+  const context = { facts, images, T, rubric, part, must, litStep, sayAs, numbers, imagesShown: shown, notGraded: null };
   const results = {};
   let ended = { fail: null, failId: null };
   for (const u of audits) {
-    const r = u.run(C, results);
+    const r = u.run(context, results);
     if (r && r.end) {
       ended = r.end;
       break;
@@ -41,5 +41,5 @@ export function auditPart({ facts, images }, rubric, { audits = AUDIT_LIST } = {
     results[u.id] = r;
   }
   return { fail: ended.fail, failId: ended.failId, checks, numbers, shown, tooSlow: facts.tooSlow || null, tooHeavy: facts.tooHeavy ?? null,
-    ...(C.notGraded ? { notGraded: C.notGraded.reason, notGradedId: C.notGraded.id } : {}) };
+    ...(context.notGraded ? { notGraded: context.notGraded.reason, notGradedId: context.notGraded.id } : {}) };
 }

@@ -148,11 +148,11 @@ function fakePage(controls, draw) {
 }
 
 test('trySliders moves the three sliders of one parameter together, and the artifact says which', async () => {
-  const { session } = await import('../../grader/core/gather/session.js');
+  const { openSession } = await import('../../grader/core/gather/session.js');
   const { trySliders } = await import('../../grader/core/gather/sliders.js');
   const controls = ['ks_r', 'ks_g', 'ks_b', 'shine'].map((id, k) => ({ ...slider(k, id), max: id === 'shine' ? '100' : '1', value: id === 'shine' ? '30' : '0.6' }));
   const { page, calls } = fakePage(controls, (v) => sphere((n) => { const ks = [0, 1, 2].map((k) => Number(v.get(k))); return ks.map((x) => 0.3 + 0.5 * x * Math.pow(n[2], Number(v.get(3)))); }));
-  const S = session(page, { part: 'WP04P4', rubric });
+  const S = openSession(page, { part: 'WP04P4', rubric });
   S.facts.judged = S.keep('judged', await page.snap());
   await trySliders(S, controls);
   assert.equal(S.facts.sliders.length, 2);
@@ -164,7 +164,7 @@ test('trySliders moves the three sliders of one parameter together, and the arti
 });
 
 test('a picture washed out to white: the page\'s own kd, Le, La are halved in turn until it is not, and stay there', async () => {
-  const { session } = await import('../../grader/core/gather/session.js');
+  const { openSession } = await import('../../grader/core/gather/session.js');
   const { unclip } = await import('../../grader/core/gather/visible.js');
   const controls = [['kd', '2', '1.6'], ['Le', '3', '1.5'], ['La', '1', '0.5']].map(([id, max, value], k) => ({ ...slider(k, id), max, value }));
   const draw = (v) => sphere((n) => {
@@ -172,7 +172,7 @@ test('a picture washed out to white: the page\'s own kd, Le, La are halved in tu
     return [1, 0.96, 0.9].map((c) => c * kd * (La + Le * d));
   });
   const { page, values } = fakePage(controls, draw);
-  const S = session(page, { part: 'WP04P5', rubric });
+  const S = openSession(page, { part: 'WP04P5', rubric });
   const img = await page.snap();
   const shown = await unclip(S, controls, img, analyse(img, T));
   assert.ok(shown, 'a picture to read the shading from');
@@ -181,6 +181,6 @@ test('a picture washed out to white: the page\'s own kd, Le, La are halved in tu
   assert.equal(values.get(0), '0.8');
   assert.equal(S.now(controls[1]), 0.75);
   // a picture that is not washed out is left alone
-  const S2 = session(fakePage(controls, draw).page, { part: 'WP04P5', rubric });
+  const S2 = openSession(fakePage(controls, draw).page, { part: 'WP04P5', rubric });
   assert.equal(await unclip(S2, controls, shown, analyse(shown, T)), null);
 });

@@ -29,12 +29,12 @@ test('a rubric that makes it review', () => {
 });
 
 test('too heavy: the page\'s own work over the gathering passes gatherWork at the same frame on any machine, and is not graded here', async () => {
-  const { session, TooHeavy } = await import('../../grader/core/gather/session.js');
+  const { openSession, TooHeavy } = await import('../../grader/core/gather/session.js');
   const T = rubric.thresholds;
   // a page whose every frame draws 2 million vertices in one draw call
   let vertices = 0, draws = 0;
   const page = { tick: async (ms, frames) => { vertices += 2e6 * (frames + 1); draws += frames + 1; return { vertices, draws }; } };
-  const S = session(page, { part: 'WP04P5', rubric });
+  const S = openSession(page, { part: 'WP04P5', rubric });
   S.step('climbing the levels');
   const perTick = 11 * (2e6 + T.drawCallWork);
   const ticks = Math.floor(T.gatherWork / perTick);

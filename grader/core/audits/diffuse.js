@@ -77,8 +77,8 @@ export function auditBrightened({ facts, sayAs, imagesShown }) {
 
 /** This module's audit units (audits/list.js runs them in its order). */
 export const UNITS = [
-  unit(META, 'unclipped', (C, { shading }) => (shading.shaded ? auditUnclipped(C) : null), { uses: ['shading'] }),
-  unit(META, 'brightened', (C, { shading }) => (shading.shaded ? auditBrightened(C) : null), { uses: ['shading'] }),
-  unit(META, 'diffuse', (C, { shading, 'lit-views': lit }) => (shading.shaded ? auditDiffuse(C, shading.shading, lit) : null), { uses: ['shading', 'lit-views'] }),
-  unit(META, 'point-light', (C, { shading }) => (shading.shaded ? auditPointLight(C, shading.shading) : null), { uses: ['shading'] }),
+  unit(META, 'unclipped', (context, { shading }) => (shading.shaded ? auditUnclipped(context) : null), { uses: ['shading'] }),
+  unit(META, 'brightened', (context, { shading }) => (shading.shaded ? auditBrightened(context) : null), { uses: ['shading'] }),
+  unit(META, 'diffuse', (context, { shading, 'lit-views': lit }) => (shading.shaded ? auditDiffuse(context, shading.shading, lit) : null), { uses: ['shading', 'lit-views'] }),
+  unit(META, 'point-light', (context, { shading }) => (shading.shaded ? auditPointLight(context, shading.shading) : null), { uses: ['shading'] }),
 ];

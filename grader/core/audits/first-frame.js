@@ -59,14 +59,14 @@ export function notGradedHere({ facts }) {
 
 /** This module's audit units (audits/list.js runs them in its order). */
 export const UNITS = [
-  unit(META, 'not-graded', (C) => {
-    const reason = notGradedHere(C);
-    if (reason) C.notGraded = { reason, id: 'not-graded' };
+  unit(META, 'not-graded', (context) => {
+    const reason = notGradedHere(context);
+    if (reason) context.notGraded = { reason, id: 'not-graded' };
   }),
   // a part that drew nothing ends here; where what the grader read is not what a student sees
   // (shown-channels), the review stands and nothing is failed on it
-  unit(META, 'first-frame', (C, results) => {
-    const fail = auditFirstFrame(C);
+  unit(META, 'first-frame', (context, results) => {
+    const fail = auditFirstFrame(context);
     if (fail === STOP) return end();
     if (fail) return results['shown-channels'] ? end() : end(fail, 'first-frame');
     return null;

@@ -139,7 +139,7 @@ export const UNITS = [
   unit(META, 'all-round', auditAllRound),
   unit(META, 'growth', auditGrowth),
   unit(META, 'loops-multiply', auditLoopsMultiply),
-  unit(META, 'picture-not-geometry', (C, results) => auditPictureNotGeometry(C, results['judged-picture']), { uses: ['judged-picture'] }),
+  unit(META, 'picture-not-geometry', (context, results) => auditPictureNotGeometry(context, results['judged-picture']), { uses: ['judged-picture'] }),
   unit(META, 'per-face', auditPerFace),
   unit(META, 'winding', auditWinding),
 ];

@@ -19,8 +19,8 @@ export const META = {
  * Whether a highlight shows, and where it is placed. Returns the place to judge at the end (the
  * gatherer looked farther along the orbit for it), or null.
  */
-export function auditHighlight(C, shading, views) {
-  const { facts, images, T, must, sayAs, numbers } = C;
+export function auditHighlight(context, shading, views) {
+  const { facts, images, T, must, sayAs, numbers } = context;
   const say = sayAs('highlight');
   if (!must.has('highlight') || !shading.fit) return null;
   const fit = shading.judgedFit;
@@ -31,19 +31,19 @@ export function auditHighlight(C, shading, views) {
   if (seen && !shading.nearModel) {
     if (!place) sayAs('highlight-place')('pass', 'note: the highlight\'s place is not judged: it shows only with s lowered to 10 by the page\'s own slider, which makes it too broad to place');
     else if (facts.placeFarther) later = place;
-    else judgePlace(C, place);
+    else judgePlace(context, place);
   }
   if (!seen) say('mistake', `no specular highlight: nothing brighter than the diffuse fit (${fmt(fit.highlightPeak)}) in ${1 + views.length} views (the judged one${views.length ? ' and the lit ones along the orbit' : ''})`);
   return later;
 }
 
 /** The highlight's place, judged in the view the gatherer found farther along the orbit, else where it was seen (`near`). */
-export function auditPlaceFarther(C, near) {
-  const name = C.facts.placeFarther.image;
-  if (!name) return judgePlace(C, near);
-  const img = C.images[name];
-  C.imagesShown.highlightPlace = name;
-  judgePlace(C, { fit: fullFit(img, C.T), where: 'a view along the orbit' });
+export function auditPlaceFarther(context, near) {
+  const name = context.facts.placeFarther.image;
+  if (!name) return judgePlace(context, near);
+  const img = context.images[name];
+  context.imagesShown.highlightPlace = name;
+  judgePlace(context, { fit: fullFit(img, context.T), where: 'a view along the orbit' });
 }
 
 /** Says whether the highlight sits at w_h in `place` ({ fit, where }). */
@@ -88,7 +88,7 @@ function unsure(tint, T) {
 export const UNITS = [
   // the highlight read on the judged picture and on the lit views' full fits; its result (the place
   // nearer the viewer) is read again farther along (highlight-place)
-  unit(META, 'highlight', (C, { shading, 'lit-views': lit }) => (shading.shaded ? auditHighlight(C, shading.shading, viewFits(lit.map((v) => ({ img: C.images[v.image] })), C.T)) : null),
+  unit(META, 'highlight', (context, { shading, 'lit-views': lit }) => (shading.shaded ? auditHighlight(context, shading.shading, viewFits(lit.map((v) => ({ img: context.images[v.image] })), context.T)) : null),
     { also: ['highlight-place'], uses: ['shading', 'lit-views'] }),
-  unit(META, 'highlight-place', (C, { highlight }) => (highlight ? auditPlaceFarther(C, highlight) : null), { uses: ['highlight'] }),
+  unit(META, 'highlight-place', (context, { highlight }) => (highlight ? auditPlaceFarther(context, highlight) : null), { uses: ['highlight'] }),
 ];

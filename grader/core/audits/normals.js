@@ -131,9 +131,9 @@ export function auditDepthCulling({ facts, must, sayAs, numbers }) {
 
 /** This module's audit units (audits/list.js runs them in its order). */
 export const UNITS = [
-  unit(META, 'normal-colours', (C, results) => auditNormals(C, results['judged-picture']), { also: ['front-faces'], uses: ['judged-picture'] }),
-  unit(META, 'perspective', (C, results) => auditPerspective(C, results['normal-colours']), { uses: ['normal-colours'] }),
+  unit(META, 'normal-colours', (context, results) => auditNormals(context, results['judged-picture']), { also: ['front-faces'], uses: ['judged-picture'] }),
+  unit(META, 'perspective', (context, results) => auditPerspective(context, results['normal-colours']), { uses: ['normal-colours'] }),
   unit(META, 'depth-culling', auditDepthCulling),
   // a lit step that shows WP04P1's colours has no shading to judge (true then): its colours are not lighting
-  unit(META, 'normals-not-light', (C, results) => C.litStep && auditNormalsNotLight(C, results['judged-picture']), { uses: ['judged-picture'] }),
+  unit(META, 'normals-not-light', (context, results) => context.litStep && auditNormalsNotLight(context, results['judged-picture']), { uses: ['judged-picture'] }),
 ];

@@ -73,6 +73,6 @@ export function auditNotStopped({ facts, sayAs }) {
 /** This module's audit units (audits/list.js runs them in its order). */
 export const UNITS = [
   unit(META, 'orbit-stops-again', auditOrbitStopsAgain, { says: ['orbit-stops'] }),
-  unit(META, 'orbit-light', (C, results) => auditOrbit(C, results['lit-views']), { also: ['orbit-toggle'], uses: ['lit-views'] }),
+  unit(META, 'orbit-light', (context, results) => auditOrbit(context, results['lit-views']), { also: ['orbit-toggle'], uses: ['lit-views'] }),
   unit(META, 'orbit-not-stopped', auditNotStopped, { says: ['orbit-stops'] }),
 ];

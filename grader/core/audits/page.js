@@ -62,11 +62,11 @@ function auditTamper({ facts, sayAs }) {
  * machine, the verdict must not. A page that draws is not broken for being slow: not graded here
  * (the rubric's tooSlowVerdict), or said at that verdict.
  */
-function auditTooSlow(C) {
-  const { facts, rubric, sayAs } = C;
+function auditTooSlow(context) {
+  const { facts, rubric, sayAs } = context;
   if (!facts.tooSlow) return null;
   const slow = tooSlow(rubric, facts.tooHeavy != null ? tooHeavyWords(rubric, facts.tooSlow, facts.tooHeavy) : tooSlowWords(rubric, facts.tooSlow));
-  if (slow.level === NOT_GRADED) C.notGraded = { reason: slow.reason, id: slow.id };
+  if (slow.level === NOT_GRADED) context.notGraded = { reason: slow.reason, id: slow.id };
   else sayAs(slow.id)(slow.level, slow.reason);
   return end();
 }

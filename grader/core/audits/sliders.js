@@ -63,5 +63,5 @@ export function auditSliders({ facts, images, T, must, sayAs, rubric, part }, ju
 
 /** This module's audit units (audits/list.js runs them in its order). */
 export const UNITS = [
-  unit(META, 'sliders', (C, results) => auditSliders(C, results['judged-picture'], results.shading.shading), { also: ['input-event', 'ks-used'], uses: ['judged-picture', 'shading'] }),
+  unit(META, 'sliders', (context, results) => auditSliders(context, results['judged-picture'], results.shading.shading), { also: ['input-event', 'ks-used'], uses: ['judged-picture', 'shading'] }),
 ];

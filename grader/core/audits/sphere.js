@@ -72,6 +72,6 @@ export const UNITS = [
   unit(META, 'heavy-level', auditHeavyLevel),
   unit(META, 'level-controls', auditLevelControls),
   unit(META, 'judged-picture', judgedPicture, { says: ['sphere'], reads: ['facts.judged', 'facts.facesImage'] }),
-  unit(META, 'sphere', (C, results) => auditSphere(C, results['judged-picture'], C.facts.ladder.map((l) => l.roundness), analyse(C.images.first, C.T).roundness),
+  unit(META, 'sphere', (context, results) => auditSphere(context, results['judged-picture'], context.facts.ladder.map((l) => l.roundness), analyse(context.images.first, context.T).roundness),
     { uses: ['judged-picture'] }),
 ];

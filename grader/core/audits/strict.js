@@ -7,16 +7,16 @@ import { requiredFacts } from './unit.js';
 export function strictly(units) {
   return units.map((u) => {
     const may = new Set(requiredFacts(u));
-    return { ...u, run: (C, results) => {
-      const facts = new Proxy(C.facts, { get: (o, k) => {
+    return { ...u, run: (context, results) => {
+      const facts = new Proxy(context.facts, { get: (o, k) => {
         if (typeof k === 'string' && !may.has(k)) throw new Error(`the audit unit ${u.id} reads facts.${k}, which it does not name`);
         return o[k];
       } });
       const sayAs = (id) => {
         if (!u.meta[id]) throw new Error(`the audit unit ${u.id} says ${id}, which it does not declare`);
-        return C.sayAs(id);
+        return context.sayAs(id);
       };
-      return u.run(new Proxy(C, { get: (o, k) => (k === 'facts' ? facts : k === 'sayAs' ? sayAs : o[k]) }), results);
+      return u.run(new Proxy(context, { get: (o, k) => (k === 'facts' ? facts : k === 'sayAs' ? sayAs : o[k]) }), results);
     } };
   });
 }

@@ -10,34 +10,34 @@ import { cameraTurn } from '../computed/camera.js';
 import { readCamera, orbitSampleFrames } from './orbit.js';
 
 /** Looks at the sphere all round its orbit where its mesh cannot be read: sets facts.allRound. */
-export async function lookAllRound(S) {
-  const { T, facts, orbit } = S;
+export async function lookAllRound(session) {
+  const { T, facts, orbit } = session;
   const g = facts.geometry;
   if (!g || !g.why || !orbit) return;
-  const stopped = !S.moving;
+  const stopped = !session.moving;
   if (stopped && !(orbit.start && orbit.stop)) return;
-  S.step('looking at the sphere from every side');
-  if (stopped && await S.tryClick(orbit.start, 'the orbit control, to look all round,', { watchMotion: true }) !== 'starts') return;
+  session.step('looking at the sphere from every side');
+  if (stopped && await session.tryClick(orbit.start, 'the orbit control, to look all round,', { watchMotion: true }) !== 'starts') return;
   const views = [];
-  await readCamera(S);
-  let last = S.camera, turned = last ? 0 : null, gap = null;
+  await readCamera(session);
+  let last = session.camera, turned = last ? 0 : null, gap = null;
   // frames a step: at most an orbit sample's (orbit.js), at least one
-  const most = () => Math.max(1, orbitSampleFrames(S));
+  const most = () => Math.max(1, orbitSampleFrames(session));
   let frames = T.roundFirstFrames;
   for (let k = 0; k < T.roundSamples && !(turned >= 360); k++) {
-    await S.tick((1000 * frames) / T.framesPerSecond, frames);
-    const sh = await S.shot();
-    await readCamera(S);
-    const step = turned !== null ? cameraTurn([last, S.camera], T.cameraRotationTolerance) : null;
+    await session.tick((1000 * frames) / T.framesPerSecond, frames);
+    const sh = await session.shot();
+    await readCamera(session);
+    const step = turned !== null ? cameraTurn([last, session.camera], T.cameraRotationTolerance) : null;
     turned = step !== null ? turned + step : null;
-    last = S.camera;
+    last = session.camera;
     // the next step's frames: sized to turn about roundStepDegrees where this one's turn is read, else doubled
     frames = Math.max(1, Math.min(most(), step > 0 ? Math.round((frames * T.roundStepDegrees) / step) : 2 * frames));
     const an = sh ? sh.an : { blank: true };
     views.push(an.blank ? { blank: true } : { roundness: an.roundness, fill: an.fill, ...(turned !== null ? { turned } : {}) });
-    if (!gap && !an.blank && an.roundness <= T.roundness && an.fill < T.fill) gap = S.keep('all-round-gap', sh.img);
+    if (!gap && !an.blank && an.roundness <= T.roundness && an.fill < T.fill) gap = session.keep('all-round-gap', sh.img);
   }
   facts.allRound = { views, turned, gap, why: g.why };
-  S.act(`looked at ${views.length} positions along the orbit${turned !== null ? ` (the camera turned ${Math.round(turned)}°)` : ''}`);
-  if (stopped) await S.tryClick(orbit.stop, 'the orbit control again', { watchMotion: true });
+  session.act(`looked at ${views.length} positions along the orbit${turned !== null ? ` (the camera turned ${Math.round(turned)}°)` : ''}`);
+  if (stopped) await session.tryClick(orbit.stop, 'the orbit control again', { watchMotion: true });
 }

@@ -11,47 +11,47 @@ import { free } from './params.js';
  * picture means the nearest faces were showing (facts.noCull; its `draws`, the page's draw calls
  * meanwhile: none, and the picture tells nothing).
  */
-export async function probeFaces(S, controls, judged) {
-  const { T, facts } = S;
+export async function probeFaces(session, controls, judged) {
+  const { T, facts } = session;
   let { img, an } = judged;
   let nc = normalColours(samples(img, an, T), T);
   if (nc && !facesViewer(nc, T)) {
     for (const [r, want] of [['depth', true], ['cull', true], ['clockwise', false]]) {
-      const c = free(S, controls, r);
+      const c = free(session, controls, r);
       if (!c || (c.type === 'checkbox' && c.checked === want)) continue;
-      if (!await S.press(c, `the ${r === 'clockwise' ? 'clockwise-front-faces' : r} control`)) continue;
-      const s = await S.shot();
+      if (!await session.press(c, `the ${r === 'clockwise' ? 'clockwise-front-faces' : r} control`)) continue;
+      const s = await session.shot();
       if (!s || s.an.blank) break;
       ({ img, an } = s);
-      facts.facesImage = S.keep('faces', img);
+      facts.facesImage = session.keep('faces', img);
       nc = normalColours(samples(img, an, T), T);
       if (facesViewer(nc, T)) break;
     }
   }
   if (nc && nc.det < 0 && nc.residual <= T.facingResidual && facts.api !== 'webgpu') {
-    const faces = (await S.page.state()).faces || {};
+    const faces = (await session.page.state()).faces || {};
     facts.noCull = { faces };
     if (faces.depthTest && faces.culling) {
-      const before = (await S.page.state()).draws;
-      await S.page.setNoCull(true);
-      await S.tick(S.T.actionTickMs);
-      const s = await S.shot();
+      const before = (await session.page.state()).draws;
+      await session.page.setNoCull(true);
+      await session.tick(session.T.actionTickMs);
+      const s = await session.shot();
       // a page that draws only when a control asks drew nothing here: its picture tells nothing
-      facts.noCull.draws = (await S.page.state()).draws - before;
-      await S.page.setNoCull(false);
-      await S.tick(S.T.actionTickMs);
-      if (s) facts.noCull.image = S.keep('no-cull', s.img);
+      facts.noCull.draws = (await session.page.state()).draws - before;
+      await session.page.setNoCull(false);
+      await session.tick(session.T.actionTickMs);
+      if (s) facts.noCull.image = session.keep('no-cull', s.img);
     }
   }
 }
 
 /** P2: the depth test and culling as the page set them, its own toggles switched on where they start off. */
-export async function probeDepthCulling(S, controls) {
-  let faces = (await S.page.state()).faces || {};
+export async function probeDepthCulling(session, controls) {
+  let faces = (await session.page.state()).faces || {};
   for (const [r, on] of [['depth', 'depthTest'], ['cull', 'culling']]) {
-    const c = free(S, controls, r);
+    const c = free(session, controls, r);
     if (faces[on] || !c) continue;
-    if (await S.press(c, `the ${r} control`)) faces = (await S.page.state()).faces || {};
+    if (await session.press(c, `the ${r} control`)) faces = (await session.page.state()).faces || {};
   }
-  S.facts.faces = faces;
+  session.facts.faces = faces;
 }

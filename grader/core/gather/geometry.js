@@ -5,17 +5,17 @@
 import { clipMatrix } from '../computed/surface.js';
 
 /** The last frame's geometry, summed up within the rubric's sample bounds; null where not recorded. */
-export async function readGeometry(S) {
-  if (!S.page.geometry) return null;
-  S.outOfTime();
-  return S.page.geometry({ maxTriangles: S.T.geometrySampleTriangles, maxEdgeTriangles: S.T.geometryEdgeTriangles });
+export async function readGeometry(session) {
+  if (!session.page.geometry) return null;
+  session.outOfTime();
+  return session.page.geometry({ maxTriangles: session.T.geometrySampleTriangles, maxEdgeTriangles: session.T.geometryEdgeTriangles });
 }
 
 /** What the page last sent for its shaders ({ key: digest }: grader/browser/sent.js); null where not recorded. */
-export async function readSent(S) {
-  if (!S.page.sent) return null;
-  S.outOfTime();
-  return S.page.sent();
+export async function readSent(session) {
+  if (!session.page.sent) return null;
+  session.outOfTime();
+  return session.page.sent();
 }
 
 /**
@@ -23,14 +23,14 @@ export async function readSent(S) {
  * clip matrix P·V·M) with its two pictures kept as `surface-normals` and `surface-points`; { why }
  * where it could not be drawn again; null where the page interface cannot.
  */
-export async function readSurface(S) {
-  if (!S.page.surface) return null;
-  S.outOfTime();
-  const r = await S.page.surface({ fitSamples: S.T.surfaceFitSamples });
+export async function readSurface(session) {
+  if (!session.page.surface) return null;
+  session.outOfTime();
+  const r = await session.page.surface({ fitSamples: session.T.surfaceFitSamples });
   if (!r || r.why) return { why: r ? r.why : 'the surface was not read' };
   const { normals, points, fit, ...facts } = r;
   // where the page's matrices put its positions: P·V·M, solved from the fit's samples (16 numbers kept, not the samples)
   const clip = clipMatrix(fit.map((f) => ({ p: f.slice(0, 3), clip: f.slice(3, 7) })));
   if (!clip) return { why: `where the page's matrices put its positions could not be solved from ${fit.length} of its pixels` };
-  return { ...facts, clip: clip.map((row) => row.map((v) => Math.round(v * 1e6) / 1e6)), normals: S.keep('surface-normals', normals), points: S.keep('surface-points', points) };
+  return { ...facts, clip: clip.map((row) => row.map((v) => Math.round(v * 1e6) / 1e6)), normals: session.keep('surface-normals', normals), points: session.keep('surface-points', points) };
 }

@@ -12,27 +12,27 @@ import { groupsOf, setGroup, greatest, groupFacts } from './params.js';
  * P4/P5, no highlight seen: the page's own material sliders show it: ks up to its greatest, then s
  * down to 10 (a broad highlight). facts.raised: [{ role, control, value, image, seen }].
  */
-export async function raiseHighlight(S, controls) {
-  const { T } = S;
+export async function raiseHighlight(session, controls) {
+  const { T } = session;
   const set = [];
   // s raised to raisedShininess, within the slider's range
   const s10 = (c) => Math.max(Number(c.min || 0) + 1, Math.min(T.raisedShininess, Number(c.max || T.raisedShininess)));
-  const raised = S.facts.raised = [];
-  const groups = groupsOf(S, controls).filter((g) => g.controls.every((c) => c.type === 'range' || c.type === 'number' || (g.role === 'ks' && c.type === 'color')));
+  const raised = session.facts.raised = [];
+  const groups = groupsOf(session, controls).filter((g) => g.controls.every((c) => c.type === 'range' || c.type === 'number' || (g.role === 'ks' && c.type === 'color')));
   for (const [r, to] of [['ks', (c) => (c.type === 'color' ? greatest(c) : Number(c.max === '' || c.max === undefined ? 1 : c.max))], ['s', s10]]) {
     const g = groups.find((x) => x.role === r);
     if (!g || raised.some((x) => x.seen)) continue;
     const c = g.controls[0];
-    const vs = await setGroup(S, g, to);
+    const vs = await setGroup(session, g, to);
     set.push(g);
-    await S.tick(S.T.actionTickMs);
-    const sh = await S.shot();
+    await session.tick(session.T.actionTickMs);
+    const sh = await session.shot();
     const seen = !!sh && highlightIn(sh.img, T);
-    raised.push({ role: r, ...groupFacts(g, vs), value: vs[0], broad: r === 's' && s10(c) < Number(S.now(c)), image: sh ? S.keep(`raised-${r}`, sh.img) : null, seen });
-    S.act(`set ${describeGroup(g)} to ${vs[0]} to look for a highlight${seen ? ': one shows' : ''}`);
+    raised.push({ role: r, ...groupFacts(g, vs), value: vs[0], broad: r === 's' && s10(c) < Number(session.now(c)), image: sh ? session.keep(`raised-${r}`, sh.img) : null, seen });
+    session.act(`set ${describeGroup(g)} to ${vs[0]} to look for a highlight${seen ? ': one shows' : ''}`);
   }
-  for (const g of set) await setGroup(S, g, (c) => S.now(c));
-  if (set.length) await S.tick(S.T.actionTickMs);
+  for (const g of set) await setGroup(session, g, (c) => session.now(c));
+  if (set.length) await session.tick(session.T.actionTickMs);
 }
 
 /**
@@ -40,28 +40,28 @@ export async function raiseHighlight(S, controls) {
  * orbit on (with the sliders as they showed the highlight), sampled until such a view shows the
  * highlight over a clean diffuse fit, or orbitSamples positions; then off again.
  */
-export async function placeFarther(S, controls) {
-  const { T, orbit, facts } = S;
-  S.step('looking along the orbit for a view with the light away from the viewer');
+export async function placeFarther(session, controls) {
+  const { T, orbit, facts } = session;
+  session.step('looking along the orbit for a view with the light away from the viewer');
   const raised = (facts.raised || []).some((x) => x.seen) ? facts.raised : []; // the sliders as they showed the highlight
   const byIndex = (i) => controls.find((c) => c.index === i);
   const each = async (value) => {
     for (const x of raised) {
       const cs = (x.controls || [x.control]).map(byIndex);
-      for (let k = 0; k < cs.length; k++) await S.page.setValue(cs[k], value(x, k, cs[k]), ['input', 'change']);
+      for (let k = 0; k < cs.length; k++) await session.page.setValue(cs[k], value(x, k, cs[k]), ['input', 'change']);
     }
   };
   await each((x, k) => (x.values ? x.values[k] : x.value));
   let far = { img: null, k: 0 };
-  if (await S.tryClick(orbit.start, 'the orbit control', { watchMotion: true }) === 'starts') {
-    far = await searchOrbit(S, (img, an) => {
+  if (await session.tryClick(orbit.start, 'the orbit control', { watchMotion: true }) === 'starts') {
+    far = await searchOrbit(session, (img, an) => {
       if (an.blank || an.roundness >= T.orbitCoarseRoundness) return false;
       const f = fullFit(img, T); // (the fit the highlight's place is judged on: audits/highlight.js)
       return !!f && f.r2 >= T.diffuseR2 && highlightSeen(f, T) && lightAngle(f) >= T.highlightPlaceLightDegrees;
     });
-    await S.tryClick(orbit.stop, 'the orbit control again', { watchMotion: true });
+    await session.tryClick(orbit.stop, 'the orbit control again', { watchMotion: true });
   }
-  await each((x, k, c) => S.now(c));
-  S.act(`sampled the orbit at ${far.k} positions for a view with the light ${T.highlightPlaceLightDegrees}° or more from the viewer${raised.length ? `, ${raised.map((x) => `${x.role} at ${x.value}`).join(' and ')}` : ''}: ${far.img ? 'one shows the highlight' : 'none shows the highlight over a clean diffuse fit'}`);
-  facts.placeFarther = { image: far.img ? S.keep('highlight-place', far.img) : null };
+  await each((x, k, c) => session.now(c));
+  session.act(`sampled the orbit at ${far.k} positions for a view with the light ${T.highlightPlaceLightDegrees}° or more from the viewer${raised.length ? `, ${raised.map((x) => `${x.role} at ${x.value}`).join(' and ')}` : ''}: ${far.img ? 'one shows the highlight' : 'none shows the highlight over a clean diffuse fit'}`);
+  facts.placeFarther = { image: far.img ? session.keep('highlight-place', far.img) : null };
 }

@@ -8,7 +8,7 @@
 // It drives the page only through the page interface (grader/node/playwright-page.js for the
 // grader, check/frame-page.js for the check page): state(), snap(), controls(), click(c),
 // setValue(c, v, events), press(key), tick(ms, frames) → state(), setNoCull(on), sources(), errors().
-import { session, TooSlow, TooHeavy } from './session.js';
+import { openSession, TooSlow, TooHeavy } from './session.js';
 import { findOrbit, sampleOrbit, look, startOrbitToSee } from './orbit.js';
 import { findLevel, climb } from './level.js';
 import { probeFaces, probeDepthCulling } from './faces.js';
@@ -25,34 +25,34 @@ export const FIRST_FRAME = 'waiting for the first frame';
 
 /** Gathers one opened part: { facts, images }. `timing` ({ method: { ms, calls } }) hears where the time went. */
 export async function gatherPart(page, { part, rubric, progress = () => {}, deadline = Infinity, timing = {} }) {
-  const S = session(timed(page, timing), { part, rubric, progress, deadline });
+  const session = openSession(timed(page, timing), { part, rubric, progress, deadline });
   try {
-    await gather(S);
+    await gather(session);
   } catch (err) {
     if (!(err instanceof TooSlow)) throw err;
-    S.facts.tooSlow = err.doing;
-    if (err instanceof TooHeavy) S.facts.tooHeavy = err.work;
+    session.facts.tooSlow = err.doing;
+    if (err instanceof TooHeavy) session.facts.tooHeavy = err.work;
   }
-  S.facts.errors = [...page.errors()];
+  session.facts.errors = [...page.errors()];
   // the grader's hooks the page replaced (a hand-in is untrusted code): the audit names them
   const tampered = page.tampered ? await page.tampered().catch(() => null) : null;
-  if (tampered && tampered.length) S.facts.tampered = tampered;
-  return { facts: S.facts, images: S.images };
+  if (tampered && tampered.length) session.facts.tampered = tampered;
+  return { facts: session.facts, images: session.images };
 }
 
 /** The part gathered in the order a teacher works: the first frame, the controls, the orbit and the level, then what the step asks to be tried. */
-async function gather(S) {
-  const first = await firstFrame(S);
+async function gather(session) {
+  const first = await firstFrame(session);
   if (!first || first.an.blank) return;
   // the page's animation loops and draws a frame before any control is touched, and after them all
-  if (S.frameDraws) S.facts.frameDraws = { first: S.frameDraws };
-  const controls = await S.page.controls();
-  S.facts.controls = controls;
-  S.cur = first;
-  const judged = await orbitAndLevel(S, controls);
-  if (judged) await whatTheStepAsks(S, controls, judged.img);
+  if (session.frameDraws) session.facts.frameDraws = { first: session.frameDraws };
+  const controls = await session.page.controls();
+  session.facts.controls = controls;
+  session.cur = first;
+  const judged = await orbitAndLevel(session, controls);
+  if (judged) await whatTheStepAsks(session, controls, judged.img);
   // (the last frames the gathering ran: no frame is run for it)
-  if (S.facts.frameDraws) Object.assign(S.facts.frameDraws, { last: S.frameDraws, clicks: S.facts.actions.filter((a) => /^(clicked|pressed) /.test(a)).length });
+  if (session.facts.frameDraws) Object.assign(session.facts.frameDraws, { last: session.frameDraws, clicks: session.facts.actions.filter((a) => /^(clicked|pressed) /.test(a)).length });
 }
 
 /**
@@ -60,44 +60,44 @@ async function gather(S) {
  * that shows one colour has a counted number of frames more. facts.first, facts.canvas and the
  * picture `first`; returns the first shot ({ img, an }) or null (no canvas).
  */
-async function firstFrame(S) {
-  const { page, T, facts, must } = S;
-  S.step(FIRST_FRAME);
-  await S.settle();
-  await S.tick(T.firstTickMs, 1);
+async function firstFrame(session) {
+  const { page, T, facts, must } = session;
+  session.step(FIRST_FRAME);
+  await session.settle();
+  await session.tick(T.firstTickMs, 1);
   for (let k = 0; k < T.firstFrameTicks; k++) {
-    const s = await S.settle();
+    const s = await session.settle();
     if (s.draws > 0 && (s.api !== 'webgpu' || s.frames > 0)) break;
     if (s.adapter === null || s.shaderErrors.length || (!s.api && k >= T.noContextTicks)) break;
     // it threw or alerted: no need to wait longer
     if (k >= T.errorTicks && page.errors().some((e) => /^(page error|dialog)/.test(e))) break;
-    await S.tick(T.frameMs);
+    await session.tick(T.frameMs);
   }
   const g = await page.state();
   facts.api = g.api;
   facts.first = { api: g.api, adapter: g.adapter, draws: g.draws, shaderErrors: g.shaderErrors, gpuErrors: g.gpuErrors,
     ...(g.webgpuMissing ? { webgpuMissing: true } : {}) }; // it asked for WebGPU where the browser has none (Firefox ESR)
-  let firstShot = await S.shot();
+  let firstShot = await session.shot();
   if (!firstShot) return null;
   // a page that drew without an error and shows one colour (its unlit side on a background of the
   // same colour, say) has its chance: a counted number of frames more, then the picture it shows then is its first
   if (firstShot.an.blank && g.draws > 0 && !g.shaderErrors.length && !g.gpuErrors.length) {
-    S.step('waiting for a visible frame');
-    await S.tick(T.blankWaitFrames * T.frameMs, T.blankWaitFrames);
-    const later = await S.shot();
+    session.step('waiting for a visible frame');
+    await session.tick(T.blankWaitFrames * T.frameMs, T.blankWaitFrames);
+    const later = await session.shot();
     facts.first.waited = T.blankWaitFrames;
     if (later) firstShot = later;
     // a lit step may face its unlit side to the camera until its orbit is started
-    const started = firstShot.an.blank && must.has('diffuse') ? await startOrbitToSee(S) : null;
+    const started = firstShot.an.blank && must.has('diffuse') ? await startOrbitToSee(session) : null;
     if (started) {
       firstShot = started.shot;
       facts.first.orbitStarted = started.control;
     }
-    facts.first.blankGeometry = firstShot.an.blank ? await readGeometry(S) : null;
+    facts.first.blankGeometry = firstShot.an.blank ? await readGeometry(session) : null;
   }
   facts.canvas = { width: firstShot.img.width, height: firstShot.img.height };
-  S.keep('first', firstShot.img);
-  await compareShown(S, 'first');
+  session.keep('first', firstShot.img);
+  await compareShown(session, 'first');
   return firstShot;
 }
 
@@ -106,31 +106,31 @@ async function firstFrame(S) {
  * again where the shading needs it, and the level to judge: facts.orbit, facts.ladder, facts.judged.
  * Returns the judged level's shot, or null where it is blank.
  */
-async function orbitAndLevel(S, controls) {
-  const { facts, must } = S;
-  await findOrbit(S, controls);
-  const stopped = facts.stopped = !S.moving;
-  await findLevel(S, controls);
-  await climb(S);
-  const ladder = S.ladder;
+async function orbitAndLevel(session, controls) {
+  const { facts, must } = session;
+  await findOrbit(session, controls);
+  const stopped = facts.stopped = !session.moving;
+  await findLevel(session, controls);
+  await climb(session);
+  const ladder = session.ladder;
   // the orbit looked at where the shading can be read (it was too coarse at first): on again,
   // sampled, off again; the view it stops at is judged. Only where it buys evidence: the judged view
   // is unlit, or the step asks for the orbit (P3)
-  const { orbit } = S;
-  if (orbit.later && must.has('diffuse') && (must.has('orbit-toggle') || !look(S, ladder[ladder.length - 1].img, { orbiting: false, keep: false }))) {
+  const { orbit } = session;
+  if (orbit.later && must.has('diffuse') && (must.has('orbit-toggle') || !look(session, ladder[ladder.length - 1].img, { orbiting: false, keep: false }))) {
     const at = ladder.length - 1;
     if (!stopped) {
-      await sampleOrbit(S, true);
-      ladder[at] = S.cur;
+      await sampleOrbit(session, true);
+      ladder[at] = session.cur;
       facts.viewMoved = true;
-    } else if (orbit.start && orbit.stop && await S.tryClick(orbit.start, 'the orbit control again', { watchMotion: true }) === 'starts') {
+    } else if (orbit.start && orbit.stop && await session.tryClick(orbit.start, 'the orbit control again', { watchMotion: true }) === 'starts') {
       facts.viewMoved = true;
-      await sampleOrbit(S, true);
-      if (await S.tryClick(orbit.stop, 'the orbit control again', { watchMotion: true }) === 'stops') ladder[at] = S.cur;
+      await sampleOrbit(session, true);
+      if (await session.tryClick(orbit.stop, 'the orbit control again', { watchMotion: true }) === 'stops') ladder[at] = session.cur;
       else facts.orbitKeptMoving = true;
     }
   }
-  Object.assign(facts.orbit = {}, { movedAtFirst: orbit.movedAtFirst, toggles: orbit.toggles, start: orbit.start ? orbit.start.index : null, stop: orbit.stop ? orbit.stop.index : null, control: S.R.orbit ? S.R.orbit.index : null });
+  Object.assign(facts.orbit = {}, { movedAtFirst: orbit.movedAtFirst, toggles: orbit.toggles, start: orbit.start ? orbit.start.index : null, stop: orbit.stop ? orbit.stop.index : null, control: session.R.orbit ? session.R.orbit.index : null });
   // a page that goes blank at a higher level is judged at the last level it drew
   let j = ladder.length - 1;
   if (ladder[j].an.blank) {
@@ -143,40 +143,40 @@ async function orbitAndLevel(S, controls) {
   // each level's outline as measured on the way up; its picture where an audit reads it (the judged
   // level; every level where a coarse one is compared with it, P5)
   facts.ladder = ladder.map((s, k) => ({ roundness: s.an.roundness, blank: !!s.an.blank,
-    ...(k === j || must.has('per-fragment') ? { image: S.keep(`level-${k}`, s.img) } : {}) }));
+    ...(k === j || must.has('per-fragment') ? { image: session.keep(`level-${k}`, s.img) } : {}) }));
   facts.judgedLevel = j;
-  facts.geometry = await readGeometry(S);
+  facts.geometry = await readGeometry(session);
   // the judged view's surface per pixel, where the lighting is judged: each pixel's position and normal as the page drew them
-  if (must.has('diffuse') || must.has('highlight')) facts.surface = await readSurface(S);
+  if (must.has('diffuse') || must.has('highlight')) facts.surface = await readSurface(session);
   facts.judged = facts.ladder[j].image;
   return ladder[j].an.blank ? null : ladder[j];
 }
 
 /** What the step asks to be tried on the judged picture `img`: the faces, the shading made readable, the highlight, the sliders, s at its least, the highlight's place, the view all round. */
-async function whatTheStepAsks(S, controls, img) {
-  const { page, T, facts, must, orbit } = S;
+async function whatTheStepAsks(session, controls, img) {
+  const { page, T, facts, must, orbit } = session;
   const stopped = facts.stopped;
   const { an } = sphereView(img, T);
-  if (must.has('front-faces')) await probeFaces(S, controls, { img, an });
-  if (must.has('depth-culling')) await probeDepthCulling(S, controls);
+  if (must.has('front-faces')) await probeFaces(session, controls, { img, an });
+  if (must.has('depth-culling')) await probeDepthCulling(session, controls);
   // a picture that clips to white over much of the sphere: read with the page's own kd, Le, La
   // lowered; one too dim to show its shading, with the page's own Le (else kd) raised
   const shaded = must.has('diffuse') || must.has('highlight');
-  const shadeImg = (shaded && (await unclip(S, controls, img, an) || await brighten(S, controls, img, an))) || img;
+  const shadeImg = (shaded && (await unclip(session, controls, img, an) || await brighten(session, controls, img, an))) || img;
   const shading = shaded ? shadingOf(shadeImg, an, T) : null;
   let placeLater = false;
   if (must.has('highlight') && shading.fit) {
-    const views = viewFits(facts.views.map((v) => ({ img: S.images[v.image] })), T);
-    if (!highlightEvidence(shading, views, null, S.images, T).seen && !shading.nearModel) await raiseHighlight(S, controls);
-    placeLater = highlightEvidence(shading, views, facts.raised, S.images, T).farther && !!orbit.start && !!orbit.stop && stopped;
+    const views = viewFits(facts.views.map((v) => ({ img: session.images[v.image] })), T);
+    if (!highlightEvidence(shading, views, null, session.images, T).seen && !shading.nearModel) await raiseHighlight(session, controls);
+    placeLater = highlightEvidence(shading, views, facts.raised, session.images, T).farther && !!orbit.start && !!orbit.stop && stopped;
   }
-  if (must.has('sliders')) await trySliders(S, controls);
-  if (must.has('highlight') && shading.fit && stopped) await leastShininess(S, controls);
+  if (must.has('sliders')) await trySliders(session, controls);
+  if (must.has('highlight') && shading.fit && stopped) await leastShininess(session, controls);
   facts.sources = await page.sources();
-  if (placeLater) await placeFarther(S, controls);
-  await compareShown(S, 'last');
+  if (placeLater) await placeFarther(session, controls);
+  await compareShown(session, 'last');
   // last: it turns the orbit on and off again, and nothing after it reads the picture
-  await lookAllRound(S);
+  await lookAllRound(session);
 }
 
 /**
@@ -184,13 +184,13 @@ async function whatTheStepAsks(S, controls, img) {
  * driver has one): facts.shown[] gets how far they agree, and where they differ the browser's picture
  * is kept (`shown-<at>`), for the report to show what a student saw.
  */
-async function compareShown(S, at) {
-  if (!S.page.shown) return;
-  S.outOfTime();
-  const two = await S.page.shown();
-  const d = shownDifference(two, S.T);
-  if (d.compared && d.share > S.T.shownDifferShare) d.image = S.keep(`shown-${at}`, two.shown);
-  (S.facts.shown || (S.facts.shown = [])).push({ at, ...d });
+async function compareShown(session, at) {
+  if (!session.page.shown) return;
+  session.outOfTime();
+  const two = await session.page.shown();
+  const d = shownDifference(two, session.T);
+  if (d.compared && d.share > session.T.shownDifferShare) d.image = session.keep(`shown-${at}`, two.shown);
+  (session.facts.shown || (session.facts.shown = [])).push({ at, ...d });
 }
 
 /**

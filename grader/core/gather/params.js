@@ -3,22 +3,22 @@
 // and a free control found by its name. Shared by faces.js, highlight.js, sliders.js and visible.js.
 import { nameRole, parameterGroups } from '../controls.js';
 
-const role = (S, c) => nameRole(c, S.P);
+const role = (session, c) => nameRole(c, session.P);
 
 /** The first of `controls` not yet given a role whose name says `r` (and `pred` holds). */
-export const free = (S, controls, r, pred = () => true) => controls.find((x) => !S.taken.has(x.index) && pred(x) && role(S, x) === r);
+export const free = (session, controls, r, pred = () => true) => controls.find((x) => !session.taken.has(x.index) && pred(x) && role(session, x) === r);
 
 /** A slider's least and greatest values (a colour picker's: black and white). */
 export const least = (c) => (c.type === 'color' ? '#000000' : Number(c.min || 0));
 export const greatest = (c) => (c.type === 'color' ? '#ffffff' : Number(c.max === '' || c.max === undefined ? (c.type === 'range' ? 100 : 1) : c.max));
 
 /** The parameters the page's free sliders set (parameterGroups: ks r, g, b as one). */
-export const groupsOf = (S, controls) => parameterGroups(controls.filter((c) => !S.taken.has(c.index)), S.P);
+export const groupsOf = (session, controls) => parameterGroups(controls.filter((c) => !session.taken.has(c.index)), session.P);
 
 /** Sets every slider of a parameter group (`value(c)` each), on `events`; returns the values set. */
-export async function setGroup(S, g, value, events = ['input', 'change']) {
+export async function setGroup(session, g, value, events = ['input', 'change']) {
   const vs = g.controls.map(value);
-  for (let k = 0; k < vs.length; k++) await S.page.setValue(g.controls[k], vs[k], events);
+  for (let k = 0; k < vs.length; k++) await session.page.setValue(g.controls[k], vs[k], events);
   return vs;
 }
 

@@ -35,7 +35,7 @@ export const effectWords = {
  * A gathering session over `page` (the page interface) for `part`. `progress(text)` hears each
  * step; `deadline` (ms since the epoch) is the outer bound.
  */
-export function session(page, { part, rubric, progress = () => {}, deadline = Infinity }) {
+export function openSession(page, { part, rubric, progress = () => {}, deadline = Infinity }) {
   // every threshold and control pattern the gathering reads, with its value (reads.js)
   const gatheredWith = { [`parts.${part}.must`]: (rubric.parts[part] || {}).must };
   const T = recording(rubric.thresholds, gatheredWith);
@@ -44,7 +44,7 @@ export function session(page, { part, rubric, progress = () => {}, deadline = In
     actions: [], roles: {}, controls: [], trials: [], views: [], ladder: [], sliders: [],
     work: { frames: 0, draws: 0, vertices: 0 }, gatheredWith,
   };
-  const S = {
+  const session = {
     page, rubric, T, P: recording(rubric.controls, gatheredWith, 'controls.'), part, facts,
     must: new Set((rubric.parts[part] || {}).must || []),
     images: {}, // name → { width, height, data }
@@ -65,24 +65,24 @@ export function session(page, { part, rubric, progress = () => {}, deadline = In
     doing: 'waiting for the first frame',
 
     step(what) {
-      S.doing = what;
+      session.doing = what;
       progress(what);
     },
     outOfTime() {
-      if (Date.now() > deadline) throw new TooSlow(S.doing);
+      if (Date.now() > deadline) throw new TooSlow(session.doing);
     },
     /** A jump (the frame it fires draws a change made in a handler), then `frames` more at 60 Hz. */
     async tick(ms, frames = 0) {
-      S.outOfTime();
+      session.outOfTime();
       const s = await page.tick(ms, frames); // (the state the frames left)
       const w = facts.work;
-      S.frameWork = ((s.vertices - w.vertices) + T.drawCallWork * (s.draws - w.draws)) / (frames + 1);
-      const a = s.animation, ran = a ? a.count - S.animationFrames : 0;
-      if (ran > 0) S.frameDraws = { loops: a.loops, draws: Math.round((100 * (s.draws - w.draws)) / ran) / 100 };
-      if (a) S.animationFrames = a.count;
+      session.frameWork = ((s.vertices - w.vertices) + T.drawCallWork * (s.draws - w.draws)) / (frames + 1);
+      const a = s.animation, ran = a ? a.count - session.animationFrames : 0;
+      if (ran > 0) session.frameDraws = { loops: a.loops, draws: Math.round((100 * (s.draws - w.draws)) / ran) / 100 };
+      if (a) session.animationFrames = a.count;
       Object.assign(w, { frames: w.frames + frames + 1, draws: s.draws, vertices: s.vertices });
       const spent = w.vertices + T.drawCallWork * w.draws;
-      if (spent > T.gatherWork) throw new TooHeavy(S.doing, spent);
+      if (spent > T.gatherWork) throw new TooHeavy(session.doing, spent);
     },
     /** What the page awaits in real time (fetches, WebGPU requests), waited for within firstFrameSeconds; no frame runs meanwhile. */
     async settle() {
@@ -99,17 +99,17 @@ export function session(page, { part, rubric, progress = () => {}, deadline = In
     },
     /** Keeps a picture in the artifact under `name`; returns the name. */
     keep(name, img) {
-      S.images[name] = img;
+      session.images[name] = img;
       return name;
     },
     /** Sets a value control and remembers it as where the page now stands. */
     async set(c, value, events = ['input', 'change']) {
       await page.setValue(c, value, events);
-      S.values.set(c.index, value);
+      session.values.set(c.index, value);
     },
     /** A value control's value as we left it (else as the page had it). */
     now(c) {
-      return S.values.has(c.index) ? S.values.get(c.index) : c.value;
+      return session.values.has(c.index) ? session.values.get(c.index) : c.value;
     },
     act(text) {
       facts.actions.push(text);
@@ -120,62 +120,62 @@ export function session(page, { part, rubric, progress = () => {}, deadline = In
      * control, its description and listeners, what showed it; the audits put them in words.
      */
     assign(role, c, found, more = {}) {
-      if (S.R[role]) return;
-      S.R[role] = c;
-      S.taken.add(c.index);
+      if (session.R[role]) return;
+      session.R[role] = c;
+      session.taken.add(c.index);
       facts.roles[role] = { control: c.index, what: describe(c), listens: c.events || [], found, ...more };
     },
   };
-  return Object.assign(S, trials(S));
+  return Object.assign(session, trials(session));
 }
 
 /** The session's trials: a click, an action tried and what it did to the picture, the picture watched for motion. */
-function trials(S) {
-  const { page, T, facts } = S;
+function trials(session) {
+  const { page, T, facts } = session;
   return {
     async press(c, what) {
       const r = await page.click(c);
       if (!r.ok) {
-        S.act(`could not click ${what} ${describe(c)}: ${r.why}`);
+        session.act(`could not click ${what} ${describe(c)}: ${r.why}`);
         return false;
       }
-      S.act(`clicked ${what} ${describe(c)}`);
-      await S.tick(S.T.actionTickMs);
+      session.act(`clicked ${what} ${describe(c)}`);
+      await session.tick(session.T.actionTickMs);
       return true;
     },
     /** Tries one action from the state as it is and says what it did to the picture. */
     async trial(act, { watchMotion = true } = {}) {
-      const before = S.cur;
+      const before = session.cur;
       if (!await act()) return 'unclickable';
-      const after = await S.shot();
+      const after = await session.shot();
       if (!after) return 'none';
       let later = after;
-      if (watchMotion || S.moving) {
-        await S.tick(T.trialTickMs, T.trialFrames); // trialFrames + 1 frames: an orbit a small step a frame shows it moved
-        later = await S.shot();
+      if (watchMotion || session.moving) {
+        await session.tick(T.trialTickMs, T.trialFrames); // trialFrames + 1 frames: an orbit a small step a frame shows it moved
+        later = await session.shot();
       }
-      const effect = effectOf({ before, after, later, wasMoving: S.moving }, T);
-      S.cur = later;
-      if (effect === 'starts') S.moving = true;
-      if (effect === 'stops') S.moving = false;
+      const effect = effectOf({ before, after, later, wasMoving: session.moving }, T);
+      session.cur = later;
+      if (effect === 'starts') session.moving = true;
+      if (effect === 'stops') session.moving = false;
       return effect;
     },
     async tryClick(c, what, opts) {
-      const effect = await S.trial(() => S.press(c, what), opts);
+      const effect = await session.trial(() => session.press(c, what), opts);
       if (effect !== 'unclickable') {
-        S.effects.set(c.index, effect);
+        session.effects.set(c.index, effect);
         facts.trials.push({ control: c.index, effect });
-        S.act(`  → ${effectWords[effect]}`);
+        session.act(`  → ${effectWords[effect]}`);
       }
       return effect;
     },
     /** Does the picture move by itself over three frames? */
     async watch() {
-      await S.tick(T.watchTickMs, T.watchFrames);
-      const next = await S.shot();
-      S.moving = pictureChange(S.cur.img, next.img, T) > T.pictureMoves;
-      S.cur = next;
-      return S.moving;
+      await session.tick(T.watchTickMs, T.watchFrames);
+      const next = await session.shot();
+      session.moving = pictureChange(session.cur.img, next.img, T) > T.pictureMoves;
+      session.cur = next;
+      return session.moving;
     },
   };
 }

@@ -11,59 +11,59 @@ import { groupsOf, setGroup, least, free, groupFacts } from './params.js';
  * P4: each parameter's sliders (one slider, or the three of a colour or vector: parameterGroups)
  * set far from where they are, on input (else change), its picture kept; then back.
  */
-export async function trySliders(S, controls) {
-  const { T, facts } = S;
-  S.step('trying the sliders');
-  const base = S.images[facts.shadingImage || facts.judged];
-  const groups = groupsOf(S, controls);
+export async function trySliders(session, controls) {
+  const { T, facts } = session;
+  session.step('trying the sliders');
+  const base = session.images[facts.shadingImage || facts.judged];
+  const groups = groupsOf(session, controls);
   facts.slidersFound = groups.length;
-  const animated = facts.sentAnimated, sentBefore = S.moving && animated ? await readSent(S) : null;
+  const animated = facts.sentAnimated, sentBefore = session.moving && animated ? await readSent(session) : null;
   for (const g of groups.slice(0, T.maxSliderTrials)) {
     const k = g.role;
     const target = (c) => {
       if (c.type === 'color') return least(c);
       const lo = Number(c.min || 0), hi = Number(c.max === '' || c.max === undefined ? 100 : c.max);
-      return k === 's' ? (Number(S.now(c)) > (lo + hi) / 2 ? lo : hi) : (Number(S.now(c)) > lo ? lo : hi); // s: far from where it is; others: to the least
+      return k === 's' ? (Number(session.now(c)) > (lo + hi) / 2 ? lo : hi) : (Number(session.now(c)) > lo ? lo : hi); // s: far from where it is; others: to the least
     };
-    const vs = await setGroup(S, g, target, ['input']);
-    await S.tick(S.T.actionTickMs);
-    let after = await S.page.snap();
+    const vs = await setGroup(session, g, target, ['input']);
+    await session.tick(session.T.actionTickMs);
+    let after = await session.page.snap();
     // what the page sent differently (sentChanges) decides where the picture moves by itself
-    const sent = { input: sentChanges(sentBefore, await readSent(S), animated), change: null };
+    const sent = { input: sentChanges(sentBefore, await readSent(session), animated), change: null };
     // how much the picture changed on each event tried; the event it acted on is decided by the
     // one reading the audits use (computed/slider-event.js), on what was seen so far: the change
     // event is tried where the input event showed nothing
     const changed = { input: pictureChange(base, after, T), change: null };
-    const seen = () => ({ changed, ...(S.moving && sent.input ? { moving: true, sent } : {}) });
+    const seen = () => ({ changed, ...(session.moving && sent.input ? { moving: true, sent } : {}) });
     let how = sliderEvent(seen(), T);
     if (how !== 'input') {
-      await setGroup(S, g, target, ['change']);
-      await S.tick(S.T.actionTickMs);
-      after = await S.page.snap();
-      sent.change = sentChanges(sentBefore, await readSent(S), animated);
+      await setGroup(session, g, target, ['change']);
+      await session.tick(session.T.actionTickMs);
+      after = await session.page.snap();
+      sent.change = sentChanges(sentBefore, await readSent(session), animated);
       changed.change = pictureChange(base, after, T);
       how = sliderEvent(seen(), T);
     }
     const r = k && k !== 'levelSlider' ? k : null;
-    S.act(`set ${describeGroup(g)} to ${vs[0]} (${how === 'none' ? 'no visible change' : `the picture changed on the ${how} event`})`);
+    session.act(`set ${describeGroup(g)} to ${vs[0]} (${how === 'none' ? 'no visible change' : `the picture changed on the ${how} event`})`);
     if (how !== 'none' && k !== 'levelSlider') facts.roles[r || `slider ${Object.keys(facts.roles).length}`] = { control: g.controls[0].index, what: describeGroup(g), found: 'shading' };
-    facts.sliders.push({ ...groupFacts(g, vs), role: r, levelSlider: k === 'levelSlider', target: vs[0], how, ...seen(), image: S.keep(`slider-${facts.sliders.length}`, after) });
+    facts.sliders.push({ ...groupFacts(g, vs), role: r, levelSlider: k === 'levelSlider', target: vs[0], how, ...seen(), image: session.keep(`slider-${facts.sliders.length}`, after) });
     // back to where it was (drawn with the next slider's frame, or the last one below)
-    await setGroup(S, g, (c) => S.now(c));
+    await setGroup(session, g, (c) => session.now(c));
   }
-  await S.tick(S.T.actionTickMs);
+  await session.tick(session.T.actionTickMs);
 }
 
 /** s at its least (where that is 0 or below): one picture, in the judged view; then s back. */
-export async function leastShininess(S, controls) {
-  const c = free(S, controls, 's', (x) => x.type === 'range' || x.type === 'number');
+export async function leastShininess(session, controls) {
+  const c = free(session, controls, 's', (x) => x.type === 'range' || x.type === 'number');
   if (!c) return;
   const lo = c.min === '' || c.min === undefined || c.min === null ? 0 : Number(c.min); // a range's min defaults to 0
   if (!(lo <= 0)) return;
-  await S.page.setValue(c, lo, ['input', 'change']);
-  await S.tick(S.T.actionTickMs);
-  const after = await S.page.snap();
-  await S.page.setValue(c, S.now(c), ['input', 'change']);
-  await S.tick(S.T.actionTickMs);
-  if (after) S.facts.leastS = { value: lo, image: S.keep('least-s', after) };
+  await session.page.setValue(c, lo, ['input', 'change']);
+  await session.tick(session.T.actionTickMs);
+  const after = await session.page.snap();
+  await session.page.setValue(c, session.now(c), ['input', 'change']);
+  await session.tick(session.T.actionTickMs);
+  if (after) session.facts.leastS = { value: lo, image: session.keep('least-s', after) };
 }

@@ -10,8 +10,8 @@ import { luminance } from '../measure/samples.js';
 import { groupsOf, setGroup, least, greatest } from './params.js';
 
 /** The page's free parameter groups for `roles` that are sliders or numbers (not colour pickers), in the order of `roles`. */
-function numericGroups(S, controls, roles) {
-  const groups = groupsOf(S, controls);
+function numericGroups(session, controls, roles) {
+  const groups = groupsOf(session, controls);
   return roles.map((r) => groups.find((g) => g.role === r && g.controls.every((c) => c.type !== 'color'))).filter(Boolean);
 }
 
@@ -27,32 +27,32 @@ export function clippedShare(img, an, T) {
  * unclippedShare clips. facts.unclipped: { before, after, steps: [{ role, control, value }], image };
  * returns the picture to read the shading from, or null (nothing lowered).
  */
-export async function unclip(S, controls, img, an) {
-  const { T, facts } = S;
+export async function unclip(session, controls, img, an) {
+  const { T, facts } = session;
   const before = clippedShare(img, an, T);
   if (before < T.clippedShare) return null;
-  const groups = numericGroups(S, controls, ['kd', 'Le', 'La']);
+  const groups = numericGroups(session, controls, ['kd', 'Le', 'La']);
   if (!groups.length) return null;
-  S.step('lowering the page\'s own sliders: the picture clips to white');
+  session.step('lowering the page\'s own sliders: the picture clips to white');
   const steps = [];
   let share = before, shot = null;
   for (let k = 0; k < T.maxUnclipSteps && share > T.unclippedShare; k++) {
     const g = groups[k % groups.length];
-    const vs = await setGroup(S, g, (c) => {
-      const lo = least(c), v = Number(S.now(c));
+    const vs = await setGroup(session, g, (c) => {
+      const lo = least(c), v = Number(session.now(c));
       return Math.round(1000 * (lo + (v - lo) / 2)) / 1000;
     });
-    g.controls.forEach((c, i) => S.values.set(c.index, vs[i]));
-    await S.tick(S.T.actionTickMs);
-    const sh = await S.shot();
+    g.controls.forEach((c, i) => session.values.set(c.index, vs[i]));
+    await session.tick(session.T.actionTickMs);
+    const sh = await session.shot();
     if (!sh || sh.an.blank) break;
     shot = sh;
     share = clippedShare(sh.img, an, T);
     steps.push({ role: g.role, control: g.controls[0].index, value: vs[0] });
-    S.act(`set the ${g.role} slider to ${vs[0]} (the picture clipped to white over ${Math.round(100 * before)}% of the sphere; now ${Math.round(100 * share)}%)`);
+    session.act(`set the ${g.role} slider to ${vs[0]} (the picture clipped to white over ${Math.round(100 * before)}% of the sphere; now ${Math.round(100 * share)}%)`);
   }
   if (!shot) return null;
-  facts.unclipped = { before, after: share, steps, image: S.keep('unclipped', shot.img) };
+  facts.unclipped = { before, after: share, steps, image: session.keep('unclipped', shot.img) };
   facts.shadingImage = facts.unclipped.image;
   return shot.img;
 }
@@ -72,26 +72,26 @@ export function brightnessSpread(img, an, T) {
  * brightness to litSpread at least. facts.brightened: { before, after, steps: [{ role, control,
  * value }], image }; returns the picture to read the shading from, or null.
  */
-export async function brighten(S, controls, img, an) {
-  const { T, facts } = S;
+export async function brighten(session, controls, img, an) {
+  const { T, facts } = session;
   const before = brightnessSpread(img, an, T);
   if (before >= T.evenSpread) return null;
-  const [g] = numericGroups(S, controls, ['Le', 'kd']);
-  if (!g || g.controls.every((c) => Number(S.now(c)) >= greatest(c))) return null;
-  S.step('raising the page\'s own light: the picture is too dim to show its shading');
-  const vs = await setGroup(S, g, greatest);
-  await S.tick(S.T.actionTickMs);
-  const sh = await S.shot();
+  const [g] = numericGroups(session, controls, ['Le', 'kd']);
+  if (!g || g.controls.every((c) => Number(session.now(c)) >= greatest(c))) return null;
+  session.step('raising the page\'s own light: the picture is too dim to show its shading');
+  const vs = await setGroup(session, g, greatest);
+  await session.tick(session.T.actionTickMs);
+  const sh = await session.shot();
   const after = sh && !sh.an.blank ? brightnessSpread(sh.img, an, T) : 0;
   if (after < T.litSpread) {
     // raised as far as the page lets it and still too dim to read: set back, and read as it was seen
-    await setGroup(S, g, (c) => S.now(c));
-    await S.tick(S.T.actionTickMs);
+    await setGroup(session, g, (c) => session.now(c));
+    await session.tick(session.T.actionTickMs);
     return null;
   }
-  g.controls.forEach((c, i) => S.values.set(c.index, vs[i]));
-  S.act(`set the ${g.role} slider to ${vs[0]} (the sphere was too dim to show its shading: brightness spread ${before.toFixed(3)}; now ${after.toFixed(3)})`);
-  facts.brightened = { before, after, steps: [{ role: g.role, control: g.controls[0].index, value: vs[0] }], image: S.keep('brightened', sh.img) };
+  g.controls.forEach((c, i) => session.values.set(c.index, vs[i]));
+  session.act(`set the ${g.role} slider to ${vs[0]} (the sphere was too dim to show its shading: brightness spread ${before.toFixed(3)}; now ${after.toFixed(3)})`);
+  facts.brightened = { before, after, steps: [{ role: g.role, control: g.controls[0].index, value: vs[0] }], image: session.keep('brightened', sh.img) };
   facts.shadingImage = facts.brightened.image;
   return sh.img;
 }
