@@ -51,6 +51,13 @@ const CAPTIONS = { first: 'first frame', coarse: 'a coarse level', judged: 'judg
 
 const BADGES = { [NOT_CHECKED]: 'not checked here' };
 
+/** A reason's audit in words, for its id's tooltip: what it checks, titled as passed or as missed (its failureTitle). */
+function auditTooltip(f) {
+  const a = AUDITS[f.id];
+  if (!a) return '';
+  return `${f.level === 'fail' || f.level === 'review' ? a.failureTitle : a.title}: ${a.description}`;
+}
+
 function card(r, index, total, file) {
   const findings = findingsOfResult(r);
   const slides = r.verdict === 'pass' || r.verdict === NOT_CHECKED ? [] : missedSlides(findings);
@@ -63,7 +70,7 @@ function card(r, index, total, file) {
       el('small', { textContent: `${file || 'not found'}${r.api ? ` · ${r.api}` : ''}${r.seconds ? ` · ${r.seconds.toFixed(0)} s` : ''} · part ${index + 1} of ${total}` })),
     // each reason with its audit's id (the grader's README lists them, with the sentence each checks)
     el('ul', { className: 'reasons' }, ...findings.map((f) => el('li', { dataset: { audit: f.id || '' } }, `${f.reason} `,
-      f.id ? el('code', { className: 'audit', textContent: f.id, title: AUDITS[f.id] ? AUDITS[f.id].title : '' }) : null))),
+      f.id ? el('code', { className: 'audit', textContent: f.id, title: auditTooltip(f) }) : null))),
     ...slides.map((s) => el('p', { className: 'slide', dataset: { audit: s.id } }, el('b', { textContent: 'The slide asks: ' }), `${s.slide} `,
       s.note ? el('i', { textContent: `(${s.note}) ` }) : null, el('a', { href: stepLink(r.part), textContent: `See our ${r.part}` }))),
     images.length ? el('div', { className: 'pictures' }, ...images.map(([k, im]) => el('figure', {},

@@ -1,12 +1,14 @@
 #!/usr/bin/env node
 // The grader README's table of audit units, made from the list the grader runs
 // (grader/core/audits/list.js): one row a unit, in the order they run, with the ids it says, the
-// facts it reads and the units whose results it uses. The README holds it between two markers;
+// facts it reads and the units whose results it uses; then what each audit checks, with its title
+// and the title a part that misses it gets. The README holds it between two markers;
 // `npm test` holds the README to the list.
 import { readFileSync, writeFileSync } from 'node:fs';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { AUDIT_LIST } from '../grader/core/audits/list.js';
+import { AUDITS } from '../grader/core/audits/index.js';
 import { requiredFacts } from '../grader/core/audits/unit.js';
 import { isMainScript, parseOptions, runCommand } from './cli.js';
 
@@ -28,7 +30,12 @@ export function auditTable(units) {
     const says = Object.entries(u.meta).map(([id, m]) => `\`${id}\`: ${m.title}`).join('; ') || '(a reading others use)';
     return `| ${k + 1} | \`${u.id}\` | ${says} | ${code(requiredFacts(u))} | ${code(u.uses)} |`;
   });
-  return ['| # | unit | says (id: title) | reads (facts.) | uses |', '| - | - | - | - | - |', ...rows].join('\n');
+  // what each audit checks: every id the grader says (those said around the units, such as
+  // page-missing, too), with the title a part that misses it gets
+  const audits = new Map(Object.entries(AUDITS));
+  for (const u of units) for (const [id, m] of Object.entries(u.meta)) audits.set(id, m);
+  const words = [...audits].map(([id, m]) => `- \`${id}\`: **${m.title}**; missed: *${m.failureTitle}*. ${m.description}`);
+  return ['| # | unit | says (id: title) | reads (facts.) | uses |', '| - | - | - | - | - |', ...rows, '', 'What each audit checks:', '', ...words].join('\n');
 }
 
 /** `text` (the README) with its table made from `units`; throws where the markers are missing. */

@@ -24,6 +24,7 @@ import { CHROMIUM, CHROMIUM_ARGS, WEBGPU_ARGS } from '../../grader/node/chromium
 import { STEPS, maxDifference, renderThumbnails, thumbnailPath } from '../../tools/thumbnails.js';
 import { readPNG } from '../../tools/reference/png.js';
 import { checkFolder, gradeVerdicts, routeRubric } from './check-helpers.js';
+import { AUDITS } from '../../grader/core/audits/index.js';
 
 const ALL = !!process.env.CHECK_ALL;
 const SHARED = path.resolve('../shared/handins');
@@ -142,9 +143,13 @@ test('the check page gives the grader\'s verdicts: our own site passes in WebGPU
       if (name === 'cy') {
         // every reason shows its audit's id, and each slide a review quotes is named by the audit that asks it
         expect(check.parts.flatMap((p) => p.findings).every((f) => f.id), 'every finding has its audit id').toBe(true);
-        const tags = await page.locator('.card .reasons li').evaluateAll((lis) => lis.map((li) => [li.dataset.audit, li.querySelector('code.audit') && li.querySelector('code.audit').textContent]));
+        const tags = await page.locator('.card .reasons li').evaluateAll((lis) => lis.map((li) => [li.dataset.audit, li.querySelector('code.audit') && li.querySelector('code.audit').textContent,
+          li.querySelector('code.audit') && li.querySelector('code.audit').title, /^(REVIEW|FAIL): /.test(li.textContent)]));
         expect(tags.length).toBeGreaterThan(5);
         for (const [id, shown] of tags) expect(shown).toBe(id);
+        // its tooltip: the audit's title where it passed, the title a part that misses it gets where it asks, and what it checks
+        for (const [id, , tip, asks] of tags.filter(([id]) => AUDITS[id])) expect(tip).toBe(`${asks ? AUDITS[id].failureTitle : AUDITS[id].title}: ${AUDITS[id].description}`);
+        expect(tags.some(([, , , asks]) => asks)).toBe(true);
         expect(await page.locator('.card .slide[data-audit]').count()).toBeGreaterThan(0);
       }
       for (const p of check.parts) {

@@ -9,6 +9,7 @@ import path from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { auditPart } from '../../grader/core/audit.js';
 import { AUDIT_LIST, orderedUnits } from '../../grader/core/audits/list.js';
+import { AUDITS } from '../../grader/core/audits/index.js';
 import { unit } from '../../grader/core/audits/unit.js';
 import { strictly } from '../../grader/core/audits/strict.js';
 import { judgement } from '../../grader/core/part-result.js';
@@ -62,7 +63,7 @@ test('the list runs each unit after the units whose results it uses, and lists e
 });
 
 test('an audit added in a test, a META and a unit, runs, is said in grades.csv and is listed in the README\'s table', () => {
-  const META = { 'made-up': { title: 'A made-up audit', slide: null, reads: ['facts.canvas'] } };
+  const META = { 'made-up': { title: 'A made-up audit', failureTitle: 'A made-up miss', description: 'Reads the canvas\'s width.', slide: null, reads: ['facts.canvas'] } };
   const madeUp = unit(META, 'made-up', ({ facts, sayAs }) => sayAs('made-up')('review', `a made-up review of a ${facts.canvas.width}-pixel canvas`));
   const audits = [...AUDIT_LIST, madeUp];
   const artifact = readArtifact(path.join(RECORDED, 'ada', 'WP04P1'));
@@ -73,8 +74,18 @@ test('an audit added in a test, a META and a unit, runs, is said in grades.csv a
   assert.equal(row[head.indexOf('WP04P1')], 'review');
   assert.match(row[head.indexOf('WP04P1_audits')], /(^| )made-up( |$)/);
   assert.match(auditTable(audits), /\| `made-up` \| `made-up`: A made-up audit \| `canvas` \| — \|$/m);
+  assert.match(auditTable(audits), /^- `made-up`: \*\*A made-up audit\*\*; missed: \*A made-up miss\*\. Reads the canvas's width\.$/m);
   // without it, the README's table is the list's as it stands
   const readme = readFileSync(README, 'utf8');
   assert.equal(withTable(readme, AUDIT_LIST), readme, 'the README\'s table of audit units is out of date: run node tools/audit-table.js');
   assert.doesNotMatch(readme, /made-up/);
+});
+
+test('every audit has the title a part that misses it gets and what it checks, in words; a unit without them is refused', () => {
+  for (const a of Object.values(AUDITS)) {
+    assert.ok(a.failureTitle && a.description, `${a.id} has no failureTitle or description`);
+    assert.notEqual(a.failureTitle, a.title, a.id);
+    assert.match(a.description, /^[A-Z].*\.$/, `${a.id}: a sentence`);
+  }
+  assert.throws(() => unit({ x: { title: 'X', slide: null, reads: [] } }, 'x', () => null), /the audit x declares no failureTitle or description/);
 });

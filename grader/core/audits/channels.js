@@ -5,7 +5,7 @@ import { unit } from './unit.js';
 
 /** This module's audits: id → title, the slide's sentence it checks, the artifacts it reads. */
 export const META = {
-  'shown-channels': { title: 'What the page reads back is what the browser shows', slide: null, reads: ['facts.shown'] },
+  'shown-channels': { title: 'What the page reads back is what the browser shows', slide: null, failureTitle: 'What the page reads back is not what the browser shows', description: 'Compares the canvas read back with a screenshot of it as the browser shows it, at the first frame and at the end.', reads: ['facts.shown'] },
 };
 
 /**

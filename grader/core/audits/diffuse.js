@@ -7,10 +7,10 @@ import { unit } from './unit.js';
 
 /** This module's audits: id → title, the slide's sentence it checks, the artifacts it reads. */
 export const META = {
-  diffuse: { title: 'Brightness follows max(n·w_i, 0)·kd·Le + ambient', slide: SLIDE.diffuse, reads: ['images.judged', 'facts.shadingImage', 'facts.views'] },
-  'point-light': { title: 'A point light with the 1/r² fall-off', slide: SLIDE.pointLight, reads: ['images.judged'] },
-  unclipped: { title: 'A picture clipped to white, read with the sliders lowered', slide: SLIDE.diffuse, reads: ['facts.unclipped'] },
-  brightened: { title: 'A picture too dim, read with the light raised', slide: SLIDE.diffuse, reads: ['facts.brightened'] },
+  diffuse: { title: 'Brightness follows max(n·w_i, 0)·kd·Le + ambient', slide: SLIDE.diffuse, failureTitle: 'The brightness does not follow max(n·w_i, 0)·kd·Le + ambient', description: 'Fits the slide\'s diffuse term with a light direction to the judged picture and to the lit views along the orbit.', reads: ['images.judged', 'facts.shadingImage', 'facts.views'] },
+  'point-light': { title: 'A point light with the 1/r² fall-off', slide: SLIDE.pointLight, failureTitle: 'Not a point light with the 1/r² fall-off', description: 'Fits a near light with and without 1/r² where the step asks for a point light.', reads: ['images.judged'] },
+  unclipped: { title: 'A picture clipped to white, read with the sliders lowered', slide: SLIDE.diffuse, failureTitle: 'The picture clipped to white', description: 'Where the picture saturates, lowers the page\'s own sliders and reads the shading there; the note says so.', reads: ['facts.unclipped'] },
+  brightened: { title: 'A picture too dim, read with the light raised', slide: SLIDE.diffuse, failureTitle: 'The picture is too dim to read', description: 'Where the picture is too dark, raises the page\'s own light and reads the shading there; the note says so.', reads: ['facts.brightened'] },
 };
 
 /** The diffuse fit of the judged view (`shading`: evidence.shadingOf), with the lit views' sparse fits (`lit`). */

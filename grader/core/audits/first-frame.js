@@ -8,10 +8,10 @@ import { unit, end } from './unit.js';
 
 /** This module's audits: id → title, the slide's sentence it checks, the artifacts it reads. */
 export const META = {
-  'first-frame': { title: 'The page draws its first frame', slide: SLIDE.sphere, reads: ['facts.first', 'images.first', 'facts.errors'] },
-  'shaders-compile': { title: 'The shaders compile and link', slide: SLIDE.uniforms, note: 'the shaders must compile first: the error above gives the line', reads: ['facts.first'] },
-  'webgpu-adapter': { title: 'WebGPU starts', slide: SLIDE.sphere, note: 'this browser has no WebGPU adapter: try the WebGL view, or a browser with WebGPU', reads: ['facts.first'] },
-  'not-graded': { title: 'A part this browser cannot run (WebGPU here without it)', slide: null, reads: ['facts.first'] },
+  'first-frame': { title: 'The page draws its first frame', slide: SLIDE.sphere, failureTitle: 'The page draws no visible first frame', description: 'Waits for the page\'s first frame (frames run once nothing it awaits is pending) and reads the canvas back.', reads: ['facts.first', 'images.first', 'facts.errors'] },
+  'shaders-compile': { title: 'The shaders compile and link', slide: SLIDE.uniforms, note: 'the shaders must compile first: the error above gives the line', failureTitle: 'A shader does not compile or link', description: 'Reads every shader\'s compile and link status (WebGL) and compilation messages (WebGPU), with the line of the error.', reads: ['facts.first'] },
+  'webgpu-adapter': { title: 'WebGPU starts', slide: SLIDE.sphere, note: 'this browser has no WebGPU adapter: try the WebGL view, or a browser with WebGPU', failureTitle: 'WebGPU did not start', description: 'The page asked for a WebGPU adapter and got none.', reads: ['facts.first'] },
+  'not-graded': { title: 'A part this browser cannot run (WebGPU here without it)', slide: null, failureTitle: 'This browser cannot run the part', description: 'A part that uses WebGPU, in a browser that has none (Firefox ESR), is not graded there.', reads: ['facts.first'] },
 };
 
 /** auditFirstFrame's answer where it has said why nothing more is judged, and the part is not broken. */

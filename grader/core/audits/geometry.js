@@ -10,13 +10,13 @@ import { unit } from './unit.js';
 
 /** This module's audits: id → title, the slide's sentence it checks, the artifacts it reads. */
 export const META = {
-  winding: { title: 'The triangles wound so that the culling keeps the near side', slide: SLIDE.depthCulling, reads: ['facts.geometry', 'facts.geometryAtFirst', 'facts.faces', 'facts.api'] },
-  closed: { title: 'A closed mesh: every edge in two triangles', slide: SLIDE.sphere, reads: ['facts.geometry', 'facts.geometryAtFirst'] },
-  'per-face': { title: 'n = p at each vertex, not a colour per face', slide: SLIDE.normalColour, reads: ['facts.geometry', 'facts.geometryAtFirst'] },
-  growth: { title: 'The mesh not built again every frame', slide: SLIDE.recycle, reads: ['facts.geometryAtFirst'] },
-  'loops-multiply': { title: 'One animation loop, however often a control is used', slide: null, reads: ['facts.frameDraws'] },
-  'picture-not-geometry': { title: 'A sphere of triangles, not a picture', slide: SLIDE.sphere, reads: ['facts.geometry', 'images.judged', 'facts.geometryAtFirst'] },
-  'all-round': { title: 'Closed from every side seen along the orbit', slide: SLIDE.sphere, reads: ['facts.allRound'] },
+  winding: { title: 'The triangles wound so that the culling keeps the near side', slide: SLIDE.depthCulling, failureTitle: 'The triangles are wound so that culling removes the near side', description: 'Reads the winding of the triangles the page sent, against its frontFace and cullFace.', reads: ['facts.geometry', 'facts.geometryAtFirst', 'facts.faces', 'facts.api'] },
+  closed: { title: 'A closed mesh: every edge in two triangles', slide: SLIDE.sphere, failureTitle: 'The mesh is not closed', description: 'Counts the edges of the triangles the page sent: in a closed mesh each lies in two.', reads: ['facts.geometry', 'facts.geometryAtFirst'] },
+  'per-face': { title: 'n = p at each vertex, not a colour per face', slide: SLIDE.normalColour, failureTitle: 'A colour per face, not n = p at each vertex', description: 'Reads whether the page\'s colour or normal attribute is the same at the three corners of most triangles: n = p is per vertex, not per face.', reads: ['facts.geometry', 'facts.geometryAtFirst'] },
+  growth: { title: 'The mesh not built again every frame', slide: SLIDE.recycle, failureTitle: 'The mesh is built again every frame', description: 'Counts the vertices the page uploads and draws while nothing is touched: they must not grow.', reads: ['facts.geometryAtFirst'] },
+  'loops-multiply': { title: 'One animation loop, however often a control is used', slide: null, failureTitle: 'Each click starts another animation loop', description: 'Counts the animation loops and the draws a frame before and after the grader\'s clicks; a note, never a change of verdict.', reads: ['facts.frameDraws'] },
+  'picture-not-geometry': { title: 'A sphere of triangles, not a picture', slide: SLIDE.sphere, failureTitle: 'A picture, not a sphere of triangles', description: 'A round sphere on screen drawn from fewer than pictureTriangles triangles (counted from what the page sent) is a picture, not a subdivided tetrahedron.', reads: ['facts.geometry', 'images.judged', 'facts.geometryAtFirst'] },
+  'all-round': { title: 'Closed from every side seen along the orbit', slide: SLIDE.sphere, failureTitle: 'Not closed from every side along the orbit', description: 'Where the mesh cannot be read, looks at the outline at counted positions while the camera turns all the way round.', reads: ['facts.allRound'] },
 };
 
 /** The geometry judged: the judged level's, else the first level's (where the page went blank later). */

@@ -11,8 +11,8 @@ import { unit } from './unit.js';
 
 /** This module's audits: id → title, the slide's sentence it checks, the artifacts it reads. */
 export const META = {
-  highlight: { title: 'A specular highlight', slide: SLIDE.highlight, reads: ['images.judged', 'facts.views', 'facts.raised'] },
-  'highlight-place': { title: 'The highlight at w_h, halfway between the light and the viewer', slide: SLIDE.eye, reads: ['facts.views', 'facts.raised', 'facts.placeFarther'] },
+  highlight: { title: 'A specular highlight', slide: SLIDE.highlight, failureTitle: 'No specular highlight', description: 'Looks for a rise above the diffuse model, with ks and s raised by the page\'s own sliders where needed.', reads: ['images.judged', 'facts.views', 'facts.raised'] },
+  'highlight-place': { title: 'The highlight at w_h, halfway between the light and the viewer', slide: SLIDE.eye, failureTitle: 'The highlight is not at w_h', description: 'Measures the highlight\'s place against where n = w_h, halfway between the light and the viewer, in the judged view and farther along the orbit.', reads: ['facts.views', 'facts.raised', 'facts.placeFarther'] },
 };
 
 /**

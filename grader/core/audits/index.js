@@ -1,4 +1,5 @@
-// Every audit by its id (Lighthouse's audit meta): its title, the slide's sentence it checks (null
+// Every audit by its id (Lighthouse's audit meta): its title, the title a part that misses it gets
+// (failureTitle), what it checks (description), the slide's sentence it checks (null
 // where a miss names none: the page, not the step), a note shown beside that sentence, and the
 // artifacts it reads. A reason carries its audit's id (verdict.js), and the check page, the
 // feedback pages, grades.csv and the grader's README find a reason's slide and its column by that
@@ -18,7 +19,7 @@ import { META as surface } from './surface.js';
 
 const modules = { page, firstFrame, channels, sphere, geometry, normals, diffuse, orbit, highlight, sliders, shading, surface };
 
-/** id → { id, title, slide, note?, reads, module }. */
+/** id → { id, title, failureTitle, description, slide, note?, reads, module }. */
 export const AUDITS = {};
 for (const [module, meta] of Object.entries(modules)) {
   for (const [id, m] of Object.entries(meta)) {

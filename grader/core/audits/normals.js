@@ -10,11 +10,11 @@ import { unit } from './unit.js';
 
 /** This module's audits: id → title, the slide's sentence it checks, the artifacts it reads. */
 export const META = {
-  'normal-colours': { title: 'Colours that are the normals, 0.5·n + 0.5', slide: SLIDE.normalColour, reads: ['images.judged', 'facts.facesImage', 'facts.api'] },
-  'front-faces': { title: 'The normals facing the viewer: front faces only', slide: SLIDE.depthCulling, reads: ['images.judged', 'facts.noCull', 'facts.faces'] },
-  perspective: { title: 'In perspective view (how far the normals reach at the rim)', slide: SLIDE.sphere, note: 'an orthographic view shows the normals out to 90° at the rim', reads: ['images.judged'] },
-  'normals-not-light': { title: 'A lit step that shows the normal colouring, not lighting', slide: SLIDE.gouraud, reads: ['images.judged'] },
-  'depth-culling': { title: 'The depth test and back-face culling enabled', slide: SLIDE.depthCulling, reads: ['facts.faces', 'facts.api'] },
+  'normal-colours': { title: 'Colours that are the normals, 0.5·n + 0.5', slide: SLIDE.normalColour, failureTitle: 'The colours are not the normals, 0.5·n + 0.5', description: 'Reads the colours inside the outline as normals (colour = 0.5·n + 0.5) and fits them to a sphere\'s.', reads: ['images.judged', 'facts.facesImage', 'facts.api'] },
+  'front-faces': { title: 'The normals facing the viewer: front faces only', slide: SLIDE.depthCulling, failureTitle: 'The normals shown do not face the viewer', description: 'Checks that the colours show normals facing the viewer, and draws once with culling off to see what culling hides.', reads: ['images.judged', 'facts.noCull', 'facts.faces'] },
+  perspective: { title: 'In perspective view (how far the normals reach at the rim)', slide: SLIDE.sphere, note: 'an orthographic view shows the normals out to 90° at the rim', failureTitle: 'Not in perspective view', description: 'Measures how far the normals the colours show reach at the rim: 90° in an orthographic view, less in perspective.', reads: ['images.judged'] },
+  'normals-not-light': { title: 'A lit step shows lighting, not the normal colouring of WP04P1', slide: SLIDE.gouraud, failureTitle: 'A lit step that shows the normal colouring, not lighting', description: 'Tells WP04P1\'s colours (0.5·n + 0.5) from shading in a step that should be lit.', reads: ['images.judged'] },
+  'depth-culling': { title: 'The depth test and back-face culling enabled', slide: SLIDE.depthCulling, failureTitle: 'The depth test or back-face culling is not enabled', description: 'Reads whether the page enables the depth test and back-face culling (WebGL calls; WebGPU\'s depthStencil and cullMode).', reads: ['facts.faces', 'facts.api'] },
 };
 
 /**

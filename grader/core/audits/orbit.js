@@ -9,9 +9,9 @@ import { unit } from './unit.js';
 
 /** This module's audits: id → title, the slide's sentence it checks, the artifacts it reads. */
 export const META = {
-  'orbit-stops': { title: 'The orbit stops, and stops again', slide: SLIDE.orbit, reads: ['facts.stopped', 'facts.orbitKeptMoving'] },
-  'orbit-light': { title: 'The lit side turns as the camera orbits', slide: SLIDE.orbit, reads: ['facts.views'] },
-  'orbit-toggle': { title: 'A button toggles the orbit', slide: SLIDE.orbit, reads: ['facts.orbit', 'facts.controls', 'facts.roles', 'facts.level'] },
+  'orbit-stops': { title: 'The orbit stops, and stops again', slide: SLIDE.orbit, failureTitle: 'The orbit does not stop', description: 'Looks for the control that stops the orbit, and checks that it stops again after being restarted.', reads: ['facts.stopped', 'facts.orbitKeptMoving'] },
+  'orbit-light': { title: 'The lit side turns as the camera orbits', slide: SLIDE.orbit, failureTitle: 'The lit side does not turn as the camera orbits', description: 'Compares the light fitted in the lit views with how far the camera turned (its view matrix, as the page sent it).', reads: ['facts.views'] },
+  'orbit-toggle': { title: 'A button toggles the orbit', slide: SLIDE.orbit, failureTitle: 'No button toggles the orbit', description: 'Finds the control that starts and stops the orbit by what it does to the picture.', reads: ['facts.orbit', 'facts.controls', 'facts.roles', 'facts.level'] },
 };
 
 const signedAngle = (a, b) => (180 / Math.PI) * Math.acos(Math.max(-1, Math.min(1, (a[0] * b[0] + a[1] * b[1] + a[2] * b[2]) / (Math.hypot(...a) * Math.hypot(...b)))));

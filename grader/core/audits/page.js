@@ -8,18 +8,18 @@ import { unit, end } from './unit.js';
 
 /** These reasons' ids: id → title, the slide's sentence a miss quotes (or null), what it reads. */
 export const META = {
-  'page-missing': { title: 'A page for the part in the hand-in', slide: null, reads: ['the hand-in'] },
-  'page-opens': { title: 'The page opens', slide: SLIDE.sphere, reads: ['the page'] },
-  'page-finishes': { title: 'The page finishes within the rubric\'s bound', slide: SLIDE.sphere, reads: ['the page'] },
-  'linked-page': { title: 'A page of its own, not a link to another part\'s', slide: SLIDE.sphere, reads: ['the hand-in'] },
-  'not-unpacked': { title: 'The hand-in could be unpacked', slide: null, reads: ['the download'] },
-  'not-graded-in-run': { title: 'A part this run did not grade', slide: null, reads: [] },
-  'grader-trouble': { title: 'The grader finished on this page', slide: null, reads: ['the page'] },
-  'page-errors': { title: 'Errors the page reported (no verdict changes)', slide: null, reads: ['facts.errors'] },
-  tamper: { title: 'The page left what the grader reads through alone', slide: null, reads: ['facts.tampered'] },
-  'too-slow': { title: 'Gathered within the rubric\'s bounds', slide: null, reads: ['facts.tooSlow', 'facts.tooHeavy'] },
-  'level-ladder': { title: 'The level ladder climbed and judged at the last level that drew', slide: SLIDE.buttons, reads: ['facts.ladder', 'facts.blankAtHigherLevel'] },
-  'not-checked': { title: 'A part the check page cannot check in this browser', slide: null, reads: [] },
+  'page-missing': { title: 'A page for the part in the hand-in', slide: null, failureTitle: 'No page for the part in the hand-in', description: 'Looks for the part\'s page by folder and file name (WP04P1, Part1, p01, …), by section number and step title, and by the page\'s own title.', reads: ['the hand-in'] },
+  'page-opens': { title: 'The page opens', slide: SLIDE.sphere, failureTitle: 'The page could not be opened', description: 'Opens the part\'s page in the browser, served from the hand-in\'s own folder with nothing else reachable.', reads: ['the page'] },
+  'page-finishes': { title: 'The page finishes within the rubric\'s bound', slide: SLIDE.sphere, failureTitle: 'The page did not finish within the rubric\'s bound', description: 'Gives the page the rubric\'s timeoutSeconds on the wall clock; a page that never returns from a frame fails here.', reads: ['the page'] },
+  'linked-page': { title: 'A page of its own, not a link to another part\'s', slide: SLIDE.sphere, failureTitle: 'The page only links to another part\'s page', description: 'A page with no canvas and no script of its own that links to another part\'s page is graded as that part, once.', reads: ['the hand-in'] },
+  'not-unpacked': { title: 'The hand-in could be unpacked', slide: null, failureTitle: 'The hand-in could not be unpacked', description: 'Unpacks the course site\'s download within the rubric\'s bounds (files, bytes, depth), zips inside it too.', reads: ['the download'] },
+  'not-graded-in-run': { title: 'A part this run did not grade', slide: null, failureTitle: 'Not graded in this run', description: 'A part left out of this run (another shard, or the run stopped before it) is said so, never failed.', reads: [] },
+  'grader-trouble': { title: 'The grader finished on this page', slide: null, failureTitle: 'The grader could not finish on this page', description: 'Where the grader itself fails on a page, the part is a review for a teacher, never a pass.', reads: ['the page'] },
+  'page-errors': { title: 'Errors the page reported (no verdict changes)', slide: null, failureTitle: 'The page reported errors', description: 'The page\'s own errors and alerts, listed for the student; they change no verdict.', reads: ['facts.errors'] },
+  tamper: { title: 'The page left what the grader reads through alone', slide: null, failureTitle: 'The page replaced what the grader reads through', description: 'Checks that the browser\'s functions and the grader\'s hooks it reads through are still the ones installed before the page ran.', reads: ['facts.tampered'] },
+  'too-slow': { title: 'Gathered within the rubric\'s bounds', slide: null, failureTitle: 'Too slow to judge here', description: 'Gathers within counted budgets and the rubric\'s time and work bounds; a part past them is not graded here (or the rubric\'s tooSlowVerdict), never failed for being slow.', reads: ['facts.tooSlow', 'facts.tooHeavy'] },
+  'level-ladder': { title: 'The level ladder climbed and judged at the last level that drew', slide: SLIDE.buttons, failureTitle: 'The level ladder was not climbed to the end', description: 'Subdivides until the silhouette settles, and judges the last level that drew.', reads: ['facts.ladder', 'facts.blankAtHigherLevel'] },
+  'not-checked': { title: 'A part the check page cannot check in this browser', slide: null, failureTitle: 'The check page cannot check this part in this browser', description: 'A WebGPU part in a browser without WebGPU is not checked on the check page.', reads: [] },
 };
 
 /** A reason `id` said at `level`, as findingsOf gives one ({ id, level, reason }). */

@@ -8,8 +8,8 @@ import { unit } from './unit.js';
 
 /** This module's audits: id → title, the slide's sentence it checks, the artifacts it reads. */
 export const META = {
-  'least-s': { title: 's at its least: pow(0, 0) guarded', slide: SLIDE.guardPow, reads: ['facts.leastS', 'images.judged'] },
-  'per-fragment': { title: 'The Phong model per fragment, its vectors normalised there', slide: SLIDE.phongShading, reads: ['facts.ladder', 'facts.sources', 'images.judged', 'facts.judgedLevel', 'facts.level', 'facts.stopped', 'facts.viewMoved'] },
+  'least-s': { title: 's at its least: pow(0, 0) guarded', slide: SLIDE.guardPow, failureTitle: 's at its least shows pow(0, 0)', description: 'Sets s to its least and looks for the black spots pow(0, 0) leaves on many GPUs; a note (the slides do not ask for s = 0).', reads: ['facts.leastS', 'images.judged'] },
+  'per-fragment': { title: 'The Phong model per fragment, its vectors normalised there', slide: SLIDE.phongShading, failureTitle: 'Not the Phong model per fragment', description: 'Compares a coarse level\'s shading with a fine one\'s, and reads the fragment shader for the vectors normalised there.', reads: ['facts.ladder', 'facts.sources', 'images.judged', 'facts.judgedLevel', 'facts.level', 'facts.stopped', 'facts.viewMoved'] },
 };
 
 /** The picture at the least s against the judged one (`judged`: { img, an }; the same view). */

@@ -9,9 +9,9 @@ import { unit, end } from './unit.js';
 
 /** This module's audits: id → title, the slide's sentence it checks, the artifacts it reads. */
 export const META = {
-  'level-controls': { title: 'Controls that subdivide and coarsen the sphere', slide: SLIDE.buttons, reads: ['facts.level', 'facts.roles'] },
-  'heavy-level': { title: 'The level climb ended by a heavy frame', slide: SLIDE.buttons, reads: ['facts.heavyLevel', 'facts.ladder'] },
-  sphere: { title: 'A round closed sphere, rounder with each level', slide: SLIDE.sphere, reads: ['images.judged', 'images.first', 'facts.ladder'] },
+  'level-controls': { title: 'Controls that subdivide and coarsen the sphere', slide: SLIDE.buttons, failureTitle: 'No controls that subdivide and coarsen the sphere', description: 'Finds the controls by what they do to the outline (rounder, coarser), whatever they are named: buttons, keys, sliders, menus.', reads: ['facts.level', 'facts.roles'] },
+  'heavy-level': { title: 'The level climb ended by a heavy frame', slide: SLIDE.buttons, failureTitle: 'The level climb ended at a heavy frame', description: 'Stops subdividing where a frame\'s work passes heavyLevelWork once the sphere is round enough.', reads: ['facts.heavyLevel', 'facts.ladder'] },
+  sphere: { title: 'A round closed sphere, rounder with each level', slide: SLIDE.sphere, failureTitle: 'Not a round closed sphere', description: 'Fits a circle to the outline at the judged level and measures its roundness and fill, level by level.', reads: ['images.judged', 'images.first', 'facts.ladder'] },
 };
 
 /** The slide's Subdivide and Coarsen buttons, as found by their effect. */

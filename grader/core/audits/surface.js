@@ -8,7 +8,7 @@ import { unit } from './unit.js';
 
 /** This module's audits: id → title, the slide's sentence it checks, the artifacts it reads. */
 export const META = {
-  'surface-fit': { title: 'The lighting on the page\'s own surface', slide: SLIDE.eye, reads: ['facts.surface', 'images.judged'] },
+  'surface-fit': { title: 'The lighting on the page\'s own surface', slide: SLIDE.eye, failureTitle: 'A known misreading explains the lighting on the page\'s own surface', description: 'Fits the slide\'s model and its known misreadings on each pixel\'s normal and position as the page drew them; a note where a misreading explains the picture better by the rubric\'s margin.', reads: ['facts.surface', 'images.judged'] },
 };
 
 const fmt = (x) => x.toFixed(3);

@@ -8,7 +8,8 @@
 // picture went blank) returns end(fail, failId).
 
 /**
- * A unit from its module's META (id → { title, slide, note?, reads }): it says `id` and the ids in
+ * A unit from its module's META (id → { title, failureTitle (its heading where a part misses it),
+ * description (what it checks, in a sentence), slide, note?, reads }): it says `id` and the ids in
  * `also`; it reads the results of `uses`; `reads` names the facts it reads besides its ids' own
  * (a unit that says nothing, a reading other units use, names them there).
  */
@@ -16,6 +17,7 @@ export function unit(META, id, run, { also = [], uses = [], reads = [], says = [
   const meta = {};
   for (const s of says) {
     if (!META[s]) throw new Error(`the unit ${id} says ${s}, which its module's META does not declare`);
+    if (!META[s].failureTitle || !META[s].description) throw new Error(`the audit ${s} declares no failureTitle or description (the words a part that misses it gets, and what it checks)`);
     meta[s] = META[s];
   }
   return { id, meta, uses, reads, run };
