@@ -19,7 +19,7 @@ import { AUDIT_LIST } from './audits/list.js';
 export function auditPart({ facts, images }, rubric, { audits = AUDIT_LIST } = {}) {
   const list = checkList(rubric);
   const { checks } = list;
-  const T = rubric.thresholds;
+  const thresholds = rubric.thresholds;
   const part = facts.part;
   const must = new Set((rubric.parts[part] || {}).must || []);
   const numbers = {};
@@ -29,7 +29,7 @@ export function auditPart({ facts, images }, rubric, { audits = AUDIT_LIST } = {
   const declared = new Map(audits.flatMap((u) => Object.entries(u.meta)));
   // an audit says its findings under an id it declares (audits/index.js, or a unit of the list)
   const sayAs = (id) => list.sayAs(declared.has(id) ? id : auditMeta(id).id);
-  const context = { facts, images, T, rubric, part, must, litStep, sayAs, numbers, imagesShown: shown, notGraded: null };
+  const context = { facts, images, thresholds, rubric, part, must, litStep, sayAs, numbers, imagesShown: shown, notGraded: null };
   const results = {};
   let ended = { fail: null, failId: null };
   for (const u of audits) {

@@ -50,24 +50,24 @@ export function nameRole(c, patterns) {
  * 'shading' (the picture changes inside an unchanged silhouette: material, light or the faces
  * drawn), 'blank' (nothing drawn after it), 'none'.
  */
-export function effectOf({ before, after, later, wasMoving }, T) {
-  const moving = pictureChange(after.img, later.img, T) > T.pictureMoves;
+export function effectOf({ before, after, later, wasMoving }, thresholds) {
+  const moving = pictureChange(after.img, later.img, thresholds) > thresholds.pictureMoves;
   if (!wasMoving && moving) return 'starts';
   if (wasMoving && !moving) return 'stops';
   if (wasMoving) return 'none'; // whatever else it did cannot be told while the picture moves
   if (after.an.blank && !before.an.blank) return 'blank';
   if (before.an.blank || after.an.blank) return 'none';
   const sil = silhouetteChange(before.an, after.an);
-  if (sil > T.silhouetteSettled) {
+  if (sil > thresholds.silhouetteSettled) {
     // a finer mesh inscribed in the sphere covers more of its disc, and its outline is rounder
     const rounder = before.an.roundness - after.an.roundness, larger = (after.an.area - before.an.area) / before.an.area;
-    if (Math.abs(larger) > T.levelAreaChange) return larger > 0 ? 'finer' : 'coarser';
+    if (Math.abs(larger) > thresholds.levelAreaChange) return larger > 0 ? 'finer' : 'coarser';
     return rounder > 0 ? 'finer' : 'coarser';
   }
   // at a high level: a few outline pixels flip, all of them at the outline, and the area moves with them
-  const f = outlineFlips(before.an, after.an, T);
-  if (f && f.flips >= T.outlineFlips && f.atOutline >= T.outlineFlipsAtEdge * f.flips && Math.abs(f.area) >= Math.max(T.outlineAreaLeast, T.outlineAreaPerFlip * f.flips)) return f.area > 0 ? 'finer' : 'coarser';
-  return pictureChange(before.img, after.img, T) > T.pictureChanged ? 'shading' : 'none';
+  const f = outlineFlips(before.an, after.an, thresholds);
+  if (f && f.flips >= thresholds.outlineFlips && f.atOutline >= thresholds.outlineFlipsAtEdge * f.flips && Math.abs(f.area) >= Math.max(thresholds.outlineAreaLeast, thresholds.outlineAreaPerFlip * f.flips)) return f.area > 0 ? 'finer' : 'coarser';
+  return pictureChange(before.img, after.img, thresholds) > thresholds.pictureChanged ? 'shading' : 'none';
 }
 
 /**

@@ -10,7 +10,7 @@ import { clippedShare } from '../../grader/core/gather/visible.js';
 import { spherePicture } from './sphere-picture.js';
 
 const rubric = JSON.parse(readFileSync(new URL('../../grader/core/rubric.json', import.meta.url), 'utf8'));
-const T = rubric.thresholds;
+const thresholds = rubric.thresholds;
 const P = rubric.controls;
 
 const slider = (index, id, text = '') => ({ index, type: 'range', id, name: '', text, min: '0', max: '1', value: '0.5' });
@@ -65,7 +65,7 @@ const phong = (n, { kd = 0.9, ks = 0.7, s = 25, La = 0.15 } = {}) => {
   return { lit: kd * Math.max(d, 0) + kd * La, spec: ks * Math.pow(Math.max(wr[2], 0), s) };
 };
 const turn = (n) => [Math.cos(1) * n[0] + Math.sin(1) * n[2], n[1], -Math.sin(1) * n[0] + Math.cos(1) * n[2]]; // the world's normal, the camera orbited 1 rad
-const pts = (img) => samples(img, analyse(img, T), T);
+const pts = (img) => samples(img, analyse(img, thresholds), thresholds);
 
 test('the hue turns with the normal where the P1 colour is the material or mixed in; not where only the lighting changes it', () => {
   const tintedTimes = sphere((n) => { const p = phong(n); return turn(n).map((v) => (0.5 * v + 0.5) * p.lit + p.spec); });
@@ -73,13 +73,13 @@ test('the hue turns with the normal where the P1 colour is the material or mixed
   const plain = sphere((n) => { const p = phong(n); return [0.8, 0.3, 0.2].map((c) => c * p.lit + p.spec); });
   // magenta ambient, yellow diffuse: the hue follows n·w_i, one direction only
   const twoColours = sphere((n) => { const d = Math.max(dot(n, wi), 0); return [0.3 + 0.6 * d, 0.1 + 0.8 * d, 0.3]; });
-  assert.ok(tintedByNormal(hueByNormal(pts(tintedTimes), T), T));
-  assert.ok(tintedByNormal(hueByNormal(pts(tintedMix), T), T));
-  assert.ok(!tintedByNormal(hueByNormal(pts(plain), T), T));
-  const h = hueByNormal(pts(twoColours), T);
-  assert.ok(h.spread > 0.04 && !tintedByNormal(h, T), JSON.stringify(h));
+  assert.ok(tintedByNormal(hueByNormal(pts(tintedTimes), thresholds), thresholds));
+  assert.ok(tintedByNormal(hueByNormal(pts(tintedMix), thresholds), thresholds));
+  assert.ok(!tintedByNormal(hueByNormal(pts(plain), thresholds), thresholds));
+  const h = hueByNormal(pts(twoColours), thresholds);
+  assert.ok(h.spread > 0.04 && !tintedByNormal(h, thresholds), JSON.stringify(h));
   // the plain picture's fit is diffuseFit's, untouched
-  assert.deepEqual(shadeFit(pts(plain), T), diffuseFit(pts(plain), T));
+  assert.deepEqual(shadeFit(pts(plain), thresholds), diffuseFit(pts(plain), thresholds));
 });
 
 test('a picture tinted by the normal is fitted with the tint divided out where the brightness alone does not fit', () => {
@@ -91,20 +91,20 @@ test('a picture tinted by the normal is fitted with the tint divided out where t
     const lit = 0.9 * Math.max(d, 0) + 0.18, spec = 0.7 * Math.pow(Math.max(wr[2], 0), 25);
     return orbit4(n).map((v) => (0.5 * v + 0.5) * lit + spec);
   });
-  const plain = diffuseFit(pts(img), T), fit = shadeFit(pts(img), T);
-  assert.ok(plain.r2 < T.diffuseR2, `the brightness alone: R² ${plain.r2}`);
-  assert.ok(fit.tint && fit.r2 >= T.diffuseR2, `with the tint divided out: R² ${fit.r2}`);
+  const plain = diffuseFit(pts(img), thresholds), fit = shadeFit(pts(img), thresholds);
+  assert.ok(plain.r2 < thresholds.diffuseR2, `the brightness alone: R² ${plain.r2}`);
+  assert.ok(fit.tint && fit.r2 >= thresholds.diffuseR2, `with the tint divided out: R² ${fit.r2}`);
   assert.ok((180 / Math.PI) * Math.acos(dot(fit.light, below)) < 15, `the light ${fit.light}`);
   // the P1 albedo's brightness varies by ±58% over the sphere: the fitted light cannot place a highlight
-  assert.ok(fit.tint.slope >= T.tintSlope && !fit.tint.sure, JSON.stringify(fit.tint, (k, v) => (k === 'plain' ? undefined : v)));
+  assert.ok(fit.tint.slope >= thresholds.tintSlope && !fit.tint.sure, JSON.stringify(fit.tint, (k, v) => (k === 'plain' ? undefined : v)));
 });
 
 test('clippedShare: the share of the sphere washed out to white', () => {
   const washed = sphere((n) => { const d = Math.max(dot(n, wi), 0); return [1, 0.96, 0.9].map((c) => c * 1.44 * (0.5 + 1.5 * d)); });
   const fine = sphere((n) => { const d = Math.max(dot(n, wi), 0); return [1, 0.96, 0.9].map((c) => c * 0.72 * (0.5 + 0.75 * d)); });
-  const a = analyse(washed, T), b = analyse(fine, T);
-  assert.ok(clippedShare(washed, a, T) >= T.clippedShare, String(clippedShare(washed, a, T)));
-  assert.ok(clippedShare(fine, b, T) <= T.unclippedShare, String(clippedShare(fine, b, T)));
+  const a = analyse(washed, thresholds), b = analyse(fine, thresholds);
+  assert.ok(clippedShare(washed, a, thresholds) >= thresholds.clippedShare, String(clippedShare(washed, a, thresholds)));
+  assert.ok(clippedShare(fine, b, thresholds) <= thresholds.unclippedShare, String(clippedShare(fine, b, thresholds)));
 });
 
 test('a highlight at the light is a review on a plain material, and a note where the tint makes the fitted light unsure', async () => {
@@ -118,8 +118,8 @@ test('a highlight at the light is a review on a plain material, and a note where
   };
   const judge = (img) => {
     const checks = [];
-    const an = analyse(img, T);
-    auditHighlight({ facts: {}, images: {}, T, must: new Set(['highlight']), numbers: {}, sayAs: () => (level, reason) => checks.push({ level, reason }) }, shadingOf(img, an, T), []);
+    const an = analyse(img, thresholds);
+    auditHighlight({ facts: {}, images: {}, thresholds, must: new Set(['highlight']), numbers: {}, sayAs: () => (level, reason) => checks.push({ level, reason }) }, shadingOf(img, an, thresholds), []);
     return checks;
   };
   const plain = judge(sphere((n) => atLight(n, [0.8, 0.5, 0.3])));
@@ -174,13 +174,13 @@ test('a picture washed out to white: the page\'s own kd, Le, La are halved in tu
   const { page, values } = fakePage(controls, draw);
   const S = openSession(page, { part: 'WP04P5', rubric });
   const img = await page.snap();
-  const shown = await unclip(S, controls, img, analyse(img, T));
+  const shown = await unclip(S, controls, img, analyse(img, thresholds));
   assert.ok(shown, 'a picture to read the shading from');
   assert.deepEqual(S.facts.unclipped.steps.map((s) => [s.role, s.value]), [['kd', 0.8], ['Le', 0.75]]);
-  assert.ok(S.facts.unclipped.before >= T.clippedShare && S.facts.unclipped.after <= T.unclippedShare);
+  assert.ok(S.facts.unclipped.before >= thresholds.clippedShare && S.facts.unclipped.after <= thresholds.unclippedShare);
   assert.equal(values.get(0), '0.8');
   assert.equal(S.now(controls[1]), 0.75);
   // a picture that is not washed out is left alone
   const S2 = openSession(fakePage(controls, draw).page, { part: 'WP04P5', rubric });
-  assert.equal(await unclip(S2, controls, shown, analyse(shown, T)), null);
+  assert.equal(await unclip(S2, controls, shown, analyse(shown, thresholds)), null);
 });

@@ -9,7 +9,7 @@ import { auditOrbit } from '../../grader/core/audits/orbit.js';
 import { checkList } from '../../grader/core/verdict.js';
 
 const rubric = JSON.parse(readFileSync(new URL('../../grader/core/rubric.json', import.meta.url), 'utf8'));
-const T = rubric.thresholds;
+const thresholds = rubric.thresholds;
 const DEG = Math.PI / 180;
 const view = (alpha, scale = 1) => {
   const m = mat4.lookAt(mat4.create(), [3 * Math.sin(alpha * DEG), 0.5, 3 * Math.cos(alpha * DEG)], [0, 0, 0], [0, 1, 0]);
@@ -21,12 +21,12 @@ test('the view matrix: read from the animated uniforms, its turn between views',
   const animated = ['uniform V'];
   const cams = [0, 10, 35].map((a) => cameraOf(sent(view(a, 2)), animated));
   assert.deepEqual(Object.keys(cams[0]), ['uniform V']);
-  assert.ok(Math.abs(cameraTurn(cams, T.cameraRotationTolerance) - 35) < 1e-3);
+  assert.ok(Math.abs(cameraTurn(cams, thresholds.cameraRotationTolerance) - 35) < 1e-3);
   assert.equal(cameraOf(sent(view(0)), []), null);
-  assert.equal(cameraTurn([cams[0]], T.cameraRotationTolerance), null, 'one view: no turn');
+  assert.equal(cameraTurn([cams[0]], thresholds.cameraRotationTolerance), null, 'one view: no turn');
   // P·V sent as one matrix is no rotation: not read
   const pv = (a) => mat4.multiply(mat4.create(), mat4.perspective(mat4.create(), 45 * DEG, 1, 0.1, 10), view(a));
-  assert.equal(cameraTurn([0, 30].map((a) => cameraOf(sent(pv(a)), animated)), T.cameraRotationTolerance), null);
+  assert.equal(cameraTurn([0, 30].map((a) => cameraOf(sent(pv(a)), animated)), thresholds.cameraRotationTolerance), null);
 });
 
 test('the orbit\'s audit: the lit side\'s turn against the camera\'s', () => {
@@ -35,7 +35,7 @@ test('the orbit\'s audit: the lit side\'s turn against the camera\'s', () => {
     const { checks, sayAs } = checkList(rubric);
     const lit = [0, 1].map((k) => ({ orbiting: true, fit: { light: [-Math.sin(k * lightTurn * DEG) * Math.cos(up * DEG), Math.sin(up * DEG), Math.cos(k * lightTurn * DEG) * Math.cos(up * DEG)] },
       camera: cameraDegrees === null ? undefined : cameraOf(sent(view(k * cameraDegrees)), ['uniform V']) }));
-    auditOrbit({ facts: { orbit: {} }, T, must: new Set(['diffuse']), sayAs, numbers: {} }, lit);
+    auditOrbit({ facts: { orbit: {} }, thresholds, must: new Set(['diffuse']), sayAs, numbers: {} }, lit);
     return checks.map((c) => `${c.level}: ${c.reason}`).join('\n');
   };
   assert.match(judge(40, 40), /^pass: the lit side turns as the camera orbits \(the fitted light turns 40\.0° over 2 views, where a light in the world would have turned 39\.\d° on screen \(the camera turns 40\.0°/);
@@ -47,7 +47,7 @@ test('the orbit\'s audit: the lit side\'s turn against the camera\'s', () => {
   const wanders = (() => {
     const { checks, sayAs } = checkList(rubric);
     const lit = [[0, 0.996, 0.087], [0, 0.985, -0.174]].map((light, k) => ({ orbiting: true, fit: { light }, camera: cameraOf(sent(view(40 * k)), ['uniform V']) }));
-    auditOrbit({ facts: { orbit: {} }, T, must: new Set(['diffuse']), sayAs, numbers: {} }, lit);
+    auditOrbit({ facts: { orbit: {} }, thresholds, must: new Set(['diffuse']), sayAs, numbers: {} }, lit);
     return checks.map((c) => `${c.level}: ${c.reason}`).join('\n');
   })();
   assert.match(wanders, /^pass: the lit side turns as the camera orbits \(the fitted light turns 15\.\d°/);

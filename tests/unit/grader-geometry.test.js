@@ -13,7 +13,7 @@ import { sliderEvent } from '../../grader/core/computed/slider-event.js';
 import { tetrahedronSphere, vertexCount } from '../../common/sphere.js';
 
 const rubric = JSON.parse(readFileSync(new URL('../../grader/core/rubric.json', import.meta.url), 'utf8'));
-const T = rubric.thresholds;
+const thresholds = rubric.thresholds;
 const { vertexShader, vertexInputs, summary } = meshAnalysis();
 const FLOAT = 0x1406, TRIANGLES = 4, UNSIGNED_SHORT = 0x1403;
 const GL = { FLOAT, TRIANGLES };
@@ -136,7 +136,7 @@ test('a colour per face: an attribute constant over each triangle, with many val
 test('the audits: culled near side, a hole from some side, the slide\'s clockwise experiment, an unreadable mesh', () => {
   const judge = (facts, part = 'WP04P3') => {
     const { checks, sayAs } = checkList(rubric);
-    const C = { facts: { api: 'webgl', faces: { culling: true }, ...facts }, T, must: new Set(rubric.parts[part].must), sayAs, numbers: {} };
+    const C = { facts: { api: 'webgl', faces: { culling: true }, ...facts }, thresholds, must: new Set(rubric.parts[part].must), sayAs, numbers: {} };
     auditWinding(C);
     auditClosed(C);
     auditPerFace(C);
@@ -165,7 +165,7 @@ test('the audits: culled near side, a hole from some side, the slide\'s clockwis
 test('the audits: a page that draws more every frame while nothing is touched', () => {
   const judge = (frames) => {
     const { checks, sayAs } = checkList(rubric);
-    auditGrowth({ facts: { geometryAtFirst: { frames } }, T, sayAs, numbers: {} });
+    auditGrowth({ facts: { geometryAtFirst: { frames } }, thresholds, sayAs, numbers: {} });
     return checks.map((c) => `${c.level}: ${c.reason}`).join('\n');
   };
   assert.match(judge([192, 384, 576, 768, 960]), /^review: the page draws more every frame \(192 → 960 vertices over 5 frames/);
@@ -182,15 +182,15 @@ test('what the page sent: the keys a slider changed, the animated ones and buffe
   assert.equal(sentChanges(null, after), null);
   // the slider's event, one reading for the gathering and the audits: moving, what was sent decides;
   // standing still (or nothing sent recorded), how much the picture changed against sliderChange
-  const T = { sliderChange: 0.002 };
+  const thresholds = { sliderChange: 0.002 };
   const big = 0.1, none = 0;
-  assert.equal(sliderEvent({ moving: true, sent: { input: [], change: [] }, changed: { input: big, change: big } }, T), 'none');
-  assert.equal(sliderEvent({ moving: true, sent: { input: ['uniform kd'], change: null }, changed: { input: none, change: null } }, T), 'input');
-  assert.equal(sliderEvent({ moving: true, sent: { input: [], change: ['uniform kd'] }, changed: { input: none, change: none } }, T), 'change');
-  assert.equal(sliderEvent({ moving: true, sent: { input: [], change: null }, changed: { input: big, change: null } }, T), 'none', 'the change event not tried yet');
-  assert.equal(sliderEvent({ changed: { input: big, change: null } }, T), 'input');
-  assert.equal(sliderEvent({ changed: { input: none, change: null } }, T), 'none', 'the change event not tried yet');
-  assert.equal(sliderEvent({ changed: { input: none, change: big } }, T), 'change');
-  assert.equal(sliderEvent({ changed: { input: none, change: 0.001 } }, T), 'none');
-  assert.equal(sliderEvent({ how: 'change' }, T), 'change', 'an artifact from before the changes were kept: the gathering\'s reading');
+  assert.equal(sliderEvent({ moving: true, sent: { input: [], change: [] }, changed: { input: big, change: big } }, thresholds), 'none');
+  assert.equal(sliderEvent({ moving: true, sent: { input: ['uniform kd'], change: null }, changed: { input: none, change: null } }, thresholds), 'input');
+  assert.equal(sliderEvent({ moving: true, sent: { input: [], change: ['uniform kd'] }, changed: { input: none, change: none } }, thresholds), 'change');
+  assert.equal(sliderEvent({ moving: true, sent: { input: [], change: null }, changed: { input: big, change: null } }, thresholds), 'none', 'the change event not tried yet');
+  assert.equal(sliderEvent({ changed: { input: big, change: null } }, thresholds), 'input');
+  assert.equal(sliderEvent({ changed: { input: none, change: null } }, thresholds), 'none', 'the change event not tried yet');
+  assert.equal(sliderEvent({ changed: { input: none, change: big } }, thresholds), 'change');
+  assert.equal(sliderEvent({ changed: { input: none, change: 0.001 } }, thresholds), 'none');
+  assert.equal(sliderEvent({ how: 'change' }, thresholds), 'change', 'an artifact from before the changes were kept: the gathering\'s reading');
 });

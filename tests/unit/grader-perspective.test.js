@@ -10,7 +10,7 @@ import { auditNormals, auditPerspective, auditNormalsNotLight } from '../../grad
 import { checkList } from '../../grader/core/verdict.js';
 
 const rubric = JSON.parse(readFileSync(new URL('../../grader/core/rubric.json', import.meta.url), 'utf8'));
-const T = rubric.thresholds;
+const thresholds = rubric.thresholds;
 const DEG = 180 / Math.PI;
 
 // the world turned against the view (the colours are world normals, whatever the camera)
@@ -49,10 +49,10 @@ function sphere({ w = 160, d = 3, fovy = 45, share = 0.8, far = false, shade = (
   return { width: w, height: w, data };
 }
 
-const judgedOf = (img) => ({ img, an: analyse(img, T) });
+const judgedOf = (img) => ({ img, an: analyse(img, thresholds) });
 function context(mustList, facts = {}) {
   const { checks, sayAs } = checkList(rubric);
-  return { C: { facts, images: {}, T, must: new Set(mustList), sayAs, numbers: {} }, checks };
+  return { C: { facts, images: {}, thresholds, must: new Set(mustList), sayAs, numbers: {} }, checks };
 }
 
 test('normalAngle: orthographic reaches 90° at the rim, a perspective view acos(1/d), the inside of the far side 180° − acos(1/d)', () => {
@@ -66,7 +66,7 @@ test('normalAngle: orthographic reaches 90° at the rim, a perspective view acos
 });
 
 test('rimAngle reads the projection from the normals: orthographic 90°, an eye 3 or 10 radii away acos(1/d), on either side', () => {
-  const rim = (o) => rimAngle(samples(sphere(o), analyse(sphere(o), T), T, { maxRho: 0.9 }), !!o.far, T);
+  const rim = (o) => rimAngle(samples(sphere(o), analyse(sphere(o), thresholds), thresholds, { maxRho: 0.9 }), !!o.far, thresholds);
   const ortho = rim({ d: Infinity });
   assert.ok(ortho.rimDegrees >= 89.5 && ortho.rms < 1, JSON.stringify(ortho));
   for (const d of [3, 10]) {

@@ -192,7 +192,7 @@ function numberDefaults(src, allowed = []) {
 test('the number scans find what they look for (a bare 0.7 in measure/highlight.js, loadSeconds = 20)', () => {
   const highlight = read('core/measure/highlight.js');
   assert.deepEqual(bareNumbers(highlight), [], 'measure/highlight.js as it is');
-  const planted = highlight.replace('T.highlightPlaceRise * rise', '0.7 * rise');
+  const planted = highlight.replace('thresholds.highlightPlaceRise * rise', '0.7 * rise');
   assert.notEqual(planted, highlight);
   assert.deepEqual(bareNumbers(planted).map((n) => n.value), [0.7]);
   assert.deepEqual(numberDefaults('export function open({ root, loadSeconds = 20 }, d = 2) { return [root, loadSeconds, d]; }').map((d) => d.text), ['loadSeconds = 20']);

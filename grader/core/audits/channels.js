@@ -13,10 +13,10 @@ export const META = {
  * when they differed at the first frame, where a read-back that shows nothing is then no reason to
  * fail the part.
  */
-export function auditShown({ facts, T, sayAs, imagesShown }) {
+export function auditShown({ facts, thresholds, sayAs, imagesShown }) {
   const say = sayAs('shown-channels');
   // the comparisons (the first frame's, the last picture's) that differ beyond the engine's rounding
-  const off = (facts.shown || []).filter((d) => d.compared && d.share > T.shownDifferShare);
+  const off = (facts.shown || []).filter((d) => d.compared && d.share > thresholds.shownDifferShare);
   for (const d of off) {
     const when = d.at === 'first' ? 'at the first frame' : 'at the end';
     say('review', `what the page reads back differs from what the browser shows, ${when}: ${Math.round(100 * d.share)}% of the canvas's opaque pixels in view (another canvas or an element laid over it, or a CSS filter on it?); the browser's picture is shown: a teacher looks`);

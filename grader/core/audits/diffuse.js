@@ -14,7 +14,7 @@ export const META = {
 };
 
 /** The diffuse fit of the judged view (`shading`: evidence.shadingOf), with the lit views' sparse fits (`lit`). */
-export function auditDiffuse({ T, must, sayAs, numbers }, shading, lit) {
+export function auditDiffuse({ thresholds, must, sayAs, numbers }, shading, lit) {
   const say = sayAs('diffuse');
   if (!must.has('diffuse') && !must.has('highlight')) return;
   const { fit, pointLight } = shading;
@@ -24,32 +24,32 @@ export function auditDiffuse({ T, must, sayAs, numbers }, shading, lit) {
   // lit on both sides shows where the light comes from the side: any view seen on the orbit (or
   // over all pixels: a crescent lit from behind is left out of the first fit as if a highlight; on
   // a page lit one-sided, |n·w_i| never explains all pixels better, it lights the dark side)
-  const twoSided = [fit, ...lit.map((v) => v.fit)].filter(Boolean).find((f) => (f.r2TwoSided > f.r2 + T.twoSidedGain && f.r2 < T.twoSidedBelow) ||
-    (f.r2TwoSidedAll > f.r2All + T.twoSidedGainAll && f.r2TwoSidedAll >= T.diffuseR2));
+  const twoSided = [fit, ...lit.map((v) => v.fit)].filter(Boolean).find((f) => (f.r2TwoSided > f.r2 + thresholds.twoSidedGain && f.r2 < thresholds.twoSidedBelow) ||
+    (f.r2TwoSidedAll > f.r2All + thresholds.twoSidedGainAll && f.r2TwoSidedAll >= thresholds.diffuseR2));
   if (fit && fit.tint && fit.tint.added) say('pass', `note: the colour is the lighting with WP04P1's normal colouring added (about ${fmt(fit.tint.added, 2)}·n, read from how the channels differ: each follows one component of the normal, the lighting is the same in all three): the lighting is judged with it taken out`);
   if (!fit) say('mistake', 'too little of the sphere to read its shading');
-  else if (fit.spread < T.evenSpread) say('mistake', `the sphere is evenly bright: no diffuse shading to see (in ${1 + lit.length} views${orbitFits.length ? ' along the orbit' : ''})`);
+  else if (fit.spread < thresholds.evenSpread) say('mistake', `the sphere is evenly bright: no diffuse shading to see (in ${1 + lit.length} views${orbitFits.length ? ' along the orbit' : ''})`);
   else if (twoSided) {
     say('mistake', `the sphere is lit on both sides: brightness follows |n·w_i| (R² ${fmt(twoSided.r2TwoSided)}), not max(n·w_i, 0) (R² ${fmt(twoSided.r2)})`);
-  } else if (!must.has('highlight') && orbitFits.length && Math.min(...orbitFits.map((f) => f.r2)) < T.orbitDiffuseR2) {
+  } else if (!must.has('highlight') && orbitFits.length && Math.min(...orbitFits.map((f) => f.r2)) < thresholds.orbitDiffuseR2) {
     const worst = orbitFits.reduce((a, b) => (b.r2 < a.r2 ? b : a));
     say('mistake', `brightness does not follow max(n·w_i, 0)·kd·Le + ambient at every orbit position (R² down to ${fmt(worst.r2)}): lit where it should be dark?`);
-  } else if (fit.r2 >= T.diffuseR2 && fit.diffuse >= T.diffuseMin) {
+  } else if (fit.r2 >= thresholds.diffuseR2 && fit.diffuse >= thresholds.diffuseMin) {
     say('pass', `brightness follows max(n·w_i, 0)·kd·Le + ambient (R² ${fmt(fit.r2)}, fitted light ${fit.light.map((v) => fmt(v)).join(', ')})`);
-  } else if (nearPointLight(pointLight, T) && fit.diffuse >= T.diffuseMin) {
-    const f = pointLight[nearPointLight(pointLight, T)];
+  } else if (nearPointLight(pointLight, thresholds) && fit.diffuse >= thresholds.diffuseMin) {
+    const f = pointLight[nearPointLight(pointLight, thresholds)];
     say('pass', `brightness follows max(n·w_i, 0)·kd·L_i + ambient for a point light ${fmt(f.distance, 1)} radii from the centre (R² ${fmt(f.r2)})`);
   } else say('mistake', `brightness does not follow max(n·w_i, 0)·kd·Le + ambient for any light direction (R² ${fmt(fit.r2)})`);
 }
 
 /** A point light: with the 1/r² fall-off, or clearly without it. */
-export function auditPointLight({ T, sayAs }, shading) {
+export function auditPointLight({ thresholds, sayAs }, shading) {
   const say = sayAs('point-light');
   const { pointLight } = shading;
   if (!pointLight) return;
-  if (clearlyBetter(pointLight, 'none', 'falloff', T)) {
+  if (clearlyBetter(pointLight, 'none', 'falloff', thresholds)) {
     say('review', `point light without the 1/r² fall-off: brightness fits a light ${fmt(pointLight.none.distance, 1)} radii from the centre with no fall-off (R² ${fmt(pointLight.none.r2, 3)}) better than with L_i = I/‖p_ℓ − x‖² (R² ${fmt(pointLight.falloff.r2, 3)})`);
-  } else if (clearlyBetter(pointLight, 'falloff', 'none', T)) {
+  } else if (clearlyBetter(pointLight, 'falloff', 'none', thresholds)) {
     say('pass', `a point light ${fmt(pointLight.falloff.distance, 1)} radii from the centre, with the 1/r² fall-off (R² ${fmt(pointLight.falloff.r2, 3)}; without it ${fmt(pointLight.none.r2, 3)})`);
   }
 }

@@ -21,14 +21,14 @@ export const STOP = Symbol('nothing more to judge');
  * Says the shader and adapter failures; returns the reason the part cannot be judged (it fails:
  * the audit 'first-frame''s), STOP, or null.
  */
-export function auditFirstFrame({ facts, images, T, sayAs }) {
+export function auditFirstFrame({ facts, images, thresholds, sayAs }) {
   const say = sayAs('first-frame');
   const g = facts.first;
   if (!g) return 'the page never finished its first frame';
   if (!images.first) return 'no canvas on the page';
   for (const e of g.shaderErrors) sayAs('shaders-compile')('fail', e);
   if (g.api === 'webgpu' && g.adapter === null) sayAs('webgpu-adapter')('fail', 'no WebGPU adapter: the page could not start WebGPU');
-  if (!analyse(images.first, T).blank) {
+  if (!analyse(images.first, thresholds).blank) {
     if (g.orbitStarted) say('pass', `note: the canvas stayed one colour${g.waited ? ` for ${g.waited} frames more` : ''} (the unlit side toward the camera?); the orbit, started by ${g.orbitStarted}, showed the sphere, and it was judged from there`);
     return null;
   }

@@ -31,7 +31,7 @@ function culledOutward(cull, cw) {
 }
 
 /** Every step that culls: the triangles wound against the culling show the inside of the far side, or a hole. */
-export function auditWinding({ facts, T, must, sayAs, numbers }) {
+export function auditWinding({ facts, thresholds, must, sayAs, numbers }) {
   const say = sayAs('winding');
   const g = judgedGeometry(facts);
   const any = facts.geometry || facts.geometryAtFirst;
@@ -46,42 +46,42 @@ export function auditWinding({ facts, T, must, sayAs, numbers }) {
   const setting = webgpu ? `cullMode '${mode}' with frontFace '${front}'` : `gl.enable(gl.CULL_FACE) with gl.cullFace(gl.${mode === 'both' ? 'FRONT_AND_BACK' : mode.toUpperCase()}) and ${front === 'cw' ? 'gl.frontFace(gl.CW)' : 'the default gl.frontFace(gl.CCW)'}`;
   const share = culledOutward(g.cull, g.cw);
   const read = `read from the ${g.analysed} triangles the page sent`;
-  if (share >= T.windingCulledShare) {
+  if (share >= thresholds.windingCulledShare) {
     // (P2: clockwise front faces over a counter-clockwise mesh is the slide's own experiment, said by the normals' audit)
-    if (must.has('front-faces') && mode === 'back' && front === 'cw' && g.cw <= 1 - T.windingCulledShare) return;
+    if (must.has('front-faces') && mode === 'back' && front === 'cw' && g.cw <= 1 - thresholds.windingCulledShare) return;
     say('mistake', `the near side of the sphere is culled and the inside of the far side shows: ${pct(g.cw)} of its triangles are wound clockwise seen from outside (${read}; the textbook's tetrahedron winds its faces so), and ${setting} culls the faces that point toward the viewer`);
-  } else if (share >= T.windingHoleShare) {
+  } else if (share >= thresholds.windingHoleShare) {
     say('mistake', `a hole shows from some side: ${pct(share)} of the triangles are wound the other way from the rest (${read}), and ${setting} takes them away where they face the viewer`);
   } else say('pass', `the triangles are wound so that the culling keeps the near side: ${pct(1 - g.cw)} of them counter-clockwise seen from outside (${read})`);
 }
 
 /** A sphere is closed: every edge of its mesh belongs to two triangles. */
-export function auditClosed({ facts, T, sayAs }) {
+export function auditClosed({ facts, thresholds, sayAs }) {
   const say = sayAs('closed');
   const g = judgedGeometry(facts);
   if (!g || !g.closed || !g.closed.edges) return;
   const { open, edges } = g.closed;
-  if (open / edges > T.openEdgeShare) say('mistake', `the sphere is not closed: ${open} of its ${edges} edges belong to one triangle only (read from the triangles the page sent), so it has holes`);
+  if (open / edges > thresholds.openEdgeShare) say('mistake', `the sphere is not closed: ${open} of its ${edges} edges belong to one triangle only (read from the triangles the page sent), so it has holes`);
 }
 
 /** WP04P1/P2: n = p at each vertex, not a colour or normal per face. */
-export function auditPerFace({ facts, T, must, sayAs }) {
+export function auditPerFace({ facts, thresholds, must, sayAs }) {
   const say = sayAs('per-face');
   if (!must.has('normal-colours')) return;
   const g = judgedGeometry(facts);
   if (!g || !g.perFace) return;
-  const face = g.perFace.find((a) => /norm|col/i.test(a.name) && a.share >= T.perFaceShare && a.distinct >= T.perFaceDistinct);
+  const face = g.perFace.find((a) => /norm|col/i.test(a.name) && a.share >= thresholds.perFaceShare && a.distinct >= thresholds.perFaceDistinct);
   if (face) say('mistake', `a colour per face, not per vertex: the attribute ${face.name} is the same at the three corners of ${pct(face.share)} of the triangles (a face's normal or colour; the slide: "vertex positions p are also vertex normals n: n = p")`);
 }
 
 /** A page whose vertices a frame grow while no control is touched builds its mesh again and appends it. */
-export function auditGrowth({ facts, T, sayAs, numbers }) {
+export function auditGrowth({ facts, thresholds, sayAs, numbers }) {
   const say = sayAs('growth');
   const g = facts.geometryAtFirst;
   const f = g && g.frames;
-  if (!f || f.length < T.growthFrames) return;
-  const last = f.slice(-T.growthFrames);
-  const grows = last.every((v, k) => k === 0 || v > last[k - 1]) && last[last.length - 1] >= T.growthRatio * last[0];
+  if (!f || f.length < thresholds.growthFrames) return;
+  const last = f.slice(-thresholds.growthFrames);
+  const grows = last.every((v, k) => k === 0 || v > last[k - 1]) && last[last.length - 1] >= thresholds.growthRatio * last[0];
   if (!grows) return;
   numbers.growth = f;
   say('mistake', `the page draws more every frame (${f[0]} → ${f[f.length - 1]} vertices over ${f.length} frames, no control touched): the mesh is built again and appended to its arrays, and the page slows until it stalls`);
@@ -93,21 +93,21 @@ export function auditGrowth({ facts, T, sayAs, numbers }) {
  * frame and draws its sphere as many times. Said to the student as a note; the verdict stands on the
  * pictures.
  */
-export function auditLoopsMultiply({ facts, T, sayAs, numbers }) {
+export function auditLoopsMultiply({ facts, thresholds, sayAs, numbers }) {
   const f = facts.frameDraws;
   if (!f || !f.first || !f.last || !f.clicks || !(f.first.loops >= 1) || !(f.first.draws > 0)) return;
-  if (f.last.loops < T.loopsMultiplied * f.first.loops || f.last.draws < T.loopsMultiplied * f.first.draws) return;
+  if (f.last.loops < thresholds.loopsMultiplied * f.first.loops || f.last.draws < thresholds.loopsMultiplied * f.first.draws) return;
   numbers.frameDraws = f;
   // (the loops are counted exactly; the draws a frame also hold a click's own drawing)
   sayAs('loops-multiply')('pass', `note: the page draws its sphere ${f.last.loops} times a frame after ${f.clicks} click${f.clicks === 1 ? '' : 's'} (${f.last.loops} animation loops, where it started with ${f.first.loops}; ${f.last.draws} draw calls a frame, ${f.first.draws} at first): each click starts another animation loop, so the orbit speeds up and the page slows`);
 }
 
 /** A round sphere in the picture drawn with no more than a few triangles is a picture, not geometry (a textured quad, a sphere traced per pixel). */
-export function auditPictureNotGeometry({ facts, T, sayAs }, judged) {
+export function auditPictureNotGeometry({ facts, thresholds, sayAs }, judged) {
   const say = sayAs('picture-not-geometry');
   // (the triangles are counted whether or not their positions could be read)
   const g = [facts.geometry, facts.geometryAtFirst].find((x) => x && Number.isFinite(x.triangles));
-  if (!g || !g.draws || 3 * g.triangles + (g.otherVertices || 0) > 3 * T.pictureTriangles || judged.an.blank || !(judged.an.roundness <= T.roundness)) return;
+  if (!g || !g.draws || 3 * g.triangles + (g.otherVertices || 0) > 3 * thresholds.pictureTriangles || judged.an.blank || !(judged.an.roundness <= thresholds.roundness)) return;
   say('review', `the sphere is a picture, not geometry: a round sphere shows, but the page draws ${g.triangles} triangle${g.triangles === 1 ? '' : 's'} (read from what it sent to WebGL): the slide asks for a tetrahedron subdivided into a sphere`);
 }
 
@@ -116,12 +116,12 @@ export function auditPictureNotGeometry({ facts, T, sayAs }, judged) {
  * orbit (gather/all-round.js): a round outline with a gap in it is a hole on that side. Views whose
  * outline is not round (an unlit side merging with the background) tell nothing and are left out.
  */
-export function auditAllRound({ facts, T, sayAs, numbers, imagesShown }) {
+export function auditAllRound({ facts, thresholds, sayAs, numbers, imagesShown }) {
   const say = sayAs('all-round');
   const r = facts.allRound;
   if (!r) return;
-  const round = r.views.filter((v) => !v.blank && v.roundness <= T.roundness);
-  const gaps = round.filter((v) => v.fill < T.fill);
+  const round = r.views.filter((v) => !v.blank && v.roundness <= thresholds.roundness);
+  const gaps = round.filter((v) => v.fill < thresholds.fill);
   numbers.allRound = { views: r.views.length, round: round.length, gaps: gaps.length, turned: r.turned };
   const where = r.turned !== null ? `at ${r.views.length} positions along the orbit, the camera turning ${Math.round(r.turned)}°` : `at ${r.views.length} positions along the orbit (the page sends no view matrix the grader could read: how far it turned is not known)`;
   const why = `the mesh could not be read from what the page sent (${r.why})`;

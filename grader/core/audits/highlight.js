@@ -20,11 +20,11 @@ export const META = {
  * gatherer looked farther along the orbit for it), or null.
  */
 export function auditHighlight(context, shading, views) {
-  const { facts, images, T, must, sayAs, numbers } = context;
+  const { facts, images, thresholds, must, sayAs, numbers } = context;
   const say = sayAs('highlight');
   if (!must.has('highlight') || !shading.fit) return null;
   const fit = shading.judgedFit;
-  const { seen, place } = highlightEvidence(shading, views, facts.raised, images, T);
+  const { seen, place } = highlightEvidence(shading, views, facts.raised, images, thresholds);
   numbers.highlightViews = 1 + views.length;
   if (seen) say('pass', `a specular highlight in ${seen.where} (up to ${fmt(100 * seen.fit.highlightPeak, 0)}% of the way from the diffuse fit to white, ${fmt(seen.fit.highlightRise, 2)} above it)`);
   let later = null;
@@ -43,17 +43,17 @@ export function auditPlaceFarther(context, near) {
   if (!name) return judgePlace(context, near);
   const img = context.images[name];
   context.imagesShown.highlightPlace = name;
-  judgePlace(context, { fit: fullFit(img, context.T), where: 'a view along the orbit' });
+  judgePlace(context, { fit: fullFit(img, context.thresholds), where: 'a view along the orbit' });
 }
 
 /** Says whether the highlight sits at w_h in `place` ({ fit, where }). */
-function judgePlace({ T, sayAs, numbers }, place) {
+function judgePlace({ thresholds, sayAs, numbers }, place) {
   const say = sayAs('highlight-place');
   const offset = highlightOffset(place.fit.highlightNormal, place.fit.light);
   if (offset === null) return;
   const light = lightAngle(place.fit);
   Object.assign(numbers, { highlightOffset: offset, highlightPlaceLight: light });
-  const near = light < T.highlightPlaceLightDegrees;
+  const near = light < thresholds.highlightPlaceLightDegrees;
   const where = `in ${place.where}, the light ${fmt(light, 0)}° from the viewer`;
   const fitted = place.fit.light.map((v) => fmt(v)).join(', ');
   const ask = 'is w_o the direction from the surface to the eye, in the same space as n and w_i?';
@@ -62,33 +62,33 @@ function judgePlace({ T, sayAs, numbers }, place) {
   const fromLight = highlightOffset(place.fit.highlightNormal, place.fit.light, 0);
   numbers.highlightFromLight = fromLight;
   const tint = place.fit.tint;
-  const atLight = !near && offset - fromLight >= T.highlightAtLightDegrees;
-  if (tint && !tint.sure && (atLight || offset > T.highlightPlaceDegrees)) {
+  const atLight = !near && offset - fromLight >= thresholds.highlightAtLightDegrees;
+  if (tint && !tint.sure && (atLight || offset > thresholds.highlightPlaceDegrees)) {
     // the hue turns with the normal (the P1 colour kept in the material): the fitted light is unsure
-    say('pass', `note: the highlight's place is not judged: the colours are tinted by the normal (the WP04P1 colour 0.5·n + 0.5 in the material or mixed in), and with ${unsure(tint, T)} the fitted light cannot place it (it is ${fmt(offset, 0)}° from the halfway normal the fit gives, ${where})`);
+    say('pass', `note: the highlight's place is not judged: the colours are tinted by the normal (the WP04P1 colour 0.5·n + 0.5 in the material or mixed in), and with ${unsure(tint, thresholds)} the fitted light cannot place it (it is ${fmt(offset, 0)}° from the halfway normal the fit gives, ${where})`);
     return;
   }
   if (atLight) say('mistake', `the highlight sits at the light, not halfway between the light and the viewer: ${fmt(fromLight, 0)}° from the light, ${fmt(offset, 0)}° from the halfway normal (the light fitted at ${fitted}; ${where}): ${ask}`);
-  else if (offset > T.highlightPlaceDegrees) say('mistake', `the highlight is ${fmt(offset, 0)}° from where the model puts it (at the normal halfway between the light, fitted at ${fitted}, and the viewer; ${where}): ${ask}`);
+  else if (offset > thresholds.highlightPlaceDegrees) say('mistake', `the highlight is ${fmt(offset, 0)}° from where the model puts it (at the normal halfway between the light, fitted at ${fitted}, and the viewer; ${where}): ${ask}`);
   else say('pass', `the highlight sits where the normal is halfway between the light and the viewer (${fmt(offset, 0)}° off, ${where}${near ? `; with the light this near the viewer that halfway normal is only ${fmt(light / 2, 0)}° from the light, so a highlight at the light would pass too` : ''})`);
 }
 
 /** Why a tinted fit cannot place a highlight, in words. */
-function unsure(tint, T) {
+function unsure(tint, thresholds) {
   const why = [];
   if (tint.slope === null) why.push('no fit that divides the tint out');
   else {
-    if (tint.slope >= T.tintSlope) why.push(`an albedo whose brightness varies by ±${fmt(100 * tint.slope, 0)}% over the sphere`);
-    if (tint.lightShift > T.tintLightDegrees) why.push(`a light that moves ${fmt(tint.lightShift, 0)}° when the tint is divided out`);
+    if (tint.slope >= thresholds.tintSlope) why.push(`an albedo whose brightness varies by ±${fmt(100 * tint.slope, 0)}% over the sphere`);
+    if (tint.lightShift > thresholds.tintLightDegrees) why.push(`a light that moves ${fmt(tint.lightShift, 0)}° when the tint is divided out`);
   }
-  return why.length ? why.join(' and ') : `a fit of R² under ${T.diffuseR2}`;
+  return why.length ? why.join(' and ') : `a fit of R² under ${thresholds.diffuseR2}`;
 }
 
 /** This module's audit units (audits/list.js runs them in its order). */
 export const UNITS = [
   // the highlight read on the judged picture and on the lit views' full fits; its result (the place
   // nearer the viewer) is read again farther along (highlight-place)
-  unit(META, 'highlight', (context, { shading, 'lit-views': lit }) => (shading.shaded ? auditHighlight(context, shading.shading, viewFits(lit.map((v) => ({ img: context.images[v.image] })), context.T)) : null),
+  unit(META, 'highlight', (context, { shading, 'lit-views': lit }) => (shading.shaded ? auditHighlight(context, shading.shading, viewFits(lit.map((v) => ({ img: context.images[v.image] })), context.thresholds)) : null),
     { also: ['highlight-place'], uses: ['shading', 'lit-views'] }),
   unit(META, 'highlight-place', (context, { highlight }) => (highlight ? auditPlaceFarther(context, highlight) : null), { uses: ['highlight'] }),
 ];

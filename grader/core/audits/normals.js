@@ -21,15 +21,15 @@ export const META = {
  * The normals as colours, on the judged picture (`judged`: { img, an }) or the one the page's face
  * controls gave. Returns what was read ({ img, an, nc }) for auditPerspective, or null.
  */
-export function auditNormals({ facts, images, T, must, sayAs, numbers }, judged) {
+export function auditNormals({ facts, images, thresholds, must, sayAs, numbers }, judged) {
   const say = sayAs('normal-colours');
   if (!must.has('normal-colours') && !must.has('front-faces')) return null;
   let { img, an } = judged;
   if (facts.facesImage) {
     img = images[facts.facesImage];
-    an = analyse(img, T);
+    an = analyse(img, thresholds);
   }
-  const nc = normalColours(samples(img, an, T), T);
+  const nc = normalColours(samples(img, an, thresholds), thresholds);
   // a reflection of the sphere's normals is the inside of the far side (the front faces culled), or
   // the faces nearest a viewer who looks along +z (clip space, no view matrix): with the depth test
   // on and culling off the nearest faces show; if the picture stays, they were what showed
@@ -39,22 +39,22 @@ export function auditNormals({ facts, images, T, must, sayAs, numbers }, judged)
     if (probe.faces.depthTest && probe.faces.culling) {
       // (a page that drew nothing while culling was off shows its last frame: that tells nothing)
       const s = probe.image && probe.draws !== 0 ? images[probe.image] : null;
-      const sAn = s && analyse(s, T);
-      const nc2 = s && !sAn.blank ? normalColours(samples(s, sAn, T), T) : null;
-      nearest = nc2 ? nc2.det < 0 && pictureChange(s, img, T) <= T.noCullSame : null;
+      const sAn = s && analyse(s, thresholds);
+      const nc2 = s && !sAn.blank ? normalColours(samples(s, sAn, thresholds), thresholds) : null;
+      nearest = nc2 ? nc2.det < 0 && pictureChange(s, img, thresholds) <= thresholds.noCullSame : null;
     } else if (probe.faces.depthTest) nearest = true;
   }
   numbers.normals = nc;
   if (!nc) say('mistake', 'too little of the sphere to read its colours');
-  else if (nc.spread < T.normalsSpread) say('mistake', 'the sphere is one colour: the normals are not used for the colour (0.5·n + 0.5)');
-  else if (nc.unitError > T.normalsUnitError) {
+  else if (nc.spread < thresholds.normalsSpread) say('mistake', 'the sphere is one colour: the normals are not used for the colour (0.5·n + 0.5)');
+  else if (nc.unitError > thresholds.normalsUnitError) {
     say('mistake', `the colours are not 0.5·n + 0.5: 2c − 1 is not a unit vector (off by ${fmt(nc.unitError)} on average)`);
   } else say('pass', `colours decode to unit normals 2c − 1 (off by ${fmt(nc.unitError, 3)})`);
   const sayFaces = sayAs('front-faces');
-  if (must.has('front-faces') && nc && nc.spread >= T.normalsSpread) {
-    if (facesViewer(nc, T)) sayFaces('pass', 'the visible colours are the normals facing the viewer: front faces only');
+  if (must.has('front-faces') && nc && nc.spread >= thresholds.normalsSpread) {
+    if (facesViewer(nc, thresholds)) sayFaces('pass', 'the visible colours are the normals facing the viewer: front faces only');
     else if (nearest) sayFaces('pass', 'the visible faces are the nearest ones (the depth test is on, and culling off draws the same picture): the view looks along +z (clip space without a view matrix?), so their normals point away from +z');
-    else if (nc.det < 0 && nc.residual <= T.facingResidual) {
+    else if (nc.det < 0 && nc.residual <= thresholds.facingResidual) {
       if (clockwiseExperiment(facts)) sayFaces('pass', `note: the back side of the sphere shows, as the slide's clockwise experiment asks ("Try changing the convention to having clockwise wound triangles being front facing … You should now see the back side of the sphere"): ${facts.api === 'webgpu' ? "frontFace: 'cw'" : 'gl.frontFace(gl.CW)'} with back-face culling on; the default, counter-clockwise, shows the front`);
       else sayFaces('mistake', 'the inside of the far side shows (the normals face away from the viewer): the front faces are culled, or the depth test is off and the far side is drawn last');
     } else sayFaces('mistake', `back faces show through the front (normals do not vary smoothly across the picture, misfit ${fmt(nc.residual)}): depth test or culling missing`);
@@ -69,7 +69,7 @@ function clockwiseExperiment(facts) {
 }
 
 /** The colours decode to unit normals (2c − 1) that vary over the picture as one side of a sphere's do. */
-const smoothUnitNormals = (nc, T) => !!nc && !(nc.spread < T.normalsSpread || nc.unitError > T.normalsUnitError || nc.residual > T.facingResidual);
+const smoothUnitNormals = (nc, thresholds) => !!nc && !(nc.spread < thresholds.normalsSpread || nc.unitError > thresholds.normalsUnitError || nc.residual > thresholds.facingResidual);
 
 /**
  * WP04P1/P2: "Draw a solid sphere in perspective view". Where the colours decode to the normals of
@@ -77,19 +77,19 @@ const smoothUnitNormals = (nc, T) => !!nc && !(nc.spread < T.normalsSpread || nc
  * orthographic view shows normals out to 90° from the view direction, a perspective view from a
  * distance d none past acos(1/d). Where front and back faces mix, the picture cannot tell: not said.
  */
-export function auditPerspective({ T, must, sayAs, numbers }, seen) {
+export function auditPerspective({ thresholds, must, sayAs, numbers }, seen) {
   const say = sayAs('perspective');
   if (!must.has('perspective') || !seen || !seen.nc) return;
   const { img, an, nc } = seen;
-  if (!smoothUnitNormals(nc, T)) return;
+  if (!smoothUnitNormals(nc, thresholds)) return;
   const far = nc.det < 0;
-  if (!far && nc.det < T.facingDeterminant) return;
-  const rim = rimAngle(samples(img, an, T, { maxRho: T.rimSampleRadius }), far, T);
-  if (!rim || rim.rms > T.perspectiveFitDegrees) return;
+  if (!far && nc.det < thresholds.facingDeterminant) return;
+  const rim = rimAngle(samples(img, an, thresholds, { maxRho: thresholds.rimSampleRadius }), far, thresholds);
+  if (!rim || rim.rms > thresholds.perspectiveFitDegrees) return;
   numbers.perspective = rim;
   const short = Math.abs(90 - rim.rimDegrees);
   const side = far ? 'the inside of the far side, whose normals' : 'the normals';
-  if (short >= 90 - T.orthographicRimDegrees) {
+  if (short >= 90 - thresholds.orthographicRimDegrees) {
     say('pass', `in perspective view: ${side} reach ${fmt(rim.rimDegrees, 0)}° from the view direction at the rim, an eye about ${fmt(rim.distance, 1)} sphere radii from the centre (acos(1/d) = ${fmt(90 - short, 0)}°; an orthographic view reaches 90°)`);
   } else {
     say('mistake', `not in perspective view (the slide: "Draw a solid sphere in perspective view"): ${side} reach ${fmt(rim.rimDegrees, 0)}° from the view direction at the rim, as an orthographic view shows them (90°); a perspective view from a distance d shows none past acos(1/d) (71° at d = 3): an orthographic projection, or an eye so far away that it looks the same?`);
@@ -104,13 +104,13 @@ export function auditPerspective({ T, must, sayAs, numbers }, seen) {
  * (addedClearly), and the shading is judged with the colouring taken out. Returns true when it
  * says the picture is no lighting (the shading is then not judged as lighting).
  */
-export function auditNormalsNotLight({ T, must, sayAs, numbers }, judged) {
+export function auditNormalsNotLight({ thresholds, must, sayAs, numbers }, judged) {
   const say = sayAs('normals-not-light');
   if (!must.has('diffuse') && !must.has('highlight')) return false;
-  const pts = samples(judged.img, judged.an, T);
-  const nc = normalColours(pts, T);
-  if (!smoothUnitNormals(nc, T) || Math.abs(nc.det) < T.facingDeterminant) return false;
-  if (addedClearly(addedTintFit(pts, T), T)) return false;
+  const pts = samples(judged.img, judged.an, thresholds);
+  const nc = normalColours(pts, thresholds);
+  if (!smoothUnitNormals(nc, thresholds) || Math.abs(nc.det) < thresholds.facingDeterminant) return false;
+  if (addedClearly(addedTintFit(pts, thresholds), thresholds)) return false;
   numbers.normalColouring = nc;
   say('mistake', `shows the normal colouring of WP04P1, not the lighting: its colours decode to unit normals 2c − 1 all over the sphere (off by ${fmt(nc.unitError, 3)}), which is 0.5·n + 0.5, not kd·Le·max(n·w_i, 0) + ambient`);
   return true;

@@ -24,7 +24,7 @@ export function auditOrbitStopsAgain({ facts, sayAs }) {
 }
 
 /** The lit side turning with the orbit (the lit views' sparse fits, `lit`), and the orbit's control. */
-export function auditOrbit({ facts, T, must, sayAs, numbers }, lit) {
+export function auditOrbit({ facts, thresholds, must, sayAs, numbers }, lit) {
   const say = sayAs('orbit-light');
   const orbiting = lit.filter((v) => v.orbiting), orbitFits = orbiting.map((v) => v.fit);
   if (must.has('diffuse') && orbitFits.length >= 2) {
@@ -36,7 +36,7 @@ export function auditOrbit({ facts, T, must, sayAs, numbers }, lit) {
     // far less than that is a light that moves with the camera, whatever the fits' noise; where the
     // camera's turn moves such a light little (it turned too little, or about the light itself), the
     // fit's own turn tells only when it is clear
-    const seen = orbiting.filter((v) => v.camera), rs = cameraRotations(seen.map((v) => v.camera), T.cameraRotationTolerance);
+    const seen = orbiting.filter((v) => v.camera), rs = cameraRotations(seen.map((v) => v.camera), thresholds.cameraRotationTolerance);
     let apart = null;
     if (rs) {
       const ref = seen.reduce((b, v, k) => (v.fit.r2 > seen[b].fit.r2 ? k : b), 0), l = seen[ref].fit.light;
@@ -47,9 +47,9 @@ export function auditOrbit({ facts, T, must, sayAs, numbers }, lit) {
     const words = `the fitted light turns ${fmt(turn, 1)}° over ${orbitFits.length} views${rs ? `, where a light in the world would have turned ${fmt(apart, 1)}° on screen (the camera turns ${fmt(camera, 1)}°: its view matrix, as the page sent it)` : ''}`;
     // on a sphere only the shading shows the orbit: where the step asks for the orbit (P3) a light that
     // moves with the camera hides it; elsewhere the slides leave the light's space to the student
-    if (rs && apart < T.lightSeparationDegrees && turn < T.lightClearTurnDegrees) {
-      say(must.has('orbit-toggle') ? 'review' : 'pass', `${must.has('orbit-toggle') ? '' : 'note: '}the camera turned too little between the lit views seen to tell whether the light stays in the world (${words}; ${T.lightSeparationDegrees}° at least are needed)`);
-    } else if (turn < Math.max(T.lightTurnDegrees, rs ? T.lightFollowsWorld * apart : 0)) {
+    if (rs && apart < thresholds.lightSeparationDegrees && turn < thresholds.lightClearTurnDegrees) {
+      say(must.has('orbit-toggle') ? 'review' : 'pass', `${must.has('orbit-toggle') ? '' : 'note: '}the camera turned too little between the lit views seen to tell whether the light stays in the world (${words}; ${thresholds.lightSeparationDegrees}° at least are needed)`);
+    } else if (turn < Math.max(thresholds.lightTurnDegrees, rs ? thresholds.lightFollowsWorld * apart : 0)) {
       say(must.has('orbit-toggle') ? 'review' : 'pass', `${must.has('orbit-toggle') ? 'the orbit does not show in the shading: ' : 'note: '}while the camera orbits, the lit side stays where it is on screen (${words}): the light moves with the camera (given in eye space, or light and normals in different spaces?)`);
     } else say('pass', `the lit side turns as the camera orbits (${rs ? words : `${fmt(turn, 0)}° over ${orbitFits.length} views`}): the light stays in the world`);
   }
@@ -57,7 +57,7 @@ export function auditOrbit({ facts, T, must, sayAs, numbers }, lit) {
     const sayToggle = sayAs('orbit-toggle');
     const o = facts.orbit;
     const control = o.control === null ? null : facts.controls.find((c) => c.index === o.control);
-    if (o.toggles) sayToggle('pass', `a control toggles the orbit on and off (${rolesInWords(facts, T).orbit})`);
+    if (o.toggles) sayToggle('pass', `a control toggles the orbit on and off (${rolesInWords(facts, thresholds).orbit})`);
     else if (control) sayToggle('review', `${describe(control)} starts the orbit, but nothing found stops it`);
     else if (o.movedAtFirst) sayToggle('review', `the camera orbits, but no button toggles the orbit: none of the ${facts.level.trials} controls tried stops it (the slide asks for one)`);
     else sayToggle('review', 'no orbit: the picture never moved, and no control named for the orbit starts it');

@@ -9,17 +9,17 @@ import { unit } from './unit.js';
  * the normal colouring), the picture it is read in (one that clipped to white read again with the
  * page's own sliders lowered, one too dim with its light raised: gather/visible.js), and its reading.
  */
-function readShading({ facts, images, T, litStep }, results) {
+function readShading({ facts, images, thresholds, litStep }, results) {
   const judged = results['judged-picture'];
   const shaded = litStep && !results['normals-not-light'];
   const shadeImg = facts.shadingImage ? images[facts.shadingImage] : judged.img;
-  return { shaded, shadeImg, shading: shaded ? shadingOf(shadeImg, judged.an, T) : null };
+  return { shaded, shadeImg, shading: shaded ? shadingOf(shadeImg, judged.an, thresholds) : null };
 }
 
 /** The lit views kept along the orbit, with their sparse fits (where the shading is judged; else none). */
-function readLitViews({ facts, images, T }, { shading }) {
+function readLitViews({ facts, images, thresholds }, { shading }) {
   if (!shading.shaded) return [];
-  return facts.views.map((v) => ({ ...litView(images[v.image], T), orbiting: v.orbiting, image: v.image, camera: v.camera })).filter((v) => v.lit);
+  return facts.views.map((v) => ({ ...litView(images[v.image], thresholds), orbiting: v.orbiting, image: v.image, camera: v.camera })).filter((v) => v.lit);
 }
 
 /** This module's units (audits/list.js runs them in its order). */

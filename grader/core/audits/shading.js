@@ -13,7 +13,7 @@ export const META = {
 };
 
 /** The picture at the least s against the judged one (`judged`: { img, an }; the same view). */
-export function auditLeastShininess({ facts, images, T, sayAs, numbers, imagesShown }, judged, shading) {
+export function auditLeastShininess({ facts, images, thresholds, sayAs, numbers, imagesShown }, judged, shading) {
   const say = sayAs('least-s');
   const least = facts.leastS;
   if (!least || !shading || !shading.fit) return;
@@ -21,12 +21,12 @@ export function auditLeastShininess({ facts, images, T, sayAs, numbers, imagesSh
   const { img, an } = judged;
   if (after.width !== img.width || after.height !== img.height) return;
   const fit = shading.judgedFit.tint ? shading.judgedFit.tint.plain : shading.judgedFit; // the picture's own brightness, not a de-tinted one
-  const spots = darkSpots(img, an, after, fit, T);
+  const spots = darkSpots(img, an, after, fit, thresholds);
   if (!spots) return;
   numbers.darkSpotsAtLeastS = spots;
   imagesShown.leastS = least.image;
   // the slides do not ask for s = 0: the spots are worth telling the student, as a note
-  if (spots.share >= T.darkSpotShare && spots.count >= T.darkSpotCount) {
+  if (spots.share >= thresholds.darkSpotShare && spots.count >= thresholds.darkSpotCount) {
     say('pass', `note: s = ${least.value} gives black spots inside the sphere (${fmt(100 * spots.share, 1)}% of it darker than diffuse + ambient): pow(0, 0) is undefined (black on many GPUs); guard it (e.g. cos φ > 0 ? pow(cos φ, s) : 0)`);
   } else say('pass', `s = ${least.value} leaves no dark spots inside the sphere (pow(0, 0) guarded)`);
 }
@@ -43,20 +43,20 @@ export function fragmentPow(sources) {
 }
 
 /** P5: the highlight per fragment: as smooth at a coarse level as at the finest; else pow() in the fragment shader. */
-export function auditPerFragment({ facts, images, T, must, sayAs, numbers, imagesShown }, judged, shading) {
+export function auditPerFragment({ facts, images, thresholds, must, sayAs, numbers, imagesShown }, judged, shading) {
   const say = sayAs('per-fragment');
   if (!must.has('per-fragment') || !shading || !shading.fit) return;
   const raw = facts.sources ? unnormalisedInputs(facts.sources) : [];
   if (raw.length) say('mistake', `the fragment shader takes the interpolated ${raw.join(' and ')} into dot() or reflect() without normalising ${raw.length > 1 ? 'them' : 'it'}: interpolated directions are shorter than 1 between the vertices (the slides: "most importantly, we must normalize the direction vectors in the fragment shader")`);
   const j = facts.judgedLevel;
-  const coarseAt = facts.stopped && !facts.viewMoved ? facts.ladder.findIndex((s, k) => k !== j && !s.blank && s.roundness < T.coarseRoundness && s.image) : -1;
+  const coarseAt = facts.stopped && !facts.viewMoved ? facts.ladder.findIndex((s, k) => k !== j && !s.blank && s.roundness < thresholds.coarseRoundness && s.image) : -1;
   const coarse = coarseAt >= 0 ? images[facts.ladder[coarseAt].image] : null;
   if (coarse && coarse.width === judged.img.width) {
-    const change = shadingChange(coarse, analyse(coarse, T), judged.img, judged.raw, T);
+    const change = shadingChange(coarse, analyse(coarse, thresholds), judged.img, judged.raw, thresholds);
     numbers.coarseShadingChange = change;
     imagesShown.coarse = facts.ladder[coarseAt].image;
-    const r = analyse(coarse, T).roundness;
-    if (change !== null && change <= T.phongCoarseChange) say('pass', `the shading at a coarse level (roundness ${fmt(r)}) stays as smooth as at the finest (RMS ${fmt(change, 3)}): per fragment`);
+    const r = analyse(coarse, thresholds).roundness;
+    if (change !== null && change <= thresholds.phongCoarseChange) say('pass', `the shading at a coarse level (roundness ${fmt(r)}) stays as smooth as at the finest (RMS ${fmt(change, 3)}): per fragment`);
     else say('mistake', `the highlight follows the triangles at a coarse level (RMS ${fmt(change, 3)} from the finest): shading is per vertex, not per fragment (or the normals are not re-normalised in the fragment shader)`);
   } else if (fragmentPow(facts.sources)) say('pass', `no coarse level to compare${facts.level.coarsen ? '' : ' (nothing found that coarsens)'}; the fragment shader evaluates the specular term (pow): per fragment`);
   else say('mistake', 'no coarse level to compare, and no pow() in the fragment shader: the model seems evaluated per vertex');

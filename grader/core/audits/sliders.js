@@ -17,7 +17,7 @@ export const META = {
 const SLIDERS = ['kd', 'ks', 's', 'Le', 'La'];
 
 /** The sliders tried (facts.sliders), against the judged view (`judged`: { an }) and its shading. */
-export function auditSliders({ facts, images, T, must, sayAs, rubric, part }, judged, shading) {
+export function auditSliders({ facts, images, thresholds, must, sayAs, rubric, part }, judged, shading) {
   if (!must.has('sliders')) return;
   const say = sayAs('sliders'), sayEvent = sayAs('input-event'), sayKs = sayAs('ks-used');
   const looked = (rubric.parts[part] || {}).sliders || SLIDERS;
@@ -29,7 +29,7 @@ export function auditSliders({ facts, images, T, must, sayAs, rubric, part }, ju
   const together = {}; // role → how its sliders moved together (ks r, g, b: one parameter)
   for (const s of facts.sliders) {
     const { role, target } = s;
-    const how = sliderEvent(s, T);
+    const how = sliderEvent(s, thresholds);
     if (how !== 'none' && !s.levelSlider) {
       if (role && !found[role]) found[role] = true;
       if (role && s.controls) together[role] = `${s.controls.length} sliders (${s.channels}) moved together`;
@@ -40,10 +40,10 @@ export function auditSliders({ facts, images, T, must, sayAs, rubric, part }, ju
       // the highlight left with ks at its least: above the base picture's near point-light model (its
       // 1/r² spot stays and is no highlight), or above the after picture's own directional fit
       const after = images[s.image];
-      const a = analyse(after, T);
-      const f = a.blank ? null : nearModel ? { highlightPeak: highlightAbove(perspectiveSamples(after, judged.an, T, { max: T.fitSamples }), nearModel, T) }
-        : fullFit(after, T);
-      if (f && f.highlightPeak >= baseFit.highlightPeak * T.ksLeftShare && f.highlightPeak >= T.highlightPeak) {
+      const a = analyse(after, thresholds);
+      const f = a.blank ? null : nearModel ? { highlightPeak: highlightAbove(perspectiveSamples(after, judged.an, thresholds, { max: thresholds.fitSamples }), nearModel, thresholds) }
+        : fullFit(after, thresholds);
+      if (f && f.highlightPeak >= baseFit.highlightPeak * thresholds.ksLeftShare && f.highlightPeak >= thresholds.highlightPeak) {
         sayKs('review', `ks${s.controls ? ` (its ${s.controls.length} sliders)` : ''} at ${target} leaves the highlight as it was (${fmt(f.highlightPeak)}): is ks used in the specular term?`);
       }
     }

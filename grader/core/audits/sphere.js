@@ -15,12 +15,12 @@ export const META = {
 };
 
 /** The slide's Subdivide and Coarsen buttons, as found by their effect. */
-export function auditLevelControls({ facts, T, must, sayAs }) {
+export function auditLevelControls({ facts, thresholds, must, sayAs }) {
   const say = sayAs('level-controls');
   const L = facts.level;
   if (!must.has('level-controls') || !L) return;
   const hasLevel = L.subdivide || L.slider;
-  const roles = rolesInWords(facts, T);
+  const roles = rolesInWords(facts, thresholds);
   if (hasLevel) say('pass', `has controls to subdivide (${roles.subdivide || roles.levelSlider})`);
   else if (!L.stopped) say('review', 'the level controls could not be looked for: the picture never stood still');
   else say('review', `nothing found that makes the sphere finer: ${L.trials} controls tried${L.valued ? ', sliders and menus stepped' : ''}, and the arrow, + and − keys pressed (the slide asks for Subdivide and Coarsen buttons)`);
@@ -38,19 +38,19 @@ export function auditHeavyLevel({ facts, sayAs }) {
  * A round closed sphere at the judged level (`judged`: { an, circleArc }), and rounder with each
  * level (`ladder`: each level's roundness, as climbed; `firstRoundness`: the first frame's).
  */
-export function auditSphere({ T, sayAs, numbers }, judged, ladder, firstRoundness) {
+export function auditSphere({ thresholds, sayAs, numbers }, judged, ladder, firstRoundness) {
   const say = sayAs('sphere');
   const { an, circleArc } = judged;
   Object.assign(numbers, { radius: an.radius, roundness: an.roundness, fill: an.fill, coverage: an.coverage, firstRoundness, levelsSeen: ladder.length });
   if (circleArc) say('pass', `part of the sphere is as dark as the background: its outline was fitted to the lit edge (${circleArc}° of a circle)`);
-  if (an.radius < T.minRadiusPixels) say('review', `the sphere is very small on screen (${fmt(an.radius, 0)} px radius): hard to judge`);
-  else if (an.roundness <= T.roundness && an.fill >= T.fill) {
+  if (an.radius < thresholds.minRadiusPixels) say('review', `the sphere is very small on screen (${fmt(an.radius, 0)} px radius): hard to judge`);
+  else if (an.roundness <= thresholds.roundness && an.fill >= thresholds.fill) {
     say('pass', `a round closed sphere (radius ${fmt(an.radius, 0)} px, roundness ${fmt(an.roundness, 3)})`);
   } else if (an.touches) say('review', 'the object touches the canvas edge: its silhouette cannot be judged');
   else say('mistake', `the object is not a round closed sphere (roundness ${fmt(an.roundness, 3)}, fill ${fmt(an.fill)}${ladder.length > 1 ? ', after subdividing' : ''})`);
   if (ladder.length > 2) {
     const rs = ladder.filter((r) => Number.isFinite(r));
-    if (rs[0] > rs[rs.length - 1] + T.rounderBy) say('pass', `rounder with each level (roundness ${fmt(rs[0], 3)} → ${fmt(rs[rs.length - 1], 3)})`);
+    if (rs[0] > rs[rs.length - 1] + thresholds.rounderBy) say('pass', `rounder with each level (roundness ${fmt(rs[0], 3)} → ${fmt(rs[rs.length - 1], 3)})`);
   }
 }
 
@@ -58,12 +58,12 @@ export function auditSphere({ T, sayAs, numbers }, judged, ladder, firstRoundnes
  * The judged picture (the level judged, as facts.judged names it) and its sphere's outline ({ img,
  * an, raw, circleArc }, for the units that use it), or the end of the judging where it is blank.
  */
-function judgedPicture({ facts, images, T, imagesShown }) {
+function judgedPicture({ facts, images, thresholds, imagesShown }) {
   imagesShown.judged = facts.facesImage || facts.judged;
   const img = images[facts.judged];
-  const raw = analyse(img, T);
+  const raw = analyse(img, thresholds);
   if (raw.blank) return end('the picture went blank after the controls were used', 'sphere');
-  const { an, circleArc } = sphereView(img, T);
+  const { an, circleArc } = sphereView(img, thresholds);
   return { img, an, raw, circleArc };
 }
 
@@ -72,6 +72,6 @@ export const UNITS = [
   unit(META, 'heavy-level', auditHeavyLevel),
   unit(META, 'level-controls', auditLevelControls),
   unit(META, 'judged-picture', judgedPicture, { says: ['sphere'], reads: ['facts.judged', 'facts.facesImage'] }),
-  unit(META, 'sphere', (context, results) => auditSphere(context, results['judged-picture'], context.facts.ladder.map((l) => l.roundness), analyse(context.images.first, context.T).roundness),
+  unit(META, 'sphere', (context, results) => auditSphere(context, results['judged-picture'], context.facts.ladder.map((l) => l.roundness), analyse(context.images.first, context.thresholds).roundness),
     { uses: ['judged-picture'] }),
 ];

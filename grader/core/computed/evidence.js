@@ -10,11 +10,11 @@ import { memo } from './memo.js';
  * The judged picture's analysis: `an`, with a dark unlit side on a dark background read as the
  * lit edge's circle (`circleArc`, the degrees of circle it fits) when the outline is not round.
  */
-export function sphereView(img, T) {
-  let an = analyse(img, T);
+export function sphereView(img, thresholds) {
+  let an = analyse(img, thresholds);
   let circleArc = null;
   const circ = an.circle;
-  if (!an.blank && !(an.roundness <= T.roundness && an.fill >= T.fill) && circ && circ.roundness <= T.roundness && circ.arc >= T.litEdgeArcDegrees && !an.touches) {
+  if (!an.blank && !(an.roundness <= thresholds.roundness && an.fill >= thresholds.fill) && circ && circ.roundness <= thresholds.roundness && circ.arc >= thresholds.litEdgeArcDegrees && !an.touches) {
     an = { ...an, cx: circ.cx, cy: circ.cy, radius: circ.r, roundness: circ.roundness, fill: 1 };
     circleArc = circ.arc;
   }
@@ -27,20 +27,20 @@ export function sphereView(img, T) {
  * fits clearly better (then the highlight is what rises above it, in `fit`'s highlight fields).
  * Read once for the same picture, analysis and thresholds: gathering acts on it, the audit judges it.
  */
-export const shadingOf = memo((img, an, T) => {
-  const fit = shadeFit(samples(img, an, T), T);
+export const shadingOf = memo((img, an, thresholds) => {
+  const fit = shadeFit(samples(img, an, thresholds), thresholds);
   let pointLight = null;
-  if (fit && fit.spread >= T.litSpread) {
-    pointLight = pointLightFit(perspectiveSamples(img, an, T, { max: T.fitSamples }), T, fit.light);
+  if (fit && fit.spread >= thresholds.litSpread) {
+    pointLight = pointLightFit(perspectiveSamples(img, an, thresholds, { max: thresholds.fitSamples }), thresholds, fit.light);
   }
-  const nearModel = clearlyNearFalloff(pointLight, T) ? pointLight.falloff.model : null;
+  const nearModel = clearlyNearFalloff(pointLight, thresholds) ? pointLight.falloff.model : null;
   const judgedFit = fit && nearModel ? { ...fit, highlightPeak: pointLight.falloff.highlightPeak, highlightRise: pointLight.falloff.highlightRise } : fit;
   return { fit, judgedFit, pointLight, nearModel };
 });
 
 /** The kept views' full fits (the lit views along the orbit), in the order kept. */
-export function viewFits(views, T) {
-  return views.map((v) => ({ ...v, fit: fullFit(v.img, T) }));
+export function viewFits(views, thresholds) {
+  return views.map((v) => ({ ...v, fit: fullFit(v.img, thresholds) }));
 }
 
 /**
@@ -48,10 +48,10 @@ export function viewFits(views, T) {
  * along the orbit (not with a near point light: its 1/r² spot is read against its own model).
  * { fit, where } or null.
  */
-export function highlightShown(shading, views, T) {
-  if (highlightSeen(shading.judgedFit, T)) return { fit: shading.judgedFit, where: 'the judged view' };
+export function highlightShown(shading, views, thresholds) {
+  if (highlightSeen(shading.judgedFit, thresholds)) return { fit: shading.judgedFit, where: 'the judged view' };
   if (shading.nearModel) return null;
-  const other = views.find((v) => v.fit && highlightSeen(v.fit, T));
+  const other = views.find((v) => v.fit && highlightSeen(v.fit, thresholds));
   return other ? { fit: other.fit, where: `one of ${views.length} lit views along the orbit` } : null;
 }
 
@@ -60,33 +60,33 @@ export function highlightShown(shading, views, T) {
  * highlight over a clean diffuse fit, the light farthest from the viewer; not where only a
  * broadened highlight (s lowered to 10) shows. { fit, where } or null.
  */
-export function placeView(seen, views, T) {
-  const clean = (f) => f.r2 >= T.diffuseR2;
+export function placeView(seen, views, thresholds) {
+  const clean = (f) => f.r2 >= thresholds.diffuseR2;
   let place = seen.broad ? null : seen;
   for (const v of views) {
     const f = v.fit;
-    if (f && highlightSeen(f, T) && clean(f) && (!place || !clean(place.fit) || lightAngle(f) > lightAngle(place.fit))) place = { fit: f, where: 'a lit view along the orbit' };
+    if (f && highlightSeen(f, thresholds) && clean(f) && (!place || !clean(place.fit) || lightAngle(f) > lightAngle(place.fit))) place = { fit: f, where: 'a lit view along the orbit' };
   }
   return place;
 }
 
 /** Does a picture show a highlight over its own diffuse fit? (The gatherer raising ks acts on it; the audit reads it again.) */
-export const highlightIn = (img, T) => {
-  const f = img && fullFit(img, T);
-  return !!f && highlightSeen(f, T);
+export const highlightIn = (img, thresholds) => {
+  const f = img && fullFit(img, thresholds);
+  return !!f && highlightSeen(f, thresholds);
 };
 
 /**
  * The highlight as the page's own sliders showed it once raised (`raised`: [{ role, image, broad }]
  * in the order set; each picture read again here): { fit, broad, where } or null.
  */
-export function raisedSeen(raised, images, T) {
-  const k = raised.findIndex((x) => x.image && highlightIn(images[x.image], T));
+export function raisedSeen(raised, images, thresholds) {
+  const k = raised.findIndex((x) => x.image && highlightIn(images[x.image], thresholds));
   if (k < 0) return null;
   const x = raised[k];
   const img = images[x.image];
   const set = raised.slice(0, k + 1).map((r) => r.role);
-  return { fit: fullFit(img, T), broad: x.broad,
+  return { fit: fullFit(img, thresholds), broad: x.broad,
     where: `the judged view with ${set.join(' and ')} set by the page's own slider${set.length > 1 ? 's' : ''}` };
 }
 
@@ -97,9 +97,9 @@ export function raisedSeen(raised, images, T) {
  * the light in that view is too near the viewer to tell w_h from w_i, so the place is better
  * judged farther along the orbit. { seen, place, farther }.
  */
-export function highlightEvidence(shading, views, raised, images, T) {
-  let seen = highlightShown(shading, views, T);
-  if (!seen && !shading.nearModel && raised) seen = raisedSeen(raised, images, T);
-  const place = seen && !shading.nearModel ? placeView(seen, views, T) : null;
-  return { seen, place, farther: !!place && lightAngle(place.fit) < T.highlightPlaceLightDegrees };
+export function highlightEvidence(shading, views, raised, images, thresholds) {
+  let seen = highlightShown(shading, views, thresholds);
+  if (!seen && !shading.nearModel && raised) seen = raisedSeen(raised, images, thresholds);
+  const place = seen && !shading.nearModel ? placeView(seen, views, thresholds) : null;
+  return { seen, place, farther: !!place && lightAngle(place.fit) < thresholds.highlightPlaceLightDegrees };
 }

@@ -8,15 +8,15 @@ import { surfaceFit } from '../measure/surface-fit.js';
 const pct = (x) => `${Math.round(100 * x)}%`;
 
 /** The fits on the judged picture (`judged`: { img, an }) and its surface, or null / { why }. */
-export function exactLighting(facts, images, judged, T) {
+export function exactLighting(facts, images, judged, thresholds) {
   if (!facts.surface) return null;
-  const s = surfaceOf(facts.surface, images, T);
+  const s = surfaceOf(facts.surface, images, thresholds);
   if (s.why) return { why: s.why };
   const { img, an } = judged;
   if (s.width !== img.width || s.height !== img.height) return { why: `the page's surface (${s.width}×${s.height}) is not the picture's size (${img.width}×${img.height})` };
   // the surface is the picture's: its pixels lie inside the sphere's outline (the view did not move between them)
   const inside = s.samples.filter((q) => an.mask[q.y * img.width + q.x]).length / Math.max(1, s.samples.length);
-  if (inside < T.surfaceMatch) return { why: `the page's surface, drawn again by the grader, is not its picture: ${pct(inside)} of it lies inside the picture's outline (the view moved between them, or the page draws with something the grader's copy leaves out, such as instancing or a second program's draw)` };
-  const fit = surfaceFit(s, img, T);
+  if (inside < thresholds.surfaceMatch) return { why: `the page's surface, drawn again by the grader, is not its picture: ${pct(inside)} of it lies inside the picture's outline (the view moved between them, or the page draws with something the grader's copy leaves out, such as instancing or a second program's draw)` };
+  const fit = surfaceFit(s, img, thresholds);
   return fit.why ? fit : { ...fit, camera: s.camera, normal: s.normal };
 }

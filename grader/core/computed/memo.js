@@ -1,4 +1,4 @@
-// A pure measurement of a picture, read once: f(img, T) (or f(img, an, T): its analysis too)
+// A pure measurement of a picture, read once: f(img, thresholds) (or f(img, an, thresholds): its analysis too)
 // remembered for each picture object and each object read with it (a gatherer and the audits read
 // the same picture many times). The pictures are never changed once taken, and the cache lets go
 // of a picture when nothing else holds it.

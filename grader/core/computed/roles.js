@@ -17,16 +17,16 @@ const FOUND = {
 };
 
 /** One role in words: "button "Subdivide #up" (listens: click): the silhouette got rounder", "the ArrowUp key: …". */
-function roleWords(r, facts, T) {
+function roleWords(r, facts, thresholds) {
   if (r.words) return r.words; // (a role kept as a sentence only: core/artifact-schema.js)
   const slider = r.found === 'shading' ? (facts.sliders || []).find((s) => s.control === r.control) : null;
-  const found = FOUND[r.found](r, slider ? sliderEvent(slider, T) : null);
+  const found = FOUND[r.found](r, slider ? sliderEvent(slider, thresholds) : null);
   if (r.key) return `the ${r.key} key: ${found}`;
   const listens = r.listens && r.listens.length ? ` (listens: ${r.listens.join(', ')})` : '';
   return `${r.what}${listens}: ${found}`;
 }
 
 /** facts.roles in words: { role: sentence }, in the order the roles were given. */
-export function rolesInWords(facts, T) {
-  return Object.fromEntries(Object.entries(facts.roles || {}).map(([role, r]) => [role, roleWords(r, facts, T)]));
+export function rolesInWords(facts, thresholds) {
+  return Object.fromEntries(Object.entries(facts.roles || {}).map(([role, r]) => [role, roleWords(r, facts, thresholds)]));
 }

@@ -10,12 +10,12 @@
  * The change event was tried only where the input event showed nothing to the gathering's
  * sliderChange: under a rubric that asks more, it is not known (the part is named to gather again).
  */
-export function sliderEvent(s, T) {
+export function sliderEvent(s, thresholds) {
   if (s.moving && s.sent) {
     if (s.sent.input.length > 0) return 'input';
     return s.sent.change && s.sent.change.length > 0 ? 'change' : 'none';
   }
   if (!s.changed) return s.how;
-  if (s.changed.input > T.sliderChange) return 'input';
-  return s.changed.change !== null && s.changed.change > T.sliderChange ? 'change' : 'none';
+  if (s.changed.input > thresholds.sliderChange) return 'input';
+  return s.changed.change !== null && s.changed.change > thresholds.sliderChange ? 'change' : 'none';
 }

@@ -49,7 +49,7 @@ export function cameraOfClip(A) {
  * pixel it covers (about the rubric's surfacePixels), or { why }. n is the normal attribute, else the position, as the
  * page interpolated it, normalised; w_o points from the position to the camera.
  */
-export function surfaceOf(surface, images, T) {
+export function surfaceOf(surface, images, thresholds) {
   if (!surface || surface.why) return { why: surface ? surface.why : 'the surface was not read' };
   const nImg = images[surface.normals], pImg = images[surface.points];
   if (!nImg || !pImg) return { why: 'the surface\'s pictures are missing from the artifact' };
@@ -58,7 +58,7 @@ export function surfaceOf(surface, images, T) {
   const camera = cameraOfClip(clip);
   if (!camera.back) return { why: 'the camera could not be found from the page\'s matrices' };
   const { width, height } = surface, [lo, hi] = surface.box;
-  const step = Math.max(1, Math.floor(Math.sqrt((surface.covered || width * height) / T.surfacePixels)));
+  const step = Math.max(1, Math.floor(Math.sqrt((surface.covered || width * height) / thresholds.surfacePixels)));
   const samples = [];
   for (let y = 0; y < height; y += step) {
     for (let x = 0; x < width; x += step) {

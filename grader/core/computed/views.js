@@ -9,19 +9,19 @@ import { memo } from './memo.js';
  * spreads brightness little over the disc (n·w_i from 0.5 to 1 in the samples): a clean fit with
  * a clear diffuse term is lit too. A silhouette too coarse to read shading from is never lit.
  */
-export const litView = memo((img, T) => {
-  const an = analyse(img, T);
+export const litView = memo((img, thresholds) => {
+  const an = analyse(img, thresholds);
   if (an.blank) return { an, fit: null, lit: false };
-  const fit = shadeFit(samples(img, an, T, { max: T.fitSamples }), T);
-  const lit = !!fit && an.roundness < T.orbitCoarseRoundness && (fit.spread >= T.clearlyLitSpread ||
-    (fit.spread >= T.evenSpread && fit.r2 >= T.diffuseR2 && fit.diffuse >= T.diffuseMin));
+  const fit = shadeFit(samples(img, an, thresholds, { max: thresholds.fitSamples }), thresholds);
+  const lit = !!fit && an.roundness < thresholds.orbitCoarseRoundness && (fit.spread >= thresholds.clearlyLitSpread ||
+    (fit.spread >= thresholds.evenSpread && fit.r2 >= thresholds.diffuseR2 && fit.diffuse >= thresholds.diffuseMin));
   return { an, fit, lit };
 });
 
 /** A picture's diffuse fit over all its samples. */
-export const fullFit = memo((img, T) => {
-  const an = analyse(img, T);
-  return an.blank ? null : shadeFit(samples(img, an, T), T);
+export const fullFit = memo((img, thresholds) => {
+  const an = analyse(img, thresholds);
+  return an.blank ? null : shadeFit(samples(img, an, thresholds), thresholds);
 });
 
 /** The light's angle from the viewer (+z), in degrees. */

@@ -11,7 +11,7 @@ import { readCamera, orbitSampleFrames } from './orbit.js';
 
 /** Looks at the sphere all round its orbit where its mesh cannot be read: sets facts.allRound. */
 export async function lookAllRound(session) {
-  const { T, facts, orbit } = session;
+  const { thresholds, facts, orbit } = session;
   const g = facts.geometry;
   if (!g || !g.why || !orbit) return;
   const stopped = !session.moving;
@@ -23,19 +23,19 @@ export async function lookAllRound(session) {
   let last = session.camera, turned = last ? 0 : null, gap = null;
   // frames a step: at most an orbit sample's (orbit.js), at least one
   const most = () => Math.max(1, orbitSampleFrames(session));
-  let frames = T.roundFirstFrames;
-  for (let k = 0; k < T.roundSamples && !(turned >= 360); k++) {
-    await session.tick((1000 * frames) / T.framesPerSecond, frames);
+  let frames = thresholds.roundFirstFrames;
+  for (let k = 0; k < thresholds.roundSamples && !(turned >= 360); k++) {
+    await session.tick((1000 * frames) / thresholds.framesPerSecond, frames);
     const sh = await session.shot();
     await readCamera(session);
-    const step = turned !== null ? cameraTurn([last, session.camera], T.cameraRotationTolerance) : null;
+    const step = turned !== null ? cameraTurn([last, session.camera], thresholds.cameraRotationTolerance) : null;
     turned = step !== null ? turned + step : null;
     last = session.camera;
     // the next step's frames: sized to turn about roundStepDegrees where this one's turn is read, else doubled
-    frames = Math.max(1, Math.min(most(), step > 0 ? Math.round((frames * T.roundStepDegrees) / step) : 2 * frames));
+    frames = Math.max(1, Math.min(most(), step > 0 ? Math.round((frames * thresholds.roundStepDegrees) / step) : 2 * frames));
     const an = sh ? sh.an : { blank: true };
     views.push(an.blank ? { blank: true } : { roundness: an.roundness, fill: an.fill, ...(turned !== null ? { turned } : {}) });
-    if (!gap && !an.blank && an.roundness <= T.roundness && an.fill < T.fill) gap = session.keep('all-round-gap', sh.img);
+    if (!gap && !an.blank && an.roundness <= thresholds.roundness && an.fill < thresholds.fill) gap = session.keep('all-round-gap', sh.img);
   }
   facts.allRound = { views, turned, gap, why: g.why };
   session.act(`looked at ${views.length} positions along the orbit${turned !== null ? ` (the camera turned ${Math.round(turned)}°)` : ''}`);

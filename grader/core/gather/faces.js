@@ -12,10 +12,10 @@ import { free } from './params.js';
  * meanwhile: none, and the picture tells nothing).
  */
 export async function probeFaces(session, controls, judged) {
-  const { T, facts } = session;
+  const { thresholds, facts } = session;
   let { img, an } = judged;
-  let nc = normalColours(samples(img, an, T), T);
-  if (nc && !facesViewer(nc, T)) {
+  let nc = normalColours(samples(img, an, thresholds), thresholds);
+  if (nc && !facesViewer(nc, thresholds)) {
     for (const [r, want] of [['depth', true], ['cull', true], ['clockwise', false]]) {
       const c = free(session, controls, r);
       if (!c || (c.type === 'checkbox' && c.checked === want)) continue;
@@ -24,22 +24,22 @@ export async function probeFaces(session, controls, judged) {
       if (!s || s.an.blank) break;
       ({ img, an } = s);
       facts.facesImage = session.keep('faces', img);
-      nc = normalColours(samples(img, an, T), T);
-      if (facesViewer(nc, T)) break;
+      nc = normalColours(samples(img, an, thresholds), thresholds);
+      if (facesViewer(nc, thresholds)) break;
     }
   }
-  if (nc && nc.det < 0 && nc.residual <= T.facingResidual && facts.api !== 'webgpu') {
+  if (nc && nc.det < 0 && nc.residual <= thresholds.facingResidual && facts.api !== 'webgpu') {
     const faces = (await session.page.state()).faces || {};
     facts.noCull = { faces };
     if (faces.depthTest && faces.culling) {
       const before = (await session.page.state()).draws;
       await session.page.setNoCull(true);
-      await session.tick(session.T.actionTickMs);
+      await session.tick(session.thresholds.actionTickMs);
       const s = await session.shot();
       // a page that draws only when a control asks drew nothing here: its picture tells nothing
       facts.noCull.draws = (await session.page.state()).draws - before;
       await session.page.setNoCull(false);
-      await session.tick(session.T.actionTickMs);
+      await session.tick(session.thresholds.actionTickMs);
       if (s) facts.noCull.image = session.keep('no-cull', s.img);
     }
   }

@@ -8,7 +8,7 @@ import { clipMatrix } from '../computed/surface.js';
 export async function readGeometry(session) {
   if (!session.page.geometry) return null;
   session.outOfTime();
-  return session.page.geometry({ maxTriangles: session.T.geometrySampleTriangles, maxEdgeTriangles: session.T.geometryEdgeTriangles });
+  return session.page.geometry({ maxTriangles: session.thresholds.geometrySampleTriangles, maxEdgeTriangles: session.thresholds.geometryEdgeTriangles });
 }
 
 /** What the page last sent for its shaders ({ key: digest }: grader/browser/sent.js); null where not recorded. */
@@ -26,7 +26,7 @@ export async function readSent(session) {
 export async function readSurface(session) {
   if (!session.page.surface) return null;
   session.outOfTime();
-  const r = await session.page.surface({ fitSamples: session.T.surfaceFitSamples });
+  const r = await session.page.surface({ fitSamples: session.thresholds.surfaceFitSamples });
   if (!r || r.why) return { why: r ? r.why : 'the surface was not read' };
   const { normals, points, fit, ...facts } = r;
   // where the page's matrices put its positions: P·V·M, solved from the fit's samples (16 numbers kept, not the samples)

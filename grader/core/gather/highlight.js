@@ -13,10 +13,10 @@ import { groupsOf, setGroup, greatest, groupFacts } from './params.js';
  * down to 10 (a broad highlight). facts.raised: [{ role, control, value, image, seen }].
  */
 export async function raiseHighlight(session, controls) {
-  const { T } = session;
+  const { thresholds } = session;
   const set = [];
   // s raised to raisedShininess, within the slider's range
-  const s10 = (c) => Math.max(Number(c.min || 0) + 1, Math.min(T.raisedShininess, Number(c.max || T.raisedShininess)));
+  const s10 = (c) => Math.max(Number(c.min || 0) + 1, Math.min(thresholds.raisedShininess, Number(c.max || thresholds.raisedShininess)));
   const raised = session.facts.raised = [];
   const groups = groupsOf(session, controls).filter((g) => g.controls.every((c) => c.type === 'range' || c.type === 'number' || (g.role === 'ks' && c.type === 'color')));
   for (const [r, to] of [['ks', (c) => (c.type === 'color' ? greatest(c) : Number(c.max === '' || c.max === undefined ? 1 : c.max))], ['s', s10]]) {
@@ -25,14 +25,14 @@ export async function raiseHighlight(session, controls) {
     const c = g.controls[0];
     const vs = await setGroup(session, g, to);
     set.push(g);
-    await session.tick(session.T.actionTickMs);
+    await session.tick(session.thresholds.actionTickMs);
     const sh = await session.shot();
-    const seen = !!sh && highlightIn(sh.img, T);
+    const seen = !!sh && highlightIn(sh.img, thresholds);
     raised.push({ role: r, ...groupFacts(g, vs), value: vs[0], broad: r === 's' && s10(c) < Number(session.now(c)), image: sh ? session.keep(`raised-${r}`, sh.img) : null, seen });
     session.act(`set ${describeGroup(g)} to ${vs[0]} to look for a highlight${seen ? ': one shows' : ''}`);
   }
   for (const g of set) await setGroup(session, g, (c) => session.now(c));
-  if (set.length) await session.tick(session.T.actionTickMs);
+  if (set.length) await session.tick(session.thresholds.actionTickMs);
 }
 
 /**
@@ -41,7 +41,7 @@ export async function raiseHighlight(session, controls) {
  * highlight over a clean diffuse fit, or orbitSamples positions; then off again.
  */
 export async function placeFarther(session, controls) {
-  const { T, orbit, facts } = session;
+  const { thresholds, orbit, facts } = session;
   session.step('looking along the orbit for a view with the light away from the viewer');
   const raised = (facts.raised || []).some((x) => x.seen) ? facts.raised : []; // the sliders as they showed the highlight
   const byIndex = (i) => controls.find((c) => c.index === i);
@@ -55,13 +55,13 @@ export async function placeFarther(session, controls) {
   let far = { img: null, k: 0 };
   if (await session.tryClick(orbit.start, 'the orbit control', { watchMotion: true }) === 'starts') {
     far = await searchOrbit(session, (img, an) => {
-      if (an.blank || an.roundness >= T.orbitCoarseRoundness) return false;
-      const f = fullFit(img, T); // (the fit the highlight's place is judged on: audits/highlight.js)
-      return !!f && f.r2 >= T.diffuseR2 && highlightSeen(f, T) && lightAngle(f) >= T.highlightPlaceLightDegrees;
+      if (an.blank || an.roundness >= thresholds.orbitCoarseRoundness) return false;
+      const f = fullFit(img, thresholds); // (the fit the highlight's place is judged on: audits/highlight.js)
+      return !!f && f.r2 >= thresholds.diffuseR2 && highlightSeen(f, thresholds) && lightAngle(f) >= thresholds.highlightPlaceLightDegrees;
     });
     await session.tryClick(orbit.stop, 'the orbit control again', { watchMotion: true });
   }
   await each((x, k, c) => session.now(c));
-  session.act(`sampled the orbit at ${far.k} positions for a view with the light ${T.highlightPlaceLightDegrees}° or more from the viewer${raised.length ? `, ${raised.map((x) => `${x.role} at ${x.value}`).join(' and ')}` : ''}: ${far.img ? 'one shows the highlight' : 'none shows the highlight over a clean diffuse fit'}`);
+  session.act(`sampled the orbit at ${far.k} positions for a view with the light ${thresholds.highlightPlaceLightDegrees}° or more from the viewer${raised.length ? `, ${raised.map((x) => `${x.role} at ${x.value}`).join(' and ')}` : ''}: ${far.img ? 'one shows the highlight' : 'none shows the highlight over a clean diffuse fit'}`);
   facts.placeFarther = { image: far.img ? session.keep('highlight-place', far.img) : null };
 }

@@ -61,17 +61,17 @@ async function gather(session) {
  * picture `first`; returns the first shot ({ img, an }) or null (no canvas).
  */
 async function firstFrame(session) {
-  const { page, T, facts, must } = session;
+  const { page, thresholds, facts, must } = session;
   session.step(FIRST_FRAME);
   await session.settle();
-  await session.tick(T.firstTickMs, 1);
-  for (let k = 0; k < T.firstFrameTicks; k++) {
+  await session.tick(thresholds.firstTickMs, 1);
+  for (let k = 0; k < thresholds.firstFrameTicks; k++) {
     const s = await session.settle();
     if (s.draws > 0 && (s.api !== 'webgpu' || s.frames > 0)) break;
-    if (s.adapter === null || s.shaderErrors.length || (!s.api && k >= T.noContextTicks)) break;
+    if (s.adapter === null || s.shaderErrors.length || (!s.api && k >= thresholds.noContextTicks)) break;
     // it threw or alerted: no need to wait longer
-    if (k >= T.errorTicks && page.errors().some((e) => /^(page error|dialog)/.test(e))) break;
-    await session.tick(T.frameMs);
+    if (k >= thresholds.errorTicks && page.errors().some((e) => /^(page error|dialog)/.test(e))) break;
+    await session.tick(thresholds.frameMs);
   }
   const g = await page.state();
   facts.api = g.api;
@@ -83,9 +83,9 @@ async function firstFrame(session) {
   // same colour, say) has its chance: a counted number of frames more, then the picture it shows then is its first
   if (firstShot.an.blank && g.draws > 0 && !g.shaderErrors.length && !g.gpuErrors.length) {
     session.step('waiting for a visible frame');
-    await session.tick(T.blankWaitFrames * T.frameMs, T.blankWaitFrames);
+    await session.tick(thresholds.blankWaitFrames * thresholds.frameMs, thresholds.blankWaitFrames);
     const later = await session.shot();
-    facts.first.waited = T.blankWaitFrames;
+    facts.first.waited = thresholds.blankWaitFrames;
     if (later) firstShot = later;
     // a lit step may face its unlit side to the camera until its orbit is started
     const started = firstShot.an.blank && must.has('diffuse') ? await startOrbitToSee(session) : null;
@@ -154,21 +154,21 @@ async function orbitAndLevel(session, controls) {
 
 /** What the step asks to be tried on the judged picture `img`: the faces, the shading made readable, the highlight, the sliders, s at its least, the highlight's place, the view all round. */
 async function whatTheStepAsks(session, controls, img) {
-  const { page, T, facts, must, orbit } = session;
+  const { page, thresholds, facts, must, orbit } = session;
   const stopped = facts.stopped;
-  const { an } = sphereView(img, T);
+  const { an } = sphereView(img, thresholds);
   if (must.has('front-faces')) await probeFaces(session, controls, { img, an });
   if (must.has('depth-culling')) await probeDepthCulling(session, controls);
   // a picture that clips to white over much of the sphere: read with the page's own kd, Le, La
   // lowered; one too dim to show its shading, with the page's own Le (else kd) raised
   const shaded = must.has('diffuse') || must.has('highlight');
   const shadeImg = (shaded && (await unclip(session, controls, img, an) || await brighten(session, controls, img, an))) || img;
-  const shading = shaded ? shadingOf(shadeImg, an, T) : null;
+  const shading = shaded ? shadingOf(shadeImg, an, thresholds) : null;
   let placeLater = false;
   if (must.has('highlight') && shading.fit) {
-    const views = viewFits(facts.views.map((v) => ({ img: session.images[v.image] })), T);
-    if (!highlightEvidence(shading, views, null, session.images, T).seen && !shading.nearModel) await raiseHighlight(session, controls);
-    placeLater = highlightEvidence(shading, views, facts.raised, session.images, T).farther && !!orbit.start && !!orbit.stop && stopped;
+    const views = viewFits(facts.views.map((v) => ({ img: session.images[v.image] })), thresholds);
+    if (!highlightEvidence(shading, views, null, session.images, thresholds).seen && !shading.nearModel) await raiseHighlight(session, controls);
+    placeLater = highlightEvidence(shading, views, facts.raised, session.images, thresholds).farther && !!orbit.start && !!orbit.stop && stopped;
   }
   if (must.has('sliders')) await trySliders(session, controls);
   if (must.has('highlight') && shading.fit && stopped) await leastShininess(session, controls);
@@ -188,8 +188,8 @@ async function compareShown(session, at) {
   if (!session.page.shown) return;
   session.outOfTime();
   const two = await session.page.shown();
-  const d = shownDifference(two, session.T);
-  if (d.compared && d.share > session.T.shownDifferShare) d.image = session.keep(`shown-${at}`, two.shown);
+  const d = shownDifference(two, session.thresholds);
+  if (d.compared && d.share > session.thresholds.shownDifferShare) d.image = session.keep(`shown-${at}`, two.shown);
   (session.facts.shown || (session.facts.shown = [])).push({ at, ...d });
 }
 

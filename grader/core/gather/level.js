@@ -12,12 +12,12 @@ const LEVEL_KEYS = [['ArrowUp', 'ArrowDown'], ['+', '-'], ['ArrowRight', 'ArrowL
 
 /** Buttons (named for the level first); a button that did nothing at the top or bottom level is tried again once the level moved. */
 async function levelButtons(session, clickables, levelBy) {
-  const { T, P } = session;
+  const { thresholds, P } = session;
   const clickLevel = (c) => () => session.press(c, 'a control');
   const idle = [];
   for (const c of trialOrder(clickables, 'subdivide', P, session.taken).filter((x) => x.type !== 'checkbox')) {
     if (levelBy.subdivide && levelBy.coarsen) break;
-    if (session.trialsMade >= T.maxControlTrials && !named(c, 'subdivide', P) && !named(c, 'coarsen', P)) break;
+    if (session.trialsMade >= thresholds.maxControlTrials && !named(c, 'subdivide', P) && !named(c, 'coarsen', P)) break;
     let effect = session.effects.get(c.index);
     if (effect === undefined || effect === 'none') {
       session.trialsMade++;
@@ -25,12 +25,12 @@ async function levelButtons(session, clickables, levelBy) {
       effect = await session.tryClick(c, 'a control', { watchMotion: !session.R.orbit && session.must.has('diffuse') });
       // a page that starts as round as pixels allow shows one level's change nowhere on the
       // outline: a few more clicks of a button that may be a level control, against the picture before
-      for (let k = 0; k < T.levelClicksAgain && (effect === 'shading' || effect === 'none') && [null, 'subdivide', 'coarsen'].includes(nameRole(c, P)); k++) {
+      for (let k = 0; k < thresholds.levelClicksAgain && (effect === 'shading' || effect === 'none') && [null, 'subdivide', 'coarsen'].includes(nameRole(c, P)); k++) {
         if (!await session.press(c, 'again')) break;
         const now = await session.shot();
         if (!now) break;
         session.cur = now;
-        effect = effectOf({ before: base, after: now, later: now, wasMoving: false }, T);
+        effect = effectOf({ before: base, after: now, later: now, wasMoving: false }, thresholds);
         session.act(`  → ${effectWords[effect]} (against the picture before the first click)`);
       }
       session.effects.set(c.index, effect);
@@ -61,16 +61,16 @@ async function levelSliderByEffect(session, valued) {
     session.trialsMade++;
     // to its least, then one up: a level control makes the silhouette rounder
     await session.page.setValue(c, values[0], ['input', 'change']);
-    await session.tick(session.T.actionTickMs);
+    await session.tick(session.thresholds.actionTickMs);
     session.cur = await session.shot();
-    const effect = await session.trial(async () => { await session.page.setValue(c, values[1], ['input', 'change']); await session.tick(session.T.actionTickMs); return true; }, { watchMotion: false });
+    const effect = await session.trial(async () => { await session.page.setValue(c, values[1], ['input', 'change']); await session.tick(session.thresholds.actionTickMs); return true; }, { watchMotion: false });
     session.act(`set ${describe(c)} from ${values[0]} to ${values[1]} → ${effectWords[effect]}`);
     if (effect === 'finer') {
       session.assign('levelSlider', c, 'rounder-up');
       return c;
     }
     await session.page.setValue(c, c.value, ['input', 'change']); // not the level: back where it was
-    await session.tick(session.T.actionTickMs);
+    await session.tick(session.thresholds.actionTickMs);
     session.cur = await session.shot();
   }
   return null;
@@ -79,7 +79,7 @@ async function levelSliderByEffect(session, valued) {
 /** Keys: when nothing on the page changes the level, the arrow keys or + and − may. */
 async function levelKeys(session, levelBy) {
   for (const [up, down] of LEVEL_KEYS) {
-    const key = (k) => async () => { await session.page.press(k); session.act(`pressed ${k}`); await session.tick(session.T.actionTickMs); return true; };
+    const key = (k) => async () => { await session.page.press(k); session.act(`pressed ${k}`); await session.tick(session.thresholds.actionTickMs); return true; };
     const e1 = await session.trial(key(up), { watchMotion: false });
     session.act(`  → ${effectWords[e1]}`);
     const e2 = e1 === 'finer' || e1 === 'none' ? await session.trial(key(down), { watchMotion: false }) : 'none';
@@ -133,7 +133,7 @@ export async function findLevel(session, controls) {
  * settles or is as round as pixels allow. Each level's picture is kept (level-k) with its work a frame.
  */
 export async function climb(session) {
-  const { T, level: levelBy } = session;
+  const { thresholds, level: levelBy } = session;
   session.step('subdividing until the sphere is round');
   const ladder = [session.cur];
   let last = session.cur;
@@ -149,39 +149,39 @@ export async function climb(session) {
       if (isDone) break;
       // a level whose frame is heavy work ends the climb once the sphere is nearly round: the next
       // has four times the triangles, and a click cannot be stopped once it runs
-      if (up && session.frameWork >= T.heavyLevelWork && !s.an.blank && s.an.roundness <= T.roundEnoughWhenHeavy) {
+      if (up && session.frameWork >= thresholds.heavyLevelWork && !s.an.blank && s.an.roundness <= thresholds.roundEnoughWhenHeavy) {
         session.facts.heavyLevel = Math.round(session.frameWork);
         break;
       }
     }
     return got;
   };
-  const same = (a, b) => pictureChange(a.img, b.img, T) <= T.pictureChanged;
+  const same = (a, b) => pictureChange(a.img, b.img, thresholds) <= thresholds.pictureChanged;
   // settled: the silhouette no longer changes, or it is as round as pixels allow (a teacher stops there too)
-  const settledSilhouette = (a, b) => silhouetteChange(a.an, b.an) <= T.silhouetteSettled || (!b.an.blank && b.an.roundness <= T.roundEnough);
+  const settledSilhouette = (a, b) => silhouetteChange(a.an, b.an) <= thresholds.silhouetteSettled || (!b.an.blank && b.an.roundness <= thresholds.roundEnough);
   let coarsened = false;
   // (down first only where a coarse level is judged: P5's highlight per fragment)
   if (levelBy.coarsen && !session.moving && session.must.has('per-fragment')) {
-    const down = await step(levelBy.coarsen, T.maxCoarsenings, (a, b) => same(a, b) || b.an.blank || b.an.roundness > 2 * T.coarseRoundness);
+    const down = await step(levelBy.coarsen, thresholds.maxCoarsenings, (a, b) => same(a, b) || b.an.blank || b.an.roundness > 2 * thresholds.coarseRoundness);
     if (down.length) ladder[0] = down[down.length - 1];
     coarsened = down.length > 0;
   }
   if (levelBy.subdivide) {
-    ladder.push(...await step(levelBy.subdivide, T.maxSubdivisions + (coarsened ? T.maxCoarsenings : 0), settledSilhouette, true));
+    ladder.push(...await step(levelBy.subdivide, thresholds.maxSubdivisions + (coarsened ? thresholds.maxCoarsenings : 0), settledSilhouette, true));
   } else if (session.levelSlider) {
     // a level slider or <select> (which may start at level 0): stepped from its least up, as
     // Subdivide is clicked, until the silhouette settles (at most maxSubdivisions steps)
     const c = session.levelSlider;
     const values = [];
-    if (c.type === 'select') values.push(...(c.options || []).slice(0, T.maxSubdivisions + 1));
+    if (c.type === 'select') values.push(...(c.options || []).slice(0, thresholds.maxSubdivisions + 1));
     else {
-      const lo = Number(c.min || 0), hi = Math.min(c.max === '' || c.max === undefined ? 8 : Number(c.max), lo + T.maxSubdivisions);
+      const lo = Number(c.min || 0), hi = Math.min(c.max === '' || c.max === undefined ? 8 : Number(c.max), lo + thresholds.maxSubdivisions);
       for (let v = lo; v <= hi; v++) values.push(v);
     }
     ladder.length = 0;
     for (const v of values) {
       await session.page.setValue(c, v, ['input', 'change']);
-      await session.tick(session.T.actionTickMs);
+      await session.tick(session.thresholds.actionTickMs);
       const s = await session.shot();
       const settled = ladder.length && settledSilhouette(ladder[ladder.length - 1], s);
       ladder.push(s);

@@ -11,7 +11,7 @@ import { fmt } from '../format.js';
 
 /** Is `img` a lit view? Lit views are kept (`orbiting`: seen while the camera orbits). */
 export function look(session, img, { orbiting = true, keep = true } = {}) {
-  const { lit } = litView(img, session.T);
+  const { lit } = litView(img, session.thresholds);
   if (lit && keep) session.facts.views.push({ image: session.keep(`view-${session.facts.views.length}`, img), orbiting, ...(orbiting && session.camera ? { camera: session.camera } : {}) });
   return lit;
 }
@@ -23,17 +23,17 @@ export async function readCamera(session) {
 
 /** Has the camera turned, over the orbiting views kept, less than it takes to tell where the light is? (unknown: no) */
 function turnedTooLittle(session) {
-  const turn = cameraTurn(session.facts.views.filter((v) => v.orbiting).map((v) => v.camera), session.T.cameraRotationTolerance);
-  return turn !== null && turn < session.T.cameraTurnDegrees;
+  const turn = cameraTurn(session.facts.views.filter((v) => v.orbiting).map((v) => v.camera), session.thresholds.cameraRotationTolerance);
+  return turn !== null && turn < session.thresholds.cameraTurnDegrees;
 }
 
 /** The most frames an orbit sample runs: orbitSampleSeconds of frames, as many as orbitSampleWork affords a page of this cost. */
-export const orbitSampleFrames = (session) => Math.min(Math.round(session.T.framesPerSecond * session.T.orbitSampleSeconds), Math.floor(session.T.orbitSampleWork / Math.max(1, session.frameWork)));
+export const orbitSampleFrames = (session) => Math.min(Math.round(session.thresholds.framesPerSecond * session.thresholds.orbitSampleSeconds), Math.floor(session.thresholds.orbitSampleWork / Math.max(1, session.frameWork)));
 
 // the k-th orbit sample's frames: many pages turn the camera a fixed step a frame, so each sample
 // runs more frames as the search goes on, up to orbitSampleFrames
 export const tickOrbit = async (session, k) => {
-  await session.tick(session.T.orbitSampleSeconds * 1000, Math.max(session.T.orbitSampleLeastFrames, Math.min(session.T.orbitSampleFirstFrames << k, orbitSampleFrames(session))));
+  await session.tick(session.thresholds.orbitSampleSeconds * 1000, Math.max(session.thresholds.orbitSampleLeastFrames, Math.min(session.thresholds.orbitSampleFirstFrames << k, orbitSampleFrames(session))));
   await readCamera(session);
 };
 
@@ -43,8 +43,8 @@ export const tickOrbit = async (session, k) => {
  * once the sphere is round, after the level ladder (`afterLadder`).
  */
 export async function sampleOrbit(session, afterLadder = false) {
-  const { T, orbit } = session;
-  if (!afterLadder && session.cur.an.roundness >= T.orbitCoarseRoundness) {
+  const { thresholds, orbit } = session;
+  if (!afterLadder && session.cur.an.roundness >= thresholds.orbitCoarseRoundness) {
     orbit.later = true;
     return;
   }
@@ -54,22 +54,22 @@ export async function sampleOrbit(session, afterLadder = false) {
   // a lit view and two samples at least; where the page sends its view matrix, until the camera has
   // turned cameraTurnDegrees over the lit views (a slow orbit: a light that moves with the camera
   // and one that stays in the world look alike over a small turn)
-  for (; k < T.orbitSamples && (!look(session, img) || k < T.orbitLeastSamples || turnedTooLittle(session)); k++) {
+  for (; k < thresholds.orbitSamples && (!look(session, img) || k < thresholds.orbitLeastSamples || turnedTooLittle(session)); k++) {
     await tickOrbit(session, k);
     img = await session.page.snap();
   }
-  session.cur = { img, an: analyse(img, T) };
-  session.act(`sampled the orbit at ${k} positions ${fmt(T.orbitSampleSeconds, 1)} s apart (${session.facts.views.filter((v) => v.orbiting).length} lit)`);
+  session.cur = { img, an: analyse(img, thresholds) };
+  session.act(`sampled the orbit at ${k} positions ${fmt(thresholds.orbitSampleSeconds, 1)} s apart (${session.facts.views.filter((v) => v.orbiting).length} lit)`);
 }
 
 /** Looks along the orbit for a view `good(img, an)` accepts: { img, k } or null, after at most orbitSamples positions. */
 export async function searchOrbit(session, good) {
-  for (let k = 0; k < session.T.orbitSamples; k++) {
+  for (let k = 0; k < session.thresholds.orbitSamples; k++) {
     await tickOrbit(session, k);
     const sh = await session.shot();
     if (sh && good(sh.img, sh.an)) return { img: sh.img, k: k + 1 };
   }
-  return { img: null, k: session.T.orbitSamples };
+  return { img: null, k: session.thresholds.orbitSamples };
 }
 
 /**
@@ -78,7 +78,7 @@ export async function searchOrbit(session, good) {
  * what stops it again. Sets session.orbit: { movedAtFirst, toggles, start, stop, later }.
  */
 export async function findOrbit(session, controls) {
-  const { facts, T, P } = session;
+  const { facts, thresholds, P } = session;
   const orbit = session.orbit = { movedAtFirst: false, toggles: false, start: null, stop: null, later: false };
   const clickables = controls.filter(isClickable);
   const shaded = session.must.has('diffuse');
@@ -96,7 +96,7 @@ export async function findOrbit(session, controls) {
     if (shaded) await sampleOrbit(session);
     // the control that stops it: named for the orbit first, then the others
     session.step('looking for the control that stops the orbit');
-    for (const c of trialOrder(clickables, 'orbit', P, session.taken).slice(0, T.maxControlTrials)) {
+    for (const c of trialOrder(clickables, 'orbit', P, session.taken).slice(0, thresholds.maxControlTrials)) {
       session.trialsMade++;
       if (await session.tryClick(c, 'a control', { watchMotion: true }) === 'stops') {
         session.assign('orbit', c, 'stopped');
@@ -136,16 +136,16 @@ export async function findOrbit(session, controls) {
  * orbit is then found moving), or null.
  */
 export async function startOrbitToSee(session) {
-  const { T, P } = session;
+  const { thresholds, P } = session;
   session.step('starting the orbit to see the lit side');
   const clickables = (await session.page.controls()).filter(isClickable);
-  for (const c of trialOrder(clickables, 'orbit', P, session.taken).filter((x) => named(x, 'orbit', P)).slice(0, T.maxControlTrials)) {
+  for (const c of trialOrder(clickables, 'orbit', P, session.taken).filter((x) => named(x, 'orbit', P)).slice(0, thresholds.maxControlTrials)) {
     session.trialsMade++;
     if (!await session.press(c, 'a control named for the orbit, to see the lit side,')) continue;
-    const seen = await searchOrbit(session, (img) => litView(img, T).lit);
+    const seen = await searchOrbit(session, (img) => litView(img, thresholds).lit);
     if (seen.img) {
       session.act(`  → a lit view after ${seen.k} orbit positions`);
-      return { shot: { img: seen.img, an: analyse(seen.img, T) }, control: describe(c) };
+      return { shot: { img: seen.img, an: analyse(seen.img, thresholds) }, control: describe(c) };
     }
     session.act(`  → no lit view in ${seen.k} orbit positions`);
     await session.press(c, 'the same control again');

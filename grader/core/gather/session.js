@@ -38,14 +38,14 @@ export const effectWords = {
 export function openSession(page, { part, rubric, progress = () => {}, deadline = Infinity }) {
   // every threshold and control pattern the gathering reads, with its value (reads.js)
   const gatheredWith = { [`parts.${part}.must`]: (rubric.parts[part] || {}).must };
-  const T = recording(rubric.thresholds, gatheredWith);
+  const thresholds = recording(rubric.thresholds, gatheredWith);
   const facts = {
     part, api: null, canvas: null, tooSlow: null,
     actions: [], roles: {}, controls: [], trials: [], views: [], ladder: [], sliders: [],
     work: { frames: 0, draws: 0, vertices: 0 }, gatheredWith,
   };
   const session = {
-    page, rubric, T, P: recording(rubric.controls, gatheredWith, 'controls.'), part, facts,
+    page, rubric, thresholds, P: recording(rubric.controls, gatheredWith, 'controls.'), part, facts,
     must: new Set((rubric.parts[part] || {}).must || []),
     images: {}, // name → { width, height, data }
     cur: null, // the picture as it is now: { img, an }
@@ -76,13 +76,13 @@ export function openSession(page, { part, rubric, progress = () => {}, deadline 
       session.outOfTime();
       const s = await page.tick(ms, frames); // (the state the frames left)
       const w = facts.work;
-      session.frameWork = ((s.vertices - w.vertices) + T.drawCallWork * (s.draws - w.draws)) / (frames + 1);
+      session.frameWork = ((s.vertices - w.vertices) + thresholds.drawCallWork * (s.draws - w.draws)) / (frames + 1);
       const a = s.animation, ran = a ? a.count - session.animationFrames : 0;
       if (ran > 0) session.frameDraws = { loops: a.loops, draws: Math.round((100 * (s.draws - w.draws)) / ran) / 100 };
       if (a) session.animationFrames = a.count;
       Object.assign(w, { frames: w.frames + frames + 1, draws: s.draws, vertices: s.vertices });
-      const spent = w.vertices + T.drawCallWork * w.draws;
-      if (spent > T.gatherWork) throw new TooHeavy(session.doing, spent);
+      const spent = w.vertices + thresholds.drawCallWork * w.draws;
+      if (spent > thresholds.gatherWork) throw new TooHeavy(session.doing, spent);
     },
     /** What the page awaits in real time (fetches, WebGPU requests), waited for within firstFrameSeconds; no frame runs meanwhile. */
     async settle() {
@@ -95,7 +95,7 @@ export function openSession(page, { part, rubric, progress = () => {}, deadline 
     },
     async shot() {
       const img = await page.snap();
-      return img && { img, an: analyse(img, T) };
+      return img && { img, an: analyse(img, thresholds) };
     },
     /** Keeps a picture in the artifact under `name`; returns the name. */
     keep(name, img) {
@@ -131,7 +131,7 @@ export function openSession(page, { part, rubric, progress = () => {}, deadline 
 
 /** The session's trials: a click, an action tried and what it did to the picture, the picture watched for motion. */
 function trials(session) {
-  const { page, T, facts } = session;
+  const { page, thresholds, facts } = session;
   return {
     async press(c, what) {
       const r = await page.click(c);
@@ -140,7 +140,7 @@ function trials(session) {
         return false;
       }
       session.act(`clicked ${what} ${describe(c)}`);
-      await session.tick(session.T.actionTickMs);
+      await session.tick(session.thresholds.actionTickMs);
       return true;
     },
     /** Tries one action from the state as it is and says what it did to the picture. */
@@ -151,10 +151,10 @@ function trials(session) {
       if (!after) return 'none';
       let later = after;
       if (watchMotion || session.moving) {
-        await session.tick(T.trialTickMs, T.trialFrames); // trialFrames + 1 frames: an orbit a small step a frame shows it moved
+        await session.tick(thresholds.trialTickMs, thresholds.trialFrames); // trialFrames + 1 frames: an orbit a small step a frame shows it moved
         later = await session.shot();
       }
-      const effect = effectOf({ before, after, later, wasMoving: session.moving }, T);
+      const effect = effectOf({ before, after, later, wasMoving: session.moving }, thresholds);
       session.cur = later;
       if (effect === 'starts') session.moving = true;
       if (effect === 'stops') session.moving = false;
@@ -171,9 +171,9 @@ function trials(session) {
     },
     /** Does the picture move by itself over three frames? */
     async watch() {
-      await session.tick(T.watchTickMs, T.watchFrames);
+      await session.tick(thresholds.watchTickMs, thresholds.watchFrames);
       const next = await session.shot();
-      session.moving = pictureChange(session.cur.img, next.img, T) > T.pictureMoves;
+      session.moving = pictureChange(session.cur.img, next.img, thresholds) > thresholds.pictureMoves;
       session.cur = next;
       return session.moving;
     },

@@ -12,13 +12,13 @@ import { groupsOf, setGroup, least, free, groupFacts } from './params.js';
  * set far from where they are, on input (else change), its picture kept; then back.
  */
 export async function trySliders(session, controls) {
-  const { T, facts } = session;
+  const { thresholds, facts } = session;
   session.step('trying the sliders');
   const base = session.images[facts.shadingImage || facts.judged];
   const groups = groupsOf(session, controls);
   facts.slidersFound = groups.length;
   const animated = facts.sentAnimated, sentBefore = session.moving && animated ? await readSent(session) : null;
-  for (const g of groups.slice(0, T.maxSliderTrials)) {
+  for (const g of groups.slice(0, thresholds.maxSliderTrials)) {
     const k = g.role;
     const target = (c) => {
       if (c.type === 'color') return least(c);
@@ -26,23 +26,23 @@ export async function trySliders(session, controls) {
       return k === 's' ? (Number(session.now(c)) > (lo + hi) / 2 ? lo : hi) : (Number(session.now(c)) > lo ? lo : hi); // s: far from where it is; others: to the least
     };
     const vs = await setGroup(session, g, target, ['input']);
-    await session.tick(session.T.actionTickMs);
+    await session.tick(session.thresholds.actionTickMs);
     let after = await session.page.snap();
     // what the page sent differently (sentChanges) decides where the picture moves by itself
     const sent = { input: sentChanges(sentBefore, await readSent(session), animated), change: null };
     // how much the picture changed on each event tried; the event it acted on is decided by the
     // one reading the audits use (computed/slider-event.js), on what was seen so far: the change
     // event is tried where the input event showed nothing
-    const changed = { input: pictureChange(base, after, T), change: null };
+    const changed = { input: pictureChange(base, after, thresholds), change: null };
     const seen = () => ({ changed, ...(session.moving && sent.input ? { moving: true, sent } : {}) });
-    let how = sliderEvent(seen(), T);
+    let how = sliderEvent(seen(), thresholds);
     if (how !== 'input') {
       await setGroup(session, g, target, ['change']);
-      await session.tick(session.T.actionTickMs);
+      await session.tick(session.thresholds.actionTickMs);
       after = await session.page.snap();
       sent.change = sentChanges(sentBefore, await readSent(session), animated);
-      changed.change = pictureChange(base, after, T);
-      how = sliderEvent(seen(), T);
+      changed.change = pictureChange(base, after, thresholds);
+      how = sliderEvent(seen(), thresholds);
     }
     const r = k && k !== 'levelSlider' ? k : null;
     session.act(`set ${describeGroup(g)} to ${vs[0]} (${how === 'none' ? 'no visible change' : `the picture changed on the ${how} event`})`);
@@ -51,7 +51,7 @@ export async function trySliders(session, controls) {
     // back to where it was (drawn with the next slider's frame, or the last one below)
     await setGroup(session, g, (c) => session.now(c));
   }
-  await session.tick(session.T.actionTickMs);
+  await session.tick(session.thresholds.actionTickMs);
 }
 
 /** s at its least (where that is 0 or below): one picture, in the judged view; then s back. */
@@ -61,9 +61,9 @@ export async function leastShininess(session, controls) {
   const lo = c.min === '' || c.min === undefined || c.min === null ? 0 : Number(c.min); // a range's min defaults to 0
   if (!(lo <= 0)) return;
   await session.page.setValue(c, lo, ['input', 'change']);
-  await session.tick(session.T.actionTickMs);
+  await session.tick(session.thresholds.actionTickMs);
   const after = await session.page.snap();
   await session.page.setValue(c, session.now(c), ['input', 'change']);
-  await session.tick(session.T.actionTickMs);
+  await session.tick(session.thresholds.actionTickMs);
   if (after) session.facts.leastS = { value: lo, image: session.keep('least-s', after) };
 }

@@ -16,9 +16,9 @@ function numericGroups(session, controls, roles) {
 }
 
 /** The share of the sphere's samples (the judged view's outline `an`) white (every channel at clippedLevel). */
-export function clippedShare(img, an, T) {
-  const pts = samples(img, an, T);
-  return pts.length ? pts.filter((s) => Math.min(...s.c) >= T.clippedLevel).length / pts.length : 0;
+export function clippedShare(img, an, thresholds) {
+  const pts = samples(img, an, thresholds);
+  return pts.length ? pts.filter((s) => Math.min(...s.c) >= thresholds.clippedLevel).length / pts.length : 0;
 }
 
 /**
@@ -28,26 +28,26 @@ export function clippedShare(img, an, T) {
  * returns the picture to read the shading from, or null (nothing lowered).
  */
 export async function unclip(session, controls, img, an) {
-  const { T, facts } = session;
-  const before = clippedShare(img, an, T);
-  if (before < T.clippedShare) return null;
+  const { thresholds, facts } = session;
+  const before = clippedShare(img, an, thresholds);
+  if (before < thresholds.clippedShare) return null;
   const groups = numericGroups(session, controls, ['kd', 'Le', 'La']);
   if (!groups.length) return null;
   session.step('lowering the page\'s own sliders: the picture clips to white');
   const steps = [];
   let share = before, shot = null;
-  for (let k = 0; k < T.maxUnclipSteps && share > T.unclippedShare; k++) {
+  for (let k = 0; k < thresholds.maxUnclipSteps && share > thresholds.unclippedShare; k++) {
     const g = groups[k % groups.length];
     const vs = await setGroup(session, g, (c) => {
       const lo = least(c), v = Number(session.now(c));
       return Math.round(1000 * (lo + (v - lo) / 2)) / 1000;
     });
     g.controls.forEach((c, i) => session.values.set(c.index, vs[i]));
-    await session.tick(session.T.actionTickMs);
+    await session.tick(session.thresholds.actionTickMs);
     const sh = await session.shot();
     if (!sh || sh.an.blank) break;
     shot = sh;
-    share = clippedShare(sh.img, an, T);
+    share = clippedShare(sh.img, an, thresholds);
     steps.push({ role: g.role, control: g.controls[0].index, value: vs[0] });
     session.act(`set the ${g.role} slider to ${vs[0]} (the picture clipped to white over ${Math.round(100 * before)}% of the sphere; now ${Math.round(100 * share)}%)`);
   }
@@ -58,8 +58,8 @@ export async function unclip(session, controls, img, an) {
 }
 
 /** The spread (standard deviation) of the brightness over the sphere's samples (the judged view's outline `an`). */
-export function brightnessSpread(img, an, T) {
-  const ys = samples(img, an, T).map((s) => luminance(s.c));
+export function brightnessSpread(img, an, thresholds) {
+  const ys = samples(img, an, thresholds).map((s) => luminance(s.c));
   if (!ys.length) return 0;
   const mean = ys.reduce((a, y) => a + y, 0) / ys.length;
   return Math.sqrt(ys.reduce((a, y) => a + (y - mean) ** 2, 0) / ys.length);
@@ -73,20 +73,20 @@ export function brightnessSpread(img, an, T) {
  * value }], image }; returns the picture to read the shading from, or null.
  */
 export async function brighten(session, controls, img, an) {
-  const { T, facts } = session;
-  const before = brightnessSpread(img, an, T);
-  if (before >= T.evenSpread) return null;
+  const { thresholds, facts } = session;
+  const before = brightnessSpread(img, an, thresholds);
+  if (before >= thresholds.evenSpread) return null;
   const [g] = numericGroups(session, controls, ['Le', 'kd']);
   if (!g || g.controls.every((c) => Number(session.now(c)) >= greatest(c))) return null;
   session.step('raising the page\'s own light: the picture is too dim to show its shading');
   const vs = await setGroup(session, g, greatest);
-  await session.tick(session.T.actionTickMs);
+  await session.tick(session.thresholds.actionTickMs);
   const sh = await session.shot();
-  const after = sh && !sh.an.blank ? brightnessSpread(sh.img, an, T) : 0;
-  if (after < T.litSpread) {
+  const after = sh && !sh.an.blank ? brightnessSpread(sh.img, an, thresholds) : 0;
+  if (after < thresholds.litSpread) {
     // raised as far as the page lets it and still too dim to read: set back, and read as it was seen
     await setGroup(session, g, (c) => session.now(c));
-    await session.tick(session.T.actionTickMs);
+    await session.tick(session.thresholds.actionTickMs);
     return null;
   }
   g.controls.forEach((c, i) => session.values.set(c.index, vs[i]));

@@ -15,10 +15,10 @@ export function silhouetteChange(a, b) {
  * them lie at the outline (farther than outlineRadius of the radius from the centre): a finer or coarser
  * mesh at a high level moves only a few outline pixels, too few to change the area or roundness.
  */
-export function outlineFlips(a, b, T) {
+export function outlineFlips(a, b, thresholds) {
   if (!a || !b || a.blank || b.blank || a.width !== b.width || a.height !== b.height) return null;
   let flips = 0, atOutline = 0;
-  const w = a.width, r = T.outlineRadius * Math.min(a.radius, b.radius);
+  const w = a.width, r = thresholds.outlineRadius * Math.min(a.radius, b.radius);
   for (let p = 0; p < a.mask.length; p++) {
     if (a.mask[p] === b.mask[p]) continue;
     flips++;
@@ -29,8 +29,8 @@ export function outlineFlips(a, b, T) {
 }
 
 /** RMS difference of brightness between two pictures over the pixels inside both objects, within the rubric's coarseSampleRadius of B's radius. */
-export function shadingChange(imgA, anA, imgB, anB, T) {
-  const maxRho = T.coarseSampleRadius;
+export function shadingChange(imgA, anA, imgB, anB, thresholds) {
+  const maxRho = thresholds.coarseSampleRadius;
   let sum = 0, n = 0;
   const w = imgA.width;
   for (let p = 0; p < anA.mask.length; p++) {
@@ -46,11 +46,11 @@ export function shadingChange(imgA, anA, imgB, anB, T) {
 }
 
 /** The share of pixels where two pictures differ by more than rounding (pixelChange, summed over the channels of 0–255). */
-export function pictureChange(a, b, T) {
+export function pictureChange(a, b, thresholds) {
   if (!a || !b || a.width !== b.width || a.height !== b.height) return 1;
   let diff = 0;
   for (let o = 0; o < a.data.length; o += 4) {
-    if (Math.abs(a.data[o] - b.data[o]) + Math.abs(a.data[o + 1] - b.data[o + 1]) + Math.abs(a.data[o + 2] - b.data[o + 2]) > T.pixelChange) diff++;
+    if (Math.abs(a.data[o] - b.data[o]) + Math.abs(a.data[o + 1] - b.data[o + 1]) + Math.abs(a.data[o + 2] - b.data[o + 2]) > thresholds.pixelChange) diff++;
   }
   return diff / (a.width * a.height);
 }

@@ -9,11 +9,11 @@ import { samples } from './samples.js';
  * base, undefined: NaN, black on many GPUs). `img` is the judged picture, `after` the same view
  * with s lowered, `fit` img's diffuseFit.
  */
-export function darkSpots(img, an, after, fit, T) {
-  const margin = T.darkSpotMargin;
+export function darkSpots(img, an, after, fit, thresholds) {
+  const margin = thresholds.darkSpotMargin;
   const { width: w } = img;
   let dark = 0, n = 0;
-  for (const s of samples(img, an, T)) {
+  for (const s of samples(img, an, thresholds)) {
     const o = 4 * (s.y * w + s.x);
     const before = (img.data[o] + img.data[o + 1] + img.data[o + 2]) / 765;
     const now = (after.data[o] + after.data[o + 1] + after.data[o + 2]) / 765;

@@ -57,15 +57,15 @@ function fitTwoSided(Fall, F, use, l) {
  * out pixels much brighter than the fit (a highlight) on a second pass. Returns the fit's R²
  * (over the pixels fitted), the light direction, and the highlight those bright pixels make.
  */
-export function diffuseFit(pts, T) {
-  if (pts.length < T.minFitSamples) return null;
+export function diffuseFit(pts, thresholds) {
+  if (pts.length < thresholds.minFitSamples) return null;
   for (const s of pts) s.y = luminance(s.c);
   const meanY = pts.reduce((a, s) => a + s.y, 0) / pts.length;
   const sst = pts.reduce((a, s) => a + (s.y - meanY) ** 2, 0);
   // a pixel clipped at white (a channel at 1) says only "at least this bright": left out of the fit
   // while enough are left (a washed-out material), kept for the highlight above it
-  const unclipped = Uint8Array.from(pts, (s) => !s.clipped && Math.max(...s.c) < T.clippedLevel);
-  let use = unclipped.reduce((a, v) => a + v, 0) >= Math.max(T.minFitSamples, T.minUnclippedShare * pts.length) ? unclipped : new Uint8Array(pts.length).fill(1);
+  const unclipped = Uint8Array.from(pts, (s) => !s.clipped && Math.max(...s.c) < thresholds.clippedLevel);
+  let use = unclipped.reduce((a, v) => a + v, 0) >= Math.max(thresholds.minFitSamples, thresholds.minUnclippedShare * pts.length) ? unclipped : new Uint8Array(pts.length).fill(1);
   const use0 = use;
   let best = null, sseAll = null, F = null;
   for (let pass = 0; pass < 2; pass++) {
@@ -85,7 +85,7 @@ export function diffuseFit(pts, T) {
     }
     if (pass === 0) {
       sseAll = best.sse;
-      const left = Uint8Array.from(pts, (s, i) => use0[i] && s.y - (best.a + best.b * Math.max(0, s.n[0] * best.l[0] + s.n[1] * best.l[1] + s.n[2] * best.l[2])) < T.highlightFitMargin);
+      const left = Uint8Array.from(pts, (s, i) => use0[i] && s.y - (best.a + best.b * Math.max(0, s.n[0] * best.l[0] + s.n[1] * best.l[1] + s.n[2] * best.l[2])) < thresholds.highlightFitMargin);
       // no pixel above the fit: the second pass would fit the same pixels to the same numbers
       if (sameMask(left, use)) break;
       use = left;
@@ -96,7 +96,7 @@ export function diffuseFit(pts, T) {
   const sstU = pts.reduce((a, s, i) => a + (use[i] ? (s.y - meanU) ** 2 : 0), 0);
   // the highlight: how far above the diffuse fit a pixel is, as a share of the headroom left to
   // white there (a highlight on a bright diffuse patch saturates at 1 and cannot rise far)
-  const hl = highlightOf(pts, (n) => best.a + best.b * Math.max(0, n[0] * best.l[0] + n[1] * best.l[1] + n[2] * best.l[2]), T);
+  const hl = highlightOf(pts, (n) => best.a + best.b * Math.max(0, n[0] * best.l[0] + n[1] * best.l[1] + n[2] * best.l[2]), thresholds);
   // the same pixels under a two-sided model: a page lit on both sides (|n·w_i|) fits it better
   let twoSided = null, twoSidedAll = null;
   const Fall = flat(pts, null); // (F: the second pass's pixels, the highlight left out)

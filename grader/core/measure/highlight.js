@@ -8,8 +8,8 @@ import { luminance } from './samples.js';
  * patch saturates at 1 and cannot rise far), the largest rise itself (`rise`), and how many pixels
  * rise clearly (`bright`).
  */
-export function highlightOf(pts, predict, T) {
-  const margin = T.highlightMargin;
+export function highlightOf(pts, predict, thresholds) {
+  const margin = thresholds.highlightMargin;
   let peak = 0, rise = 0, bright = 0;
   const rises = new Float64Array(pts.length);
   for (let i = 0; i < pts.length; i++) {
@@ -17,17 +17,17 @@ export function highlightOf(pts, predict, T) {
     const pred = predict(s.n);
     const r = luminance(s.c) - pred;
     rises[i] = r;
-    if (r < T.highlightMinRise) continue;
-    const share = Math.min(1, r / Math.max(T.highlightHeadroom, 1 - pred));
+    if (r < thresholds.highlightMinRise) continue;
+    const share = Math.min(1, r / Math.max(thresholds.highlightHeadroom, 1 - pred));
     peak = Math.max(peak, share);
     rise = Math.max(rise, r);
-    if (r > margin || share > T.highlightBrightShare) bright++;
+    if (r > margin || share > thresholds.highlightBrightShare) bright++;
   }
   // where it is: the mean normal of the pixels that rise most (highlightPlaceRise of the largest rise or more)
   let normal = null;
   if (rise > 0) {
     const m = [0, 0, 0];
-    for (let i = 0; i < pts.length; i++) if (rises[i] >= T.highlightPlaceRise * rise) for (let k = 0; k < 3; k++) m[k] += pts[i].n[k] * rises[i];
+    for (let i = 0; i < pts.length; i++) if (rises[i] >= thresholds.highlightPlaceRise * rise) for (let k = 0; k < 3; k++) m[k] += pts[i].n[k] * rises[i];
     const len = Math.hypot(...m);
     if (len > 0) normal = m.map((v) => v / len);
   }
@@ -55,7 +55,7 @@ export function highlightOffset(highlightNormal, light, toViewer = 1) {
  * rise of highlightClearRise or more, highlightNoise times the fit's RMS, over a few pixels (a
  * small or tinted highlight on a clean fit; a page with no specular term has neither).
  */
-export function highlightSeen(fit, T) {
-  if (fit.highlightPeak >= T.highlightPeak) return true;
-  return fit.highlightRise >= T.highlightClearRise && fit.highlightRise >= T.highlightNoise * fit.rms && fit.highlightShare > 0;
+export function highlightSeen(fit, thresholds) {
+  if (fit.highlightPeak >= thresholds.highlightPeak) return true;
+  return fit.highlightRise >= thresholds.highlightClearRise && fit.highlightRise >= thresholds.highlightNoise * fit.rms && fit.highlightShare > 0;
 }

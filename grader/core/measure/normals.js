@@ -5,8 +5,8 @@ import { solve3, det3 } from './linear.js';
  * P1/P2: do the colours decode to unit normals d = 2c − 1, and is d a rotation of the normal a
  * sphere has at that pixel (front faces) or a reflection of it (the inside of the far side)?
  */
-export function normalColours(pts, T) {
-  if (pts.length < T.minFitSamples) return null;
+export function normalColours(pts, thresholds) {
+  if (pts.length < thresholds.minFitSamples) return null;
   let lenErr = 0;
   const mean = [0, 0, 0];
   for (const s of pts) {
@@ -35,4 +35,4 @@ export function normalColours(pts, T) {
 }
 
 /** Do the colours read by normalColours (`nc`) show normals facing the viewer (a rotation, fitted well)? */
-export const facesViewer = (nc, T) => !!nc && nc.det >= T.facingDeterminant && nc.residual <= T.facingResidual;
+export const facesViewer = (nc, thresholds) => !!nc && nc.det >= thresholds.facingDeterminant && nc.residual <= thresholds.facingResidual;

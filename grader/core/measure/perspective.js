@@ -30,8 +30,8 @@ export function normalAngle(rho, a, far = false) {
  * explains the normals' angles from it best. { rimDegrees (90 − a, or 90 + a on the far side),
  * distance (1/sin a, Infinity when orthographic), rms (degrees), count }, or null with too few.
  */
-export function rimAngle(pts, far, T) {
-  if (pts.length < T.minFitSamples) return null;
+export function rimAngle(pts, far, thresholds) {
+  if (pts.length < thresholds.minFitSamples) return null;
   const axis = [0, 0, 0];
   const dirs = pts.map((s) => {
     const d = s.c.map((v) => 2 * v - 1), len = Math.hypot(...d) || 1;

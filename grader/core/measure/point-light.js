@@ -11,25 +11,25 @@ import { lineFit } from './linear.js';
  * normals of perspectiveSamples), the light at p_ℓ = d·l (d in sphere radii, from the centre), w_i = normalize(p_ℓ − x),
  * with g = 1/‖p_ℓ − x‖² (fall-off) or g = 1 (none). Both models hold a directional light (d → ∞),
  * so a far or directional light fits both alike: only a near light tells them apart. Pixels above
- * both fits (a highlight) and clipped ones are left out. Returns the best of each model. `T`: the
+ * both fits (a highlight) and clipped ones are left out. Returns the best of each model. `thresholds`: the
  * rubric's thresholds; `around` a direction (only light directions within the cone whose cosine is
  * pointLightConeCosine, 60°, are tried) or null.
  */
-export function pointLightFit(pts, T, around = null) {
-  const use0 = pts.map((s) => Math.max(...s.c) < T.clippedLevel); // (a channel clipped at white says nothing of the fall-off)
-  if (use0.filter(Boolean).length < T.minModelSamples) return null;
+export function pointLightFit(pts, thresholds, around = null) {
+  const use0 = pts.map((s) => Math.max(...s.c) < thresholds.clippedLevel); // (a channel clipped at white says nothing of the fall-off)
+  if (use0.filter(Boolean).length < thresholds.minModelSamples) return null;
   for (const s of pts) s.y = luminance(s.c);
   const F = flat(pts);
   let use = use0;
   let none = null, inv = null;
-  const dirs = DIRS.filter((l) => !around || l[0] * around[0] + l[1] * around[1] + l[2] * around[2] > T.pointLightConeCosine);
+  const dirs = DIRS.filter((l) => !around || l[0] * around[0] + l[1] * around[1] + l[2] * around[2] > thresholds.pointLightConeCosine);
   for (let pass = 0; pass < 2; pass++) {
     const coarse = grid(F, use, dirs);
     none = search(F, use, false, coarse.none);
     inv = search(F, use, true, coarse.inv);
     if (!none || !inv) return null;
     if (pass === 0) {
-      const margin = T.highlightFitMargin;
+      const margin = thresholds.highlightFitMargin;
       const left = pts.map((s, i) => use0[i] && Math.min(s.y - none.a - none.b * none.xs[i], s.y - inv.a - inv.b * inv.xs[i]) < margin);
       // no pixel above both fits: the second pass would fit the same pixels to the same numbers
       if (sameMask(left, use)) break;
@@ -41,7 +41,7 @@ export function pointLightFit(pts, T, around = null) {
   const sst = pts.reduce((a, s, i) => a + (use[i] ? (s.y - mean) ** 2 : 0), 0);
   const brief = (f) => {
     const model = { a: f.a, b: f.b, l: f.l, d: f.d, falloff: f.falloff };
-    const hl = highlightOf(pts, (n) => pointLightPredict(n, model), T);
+    const hl = highlightOf(pts, (n) => pointLightPredict(n, model), thresholds);
     return { distance: f.d, light: f.l, r2: sst > 1e-12 ? 1 - f.sse / sst : 0, rms: Math.sqrt(f.sse / used), model, highlightPeak: hl.peak, highlightRise: hl.rise,
       highlightShare: hl.bright / pts.length, highlightNormal: hl.normal };
   };
@@ -152,21 +152,21 @@ export function pointLightPredict(n, m) {
  * the largest rise of a pixel over the model, as a share of the headroom to white there. A near
  * light's 1/r² bright spot is part of the model, not a highlight. `pts` are perspectiveSamples.
  */
-export function highlightAbove(pts, model, T) {
-  return highlightOf(pts, (n) => pointLightPredict(n, model), T).peak;
+export function highlightAbove(pts, model, thresholds) {
+  return highlightOf(pts, (n) => pointLightPredict(n, model), thresholds).peak;
 }
 
 /** 'falloff' or 'none': the model a near point light fits well (R² ≥ diffuseR2, d ≤ pointLightNear), or null. */
-export function nearPointLight(pl, T) {
+export function nearPointLight(pl, thresholds) {
   if (!pl) return null;
-  const good = ['falloff', 'none'].filter((k) => pl[k].r2 >= T.diffuseR2 && pl[k].distance <= T.pointLightNear);
+  const good = ['falloff', 'none'].filter((k) => pl[k].r2 >= thresholds.diffuseR2 && pl[k].distance <= thresholds.pointLightNear);
   return good.sort((a, b) => pl[b].r2 - pl[a].r2)[0] || null;
 }
 /** Model `a` ('falloff' or 'none') clearly beats model `b`: a near light, R² higher by pointLightGain, RMS lower by pointLightRmsRatio. */
-export function clearlyBetter(pl, a, b, T) {
-  return pl[a].r2 - pl[b].r2 >= T.pointLightGain && pl[a].distance <= T.pointLightNear && pl[b].rms >= T.pointLightRmsRatio * pl[a].rms;
+export function clearlyBetter(pl, a, b, thresholds) {
+  return pl[a].r2 - pl[b].r2 >= thresholds.pointLightGain && pl[a].distance <= thresholds.pointLightNear && pl[b].rms >= thresholds.pointLightRmsRatio * pl[a].rms;
 }
 /** A light clearly near and falling off as 1/r²: it fits, and better than without the fall-off. */
-export function clearlyNearFalloff(pl, T) {
-  return !!pl && clearlyBetter(pl, 'falloff', 'none', T) && pl.falloff.r2 >= T.diffuseR2;
+export function clearlyNearFalloff(pl, thresholds) {
+  return !!pl && clearlyBetter(pl, 'falloff', 'none', thresholds) && pl.falloff.r2 >= thresholds.diffuseR2;
 }

@@ -6,7 +6,7 @@
  * `maxRho` of the radius (the rubric's sampleRadius: the rim's pixels mix with the background), at
  * most `max` of them (maxSamples), on a regular grid.
  */
-export function samples(img, an, T, { maxRho = T.sampleRadius, max = T.maxSamples } = {}) {
+export function samples(img, an, thresholds, { maxRho = thresholds.sampleRadius, max = thresholds.maxSamples } = {}) {
   const { width: w, data } = img;
   const out = [];
   const r = an.radius;
@@ -31,10 +31,10 @@ export function samples(img, an, T, { maxRho = T.sampleRadius, max = T.maxSample
  * pointLightFovy degrees high (the slides' perspective(45, …)), at the distance that makes the
  * sphere's radius on screen; each pixel's ray meets the unit sphere at x, and n = x.
  */
-export function perspectiveSamples(img, an, T, opts = {}) {
-  const t = Math.tan((T.pointLightFovy * Math.PI) / 360) / (img.height / 2);
+export function perspectiveSamples(img, an, thresholds, opts = {}) {
+  const t = Math.tan((thresholds.pointLightFovy * Math.PI) / 360) / (img.height / 2);
   const D = 1 / Math.sin(Math.atan(an.radius * t));
-  return samples(img, an, T, opts).map((s) => {
+  return samples(img, an, thresholds, opts).map((s) => {
     const dx = (s.x + 0.5 - an.cx) * t, dy = -(s.y + 0.5 - an.cy) * t, len = Math.hypot(dx, dy, 1);
     const d = [dx / len, dy / len, -1 / len];
     const ed = D * d[2];

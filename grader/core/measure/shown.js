@@ -35,15 +35,15 @@ function differing(raw, shown, box, clip, dx, dy, limit, step) {
  * those shown otherwise by more than shownPixelDiff in a channel), where they fit best within
  * shownShift pixels; or { compared: false, why }.
  */
-export function shownDifference(two, T) {
+export function shownDifference(two, thresholds) {
   if (!two || two.why) return { compared: false, why: two ? two.why : 'not read' };
   const { raw, shown, box, clip } = two;
   // a large picture is read at every other row and column (a quarter of the work; the share alike)
-  const step = shown.width * shown.height > T.shownFullPixels ? 2 : 1;
+  const step = shown.width * shown.height > thresholds.shownFullPixels ? 2 : 1;
   let best = null;
-  for (let dy = -T.shownShift; dy <= T.shownShift; dy++) {
-    for (let dx = -T.shownShift; dx <= T.shownShift; dx++) {
-      const r = differing(raw, shown, box, clip, dx, dy, T.shownPixelDiff, step);
+  for (let dy = -thresholds.shownShift; dy <= thresholds.shownShift; dy++) {
+    for (let dx = -thresholds.shownShift; dx <= thresholds.shownShift; dx++) {
+      const r = differing(raw, shown, box, clip, dx, dy, thresholds.shownPixelDiff, step);
       if (r.opaque && (!best || r.differ / r.opaque < best.differ / best.opaque)) best = r;
     }
   }

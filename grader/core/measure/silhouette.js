@@ -1,12 +1,12 @@
 // The object in a picture: the background (the commonest border colour), the object's mask (thin
 // lines opened away), and its silhouette (radial profile, roundness, fill, a circle fitted to the
-// lit edge). An image is { width, height, data } (RGBA bytes); T is the rubric's thresholds.
+// lit edge). An image is { width, height, data } (RGBA bytes); thresholds are the rubric's.
 import { solve3 } from './linear.js';
 
 /** The background (the commonest border colour), the object's mask and its silhouette. */
-export function analyse(img, T) {
+export function analyse(img, thresholds) {
   const { width: w, height: h, data } = img;
-  const tol = T.backgroundTolerance;
+  const tol = thresholds.backgroundTolerance;
   const counts = new Map();
   const border = [];
   for (let x = 0; x < w; x++) border.push([x, 0], [x, h - 1]);
@@ -28,7 +28,7 @@ export function analyse(img, T) {
     if (oneColour && (r << 16 | g << 8 | b) !== first) oneColour = false;
     if (Math.abs(r - b0) + Math.abs(g - b1) + Math.abs(b - b2) > tol) raw[p] = 1;
   }
-  openMask(raw, w, h, T.thinLine);
+  openMask(raw, w, h, thresholds.thinLine);
   // the largest 4-connected component is the object (text or a second canvas element aside)
   const label = new Int32Array(n);
   let best = 0, bestLabel = 0, next = 0;
@@ -57,7 +57,7 @@ export function analyse(img, T) {
   }
   const area = best;
   const result = { width: w, height: h, bg, area, coverage: area / n, oneColour, mask };
-  if (area < Math.max(T.minObjectPixels, T.minCoverage * n)) return { ...result, blank: true };
+  if (area < Math.max(thresholds.minObjectPixels, thresholds.minCoverage * n)) return { ...result, blank: true };
   const cx = sx / area + 0.5, cy = sy / area + 0.5;
   // radial profile: the farthest object pixel along 72 rays from the centroid
   const rmax = Math.hypot(w, h);
@@ -79,9 +79,9 @@ export function analyse(img, T) {
   const touches = radii.some((r, k) => {
     const a = (2 * Math.PI * k) / 72;
     const x = cx + r * Math.cos(a), y = cy + r * Math.sin(a);
-    return x < T.edgeMarginPixels || y < T.edgeMarginPixels || x > w - T.edgeMarginPixels || y > h - T.edgeMarginPixels;
+    return x < thresholds.edgeMarginPixels || y < thresholds.edgeMarginPixels || x > w - thresholds.edgeMarginPixels || y > h - thresholds.edgeMarginPixels;
   });
-  const circle = fitCircle(img, mask, bg, tol, T);
+  const circle = fitCircle(img, mask, bg, tol, thresholds);
   return { ...result, blank: false, cx, cy, R, radius: mean, roundness, fill, touches, circle };
 }
 
@@ -158,7 +158,7 @@ function openBox(mask, w, h, r) {
  * Kåsa's least-squares fit; roundness = spread of the edge's distances from the centre over the
  * radius; arc = the degrees of the circle that edge covers.
  */
-export function fitCircle(img, mask, bg, tol, T) {
+export function fitCircle(img, mask, bg, tol, thresholds) {
   const { width: w, height: h, data } = img;
   const pts = [];
   for (let y = 1; y < h - 1; y++) {
@@ -166,10 +166,10 @@ export function fitCircle(img, mask, bg, tol, T) {
       const p = y * w + x;
       if (!mask[p] || (mask[p - 1] && mask[p + 1] && mask[p - w] && mask[p + w])) continue;
       const o = 4 * p;
-      if (Math.abs(data[o] - bg[0]) + Math.abs(data[o + 1] - bg[1]) + Math.abs(data[o + 2] - bg[2]) > T.litEdgeContrast * tol) pts.push([x + 0.5, y + 0.5]);
+      if (Math.abs(data[o] - bg[0]) + Math.abs(data[o + 1] - bg[1]) + Math.abs(data[o + 2] - bg[2]) > thresholds.litEdgeContrast * tol) pts.push([x + 0.5, y + 0.5]);
     }
   }
-  if (pts.length < T.minEdgePoints) return null;
+  if (pts.length < thresholds.minEdgePoints) return null;
   // x² + y² + D x + E y + F = 0
   const A = [[0, 0, 0], [0, 0, 0], [0, 0, 0]], b = [0, 0, 0];
   for (const [x, y] of pts) {
@@ -182,7 +182,7 @@ export function fitCircle(img, mask, bg, tol, T) {
   const d = pts.map(([x, y]) => Math.hypot(x - cx, y - cy));
   const sorted = [...d].sort((a, c) => a - c);
   // the spread of the middle of the distances (edgeTrim of them left out at each end: a stray pixel or two)
-  const lo = sorted[Math.floor(T.edgeTrim * sorted.length)], hi = sorted[Math.ceil((1 - T.edgeTrim) * sorted.length) - 1];
+  const lo = sorted[Math.floor(thresholds.edgeTrim * sorted.length)], hi = sorted[Math.ceil((1 - thresholds.edgeTrim) * sorted.length) - 1];
   const bins = new Set(pts.map(([x, y]) => Math.floor(((Math.atan2(y - cy, x - cx) + Math.PI) / (2 * Math.PI)) * 36) % 36));
   return { cx, cy, r, roundness: (hi - lo) / r, arc: bins.size * 10, points: pts.length };
 }

@@ -29,14 +29,14 @@ export function coloured(samples, img) {
  * The samples as columns, for fits that allocate nothing a sample: n, c, and for each channel
  * whether it is neither clipped nor black (those are left out of that channel's fit).
  */
-function columns(use, T) {
+function columns(use, thresholds) {
   const m = use.length;
   const n = new Float64Array(3 * m), c = new Float64Array(3 * m), ok = new Uint8Array(3 * m);
   use.forEach((s, i) => {
     for (let k = 0; k < 3; k++) {
       n[3 * i + k] = s.n[k];
       c[3 * i + k] = s.c[k];
-      ok[3 * i + k] = s.c[k] < T.clippedLevel && s.c[k] > T.blackLevel ? 1 : 0;
+      ok[3 * i + k] = s.c[k] < thresholds.clippedLevel && s.c[k] > thresholds.blackLevel ? 1 : 0;
     }
   });
   return { m, n, c, ok };
@@ -144,13 +144,13 @@ function bestLight(cols, how) {
  * (lowest residual first) }, or { why }.
  * `surface` is core/computed/surface.js's (samples in the model's space, its camera).
  */
-export function surfaceFit(surface, img, T) {
+export function surfaceFit(surface, img, thresholds) {
   if (!surface || surface.why) return { why: surface ? surface.why : 'no surface' };
   const use = coloured(surface.samples, img);
   if (use.length < 30) return { why: `only ${use.length} pixels of the page's surface to fit` };
   const mean = [0, 1, 2].map((ch) => use.reduce((a, s) => a + s.c[ch], 0) / use.length);
   const sst = use.reduce((a, s) => a + s.c.reduce((b, v, ch) => b + (v - mean[ch]) ** 2, 0), 0);
-  const cols = columns(use, T);
+  const cols = columns(use, thresholds);
   const rms = (f) => Math.sqrt(f.sse / Math.max(1, f.used));
   const variants = [];
   const lights = {};
@@ -184,7 +184,7 @@ export function surfaceFit(surface, img, T) {
   // nearly); one misreading at a time: the normal colour first, then w_o given that colour
   const slideView = (v) => !v.view || v.view === 'the slide';
   const slide = ranked.find((v) => slideView(v) && !v.tint);
-  const better = (v, than) => rms(than.fit) >= T.surfaceResidual && rms(v.fit) < (1 - T.surfaceVariantMargin) * rms(than.fit);
+  const better = (v, than) => rms(than.fit) >= thresholds.surfaceResidual && rms(v.fit) < (1 - thresholds.surfaceVariantMargin) * rms(than.fit);
   let top = slide || ranked[0];
   const tinted = slide && ranked.find((v) => slideView(v) && v.tint);
   if (tinted && better(tinted, top)) top = tinted;

@@ -11,7 +11,7 @@ import { leastSquares, symmetricEigenvalues3 } from './linear.js';
 import { dot, cross } from './vectors.js';
 
 const det = (A) => dot(A[0], cross(A[1], A[2]));
-const clipped = (s, T) => Math.min(...s.c) <= T.blackLevel || Math.max(...s.c) >= T.clippedLevel;
+const clipped = (s, thresholds) => Math.min(...s.c) <= thresholds.blackLevel || Math.max(...s.c) >= thresholds.clippedLevel;
 
 /**
  * The normal colouring's turn R (3×3, rows) and share α from the channels' differences from
@@ -78,22 +78,22 @@ function channelsR2(use, lit, turned, { alpha = null, times = false } = {}) {
  * multiplies the lighting, as a material does, gives about diffuse/ambient, one added about 0) };
  * null where it cannot be fitted.
  */
-export function addedTintFit(pts, T) {
-  const use0 = pts.filter((s) => !clipped(s, T));
-  if (use0.length < T.minModelSamples) return null;
+export function addedTintFit(pts, thresholds) {
+  const use0 = pts.filter((s) => !clipped(s, thresholds));
+  if (use0.length < thresholds.minModelSamples) return null;
   const nt = normalTurn(use0);
   if (!nt) return null;
   const { R } = nt;
   const turned = (n) => R.map((r) => dot(r, n));
   let alpha = nt.alpha, fit = null, lit = null, use = null;
-  for (let round = 0; round < T.addedRounds; round++) {
-    const rest = pts.map((s) => { const m = turned(s.n); return { ...s, clipped: clipped(s, T), c: s.c.map((v, k) => v - alpha * m[k]) }; });
-    fit = diffuseFit(rest, T);
+  for (let round = 0; round < thresholds.addedRounds; round++) {
+    const rest = pts.map((s) => { const m = turned(s.n); return { ...s, clipped: clipped(s, thresholds), c: s.c.map((v, k) => v - alpha * m[k]) }; });
+    fit = diffuseFit(rest, thresholds);
     if (!fit) return null;
     const l = fit.light, f = fit;
     lit = (n) => Math.max(0, dot(n, l));
-    use = pts.filter((s, i) => !rest[i].clipped && rest[i].y - (f.ambient + f.diffuse * lit(s.n)) < T.highlightFitMargin);
-    if (use.length < T.minFitSamples) return null;
+    use = pts.filter((s, i) => !rest[i].clipped && rest[i].y - (f.ambient + f.diffuse * lit(s.n)) < thresholds.highlightFitMargin);
+    if (use.length < thresholds.minFitSamples) return null;
     const { x } = channelsR2(use, lit, turned);
     if (!x) return null;
     alpha = x[6];
@@ -111,5 +111,5 @@ export function addedTintFit(pts, T) {
  * the lighting (`times`) within addedTimesShare of it, and lighting left when it is taken out (the
  * rest shaded by evenSpread at least, as a lit picture must be, fitted to diffuseR2: WP04P1's colours alone leave a flat rest)?
  */
-export const addedClearly = (fit, T) => !!fit && fit.added.share >= T.addedShare && fit.added.even >= T.addedEven && fit.added.r2 >= T.addedR2 &&
-  1 - fit.added.r2Without >= T.addedShrink * (1 - fit.added.r2) && Math.abs(fit.added.times) <= T.addedTimesShare && fit.spread >= T.evenSpread && fit.r2 >= T.diffuseR2;
+export const addedClearly = (fit, thresholds) => !!fit && fit.added.share >= thresholds.addedShare && fit.added.even >= thresholds.addedEven && fit.added.r2 >= thresholds.addedR2 &&
+  1 - fit.added.r2Without >= thresholds.addedShrink * (1 - fit.added.r2) && Math.abs(fit.added.times) <= thresholds.addedTimesShare && fit.spread >= thresholds.evenSpread && fit.r2 >= thresholds.diffuseR2;

@@ -12,7 +12,7 @@ import { leastSquares, solveNormal, symmetricEigenvalues3 } from './linear.js';
 import { addedTintFit, addedClearly } from './tint-added.js';
 
 // a pixel clipped at white (a channel at clippedLevel) or nearly black (its channels' sum at darkSum) says little of its hue
-const usable = (s, T) => Math.max(...s.c) < T.clippedLevel && s.c[0] + s.c[1] + s.c[2] > T.darkSum;
+const usable = (s, thresholds) => Math.max(...s.c) < thresholds.clippedLevel && s.c[0] + s.c[1] + s.c[2] > thresholds.darkSum;
 
 /**
  * Does the hue follow the normal? Each channel's share of the brightness (c_k / Σc) fitted as an
@@ -23,9 +23,9 @@ const usable = (s, T) => Math.max(...s.c) < T.clippedLevel && s.c[0] + s.c[1] + 
  * the normal in two directions (the shares sum to 1: at most two), so `turn` is the second
  * singular value of the shares' slopes.
  */
-export function hueByNormal(pts, T) {
-  const use = pts.filter((s) => usable(s, T));
-  if (use.length < T.minModelSamples) return null;
+export function hueByNormal(pts, thresholds) {
+  const use = pts.filter((s) => usable(s, thresholds));
+  if (use.length < thresholds.minModelSamples) return null;
   const rows = use.map((s) => [1, s.n[0], s.n[1], s.n[2]]);
   let sse = 0, sst = 0;
   const slopes = [];
@@ -45,7 +45,7 @@ export function hueByNormal(pts, T) {
 }
 
 /** Is the picture tinted by the normal (hueByNormal: a hue that turns with the normal by tintTurn, explained by it to tintR2)? */
-export const tintedByNormal = (hue, T) => !!hue && hue.turn >= T.tintTurn && hue.r2 >= T.tintR2;
+export const tintedByNormal = (hue, thresholds) => !!hue && hue.turn >= thresholds.tintTurn && hue.r2 >= thresholds.tintR2;
 
 /**
  * The albedo's slope q and the lighting (a, b) for a fixed light `l`: brightness ≈ (1 + q·n)·(a +
@@ -89,24 +89,24 @@ function albedoAndLighting(use, l, q0, a0, b0, iterations) {
  * A(n) = 1 + q·n: in turns, the lighting by diffuseFit on the brightness with A divided out (its
  * light direction searched, the highlight left out), then A and the lighting for that light by
  * least squares (albedoAndLighting). diffuseFit's result on the de-tinted samples, with
- * `albedoSlope` |q|; null where it cannot be fitted. `plain`: diffuseFit(pts, T), where the caller has it.
+ * `albedoSlope` |q|; null where it cannot be fitted. `plain`: diffuseFit(pts, thresholds), where the caller has it.
  */
-export function detintedFit(pts, T, plain = diffuseFit(pts, T)) {
+export function detintedFit(pts, thresholds, plain = diffuseFit(pts, thresholds)) {
   let q = [0, 0, 0];
   const albedo = () => (n) => Math.max(0.05, 1 + q[0] * n[0] + q[1] * n[1] + q[2] * n[2]);
   // (with q = 0, A is 1 and the samples divide out to themselves: the fit is `plain`, diffuseFit's
   // on the samples as they are, to the last bit)
-  const fitWith = (A) => (q.every((v) => v === 0) ? plain : diffuseFit(pts.map((s) => ({ ...s, c: s.c.map((v) => v / A(s.n)) })), T));
-  for (let round = 0; round < T.tintRounds; round++) {
+  const fitWith = (A) => (q.every((v) => v === 0) ? plain : diffuseFit(pts.map((s) => ({ ...s, c: s.c.map((v) => v / A(s.n)) })), thresholds));
+  for (let round = 0; round < thresholds.tintRounds; round++) {
     const A = albedo();
     const fit = fitWith(A);
     if (!fit) return null;
     const L = (n) => fit.ambient + fit.diffuse * Math.max(0, n[0] * fit.light[0] + n[1] * fit.light[1] + n[2] * fit.light[2]);
     // the pixels the lighting fits (no highlight, nothing clipped, not black)
-    const use = pts.filter((s) => usable(s, T) && L(s.n) >= T.tintLitLevel && luminance(s.c) - L(s.n) * A(s.n) <= T.highlightFitMargin)
+    const use = pts.filter((s) => usable(s, thresholds) && L(s.n) >= thresholds.tintLitLevel && luminance(s.c) - L(s.n) * A(s.n) <= thresholds.highlightFitMargin)
       .map((s) => ({ n: s.n, y: luminance(s.c) }));
-    if (use.length < T.minFitSamples) break;
-    q = albedoAndLighting(use, fit.light, q, fit.ambient, fit.diffuse, T.tintIterations);
+    if (use.length < thresholds.minFitSamples) break;
+    q = albedoAndLighting(use, fit.light, q, fit.ambient, fit.diffuse, thresholds.tintIterations);
   }
   const fit = fitWith(albedo());
   return fit && { ...fit, albedoSlope: Math.hypot(...q) };
@@ -125,20 +125,20 @@ const angleOf = (a, b) => (180 / Math.PI) * Math.acos(Math.max(-1, Math.min(1, a
  * other; where it is not, the fitted light cannot place a highlight. A normal colouring added to
  * the lighting (addedClearly) is taken out instead (addedTintFit): `tint.added` its share.
  */
-export function shadeFit(pts, T) {
-  const plain = diffuseFit(pts, T);
+export function shadeFit(pts, thresholds) {
+  const plain = diffuseFit(pts, thresholds);
   if (!plain) return null;
-  const hue = hueByNormal(pts, T);
-  if (!tintedByNormal(hue, T)) return plain;
+  const hue = hueByNormal(pts, thresholds);
+  if (!tintedByNormal(hue, thresholds)) return plain;
   // a normal colouring added to the lighting: its fit, read as any clean fit is
-  const added = addedTintFit(pts, T);
-  if (addedClearly(added, T)) return { ...added, tint: { turn: hue.turn, added: added.added.share, sure: added.r2 >= T.diffuseR2, plain } };
-  const de = detintedFit(pts, T, plain);
+  const added = addedTintFit(pts, thresholds);
+  if (addedClearly(added, thresholds)) return { ...added, tint: { turn: hue.turn, added: added.added.share, sure: added.r2 >= thresholds.diffuseR2, plain } };
+  const de = detintedFit(pts, thresholds, plain);
   // the de-tinted fit where it explains the picture better, and does not lose a highlight the plain one sees
-  const fit = de && de.r2 >= plain.r2 && (highlightSeen(de, T) || !highlightSeen(plain, T)) ? de : plain;
+  const fit = de && de.r2 >= plain.r2 && (highlightSeen(de, thresholds) || !highlightSeen(plain, thresholds)) ? de : plain;
   const lightShift = de ? angleOf(de.light, plain.light) : null;
   const slope = de ? de.albedoSlope : null;
   // the plain fit kept (the tint divided out explains no more: a tint added, not multiplied) is read as any fit is
-  const sure = fit.r2 >= T.diffuseR2 && (fit === plain || (slope < T.tintSlope && lightShift <= T.tintLightDegrees));
+  const sure = fit.r2 >= thresholds.diffuseR2 && (fit === plain || (slope < thresholds.tintSlope && lightShift <= thresholds.tintLightDegrees));
   return { ...fit, tint: { turn: hue.turn, slope, lightShift, sure, plain } };
 }
