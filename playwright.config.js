@@ -38,7 +38,7 @@ export default defineConfig({
     {
       name: 'webgpu',
       use: { api: 'webgpu', launchOptions: { executablePath: CHROMIUM, args: [...CHROMIUM_ARGS, ...WEBGPU_ARGS] } },
-      testMatch: /(foundation|lighting|faults|edge-cases|webgpu)\.spec\.js/,
+      testMatch: /(foundation|lighting|faults|edge-cases|webgpu|surface)\.spec\.js/,
       grepInvert: /@any-api/,
       // the same pictures: a WebGPU page is held to the WebGL 2 baselines
       snapshotPathTemplate: 'tests/screenshots/webgl2/{arg}{ext}',

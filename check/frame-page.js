@@ -114,8 +114,8 @@ export function framePage(frame, log) {
 }
 
 /** The frame's surface reader's answer out of its realm, its two pictures as { width, height, data }. */
-function surfaceOut(r, opts, plain) {
-  const s = r && r.surface ? r.surface(opts) : { why: 'the geometry was not recorded' };
+async function surfaceOut(r, opts, plain) {
+  const s = r && r.surface ? await r.surface(opts) : { why: 'the geometry was not recorded' };
   if (s.why) return plain(s);
   const image = (bytes) => ({ width: s.width, height: s.height, data: new Uint8Array(bytes) });
   return { ...plain({ ...s, normals: null, points: null }), normals: image(s.normals), points: image(s.points) };

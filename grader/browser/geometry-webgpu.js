@@ -1,16 +1,18 @@
 // What a WebGPU page sends as geometry, for grader/browser/geometry.js (which calls this inside the
 // graded page, with its frame bookkeeping): the bytes of each vertex and index buffer (created
 // mapped, or written by queue.writeBuffer), each pipeline's vertex layout, topology and culling, and
-// each draw with the buffers bound then. A frame ends at a queue's submit. Each draw is resolved
-// into the form grader/browser/mesh.js sums up only when the grader asks.
-export function webgpuGeometry({ frameOf, closeFrame, wrap: after, bytesIn, vertexInputs, MAX_DRAWS, FLOAT, TRIANGLES }) {
+// each draw with the buffers and bind groups bound then and the size of the texture it drew into.
+// A frame ends at a queue's submit. Each draw is resolved into the form grader/browser/mesh.js sums
+// up only when the grader asks; its `gpu` (the pipeline's description, the bound objects, the call)
+// is what grader/browser/surface-webgpu.js draws again.
+export function webgpuGeometry({ frameOf, closeFrame, wrap: after, bytesIn, vertexInputs, MAX_DRAWS, FLOAT, TRIANGLES }, recordBindings) {
   if (!window.GPUDevice || !window.GPURenderPassEncoder) return;
   const VERTEX = 0x20, INDEX = 0x10;
   const bytesOf = new WeakMap(); // GPUBuffer → Uint8Array
   const mapped = new WeakMap(); // GPUBuffer → its mapped ranges, copied at unmap
   const codeOf = new WeakMap(); // GPUShaderModule → WGSL
-  const pipes = new WeakMap(); // GPURenderPipeline → { buffers, topology, cull, inputs }
-  const passes = new WeakMap(); // GPURenderPassEncoder → { pipeline, vertex, index }
+  const pipes = new WeakMap(); // GPURenderPipeline → { buffers, topology, cull, inputs, desc }
+  const passes = new WeakMap(); // GPURenderPassEncoder → { pipeline, vertex, index, groups, size }
   const D = GPUDevice.prototype, Q = GPUQueue.prototype, B = GPUBuffer.prototype, P = GPURenderPassEncoder.prototype;
   after(D, 'createBuffer', (device, [desc], buffer) => {
     if (!desc || !(desc.usage & (VERTEX | INDEX)) || !(desc.size > 0 && desc.size < 2 ** 28)) return;
@@ -23,11 +25,9 @@ export function webgpuGeometry({ frameOf, closeFrame, wrap: after, bytesIn, vert
   });
   const unmap = B.unmap;
   B.unmap = function (...a) {
-    try {
-      const m = mapped.get(this), bytes = bytesOf.get(this);
-      if (m && bytes) for (const { offset, range } of m) if (offset + range.byteLength <= bytes.length) bytes.set(new Uint8Array(range), offset);
-      mapped.delete(this);
-    } catch { /* (a detached range: nothing kept) */ }
+    const m = mapped.get(this), bytes = bytesOf.get(this);
+    try { if (m && bytes) for (const { offset, range } of m) if (offset + range.byteLength <= bytes.length) bytes.set(new Uint8Array(range), offset); } catch { /* (a detached range: nothing kept) */ }
+    mapped.delete(this);
     return unmap.apply(this, a);
   };
   after(Q, 'writeBuffer', (queue, [buffer, at, data, dataOffset, size]) => {
@@ -36,18 +36,20 @@ export function webgpuGeometry({ frameOf, closeFrame, wrap: after, bytesIn, vert
   });
   after(Q, 'submit', () => closeFrame());
   after(D, 'createShaderModule', (device, [desc], module) => codeOf.set(module, String((desc && desc.code) || '')));
-  const see = (desc, pipeline) => {
+  const stateOf = (pass) => passes.get(pass) || passes.set(pass, { pipeline: null, vertex: [], index: null, groups: [], size: null }).get(pass);
+  const drawnAgainAs = recordBindings(after, stateOf);
+  const see = (device, desc, pipeline) => {
     const v = (desc && desc.vertex) || {}, prim = (desc && desc.primitive) || {};
     pipes.set(pipeline, {
+      desc: drawnAgainAs(device, desc, codeOf.get(v.module) || ''),
       buffers: [...(v.buffers || [])].map((b) => b && { stride: b.arrayStride, attributes: [...(b.attributes || [])].map((a) => ({ format: a.format, offset: a.offset || 0, location: a.shaderLocation })) }),
       topology: prim.topology || 'triangle-list',
       cull: prim.cullMode && prim.cullMode !== 'none' ? `${prim.cullMode}/${prim.frontFace || 'ccw'}` : 'off',
       inputs: vertexInputs(codeOf.get(v.module) || '', v.entryPoint),
     });
   };
-  after(D, 'createRenderPipeline', (device, [desc], pipeline) => see(desc, pipeline));
-  after(D, 'createRenderPipelineAsync', (device, [desc], promise) => promise.then((pipeline) => see(desc, pipeline), () => {}));
-  const stateOf = (pass) => passes.get(pass) || passes.set(pass, { pipeline: null, vertex: [], index: null }).get(pass);
+  after(D, 'createRenderPipeline', (device, [desc], pipeline) => see(device, desc, pipeline));
+  after(D, 'createRenderPipelineAsync', (device, [desc], promise) => promise.then((pipeline) => see(device, desc, pipeline), () => {}));
   after(P, 'setPipeline', (pass, [pipeline]) => { stateOf(pass).pipeline = pipeline; });
   after(P, 'setVertexBuffer', (pass, [slot, buffer, offset = 0]) => { stateOf(pass).vertex[slot] = buffer ? { buffer, offset } : null; });
   after(P, 'setIndexBuffer', (pass, [buffer, format, offset = 0]) => { stateOf(pass).index = { buffer, format, offset }; });
@@ -77,8 +79,38 @@ export function webgpuGeometry({ frameOf, closeFrame, wrap: after, bytesIn, vert
     const st = stateOf(pass);
     const snap = { pipeline: st.pipeline, vertex: [...st.vertex], index: st.index && { ...st.index } };
     const pipe = pipes.get(st.pipeline);
-    f.draws.push({ mode: pipe && pipe.topology === 'triangle-list' ? TRIANGLES : -1, count: d.count, resolve: resolver(snap, d) });
+    f.draws.push({ mode: pipe && pipe.topology === 'triangle-list' ? TRIANGLES : -1, count: d.count, resolve: resolver(snap, d),
+      gpu: pipe && { desc: pipe.desc, vertex: snap.vertex, index: snap.index, groups: [...st.groups], size: st.size, call: d } });
   };
-  after(P, 'draw', (pass, [count, , first = 0]) => push(pass, { count: count | 0, first: first | 0, indexed: false }));
-  after(P, 'drawIndexed', (pass, [count, , firstIndex = 0, baseVertex = 0]) => push(pass, { count: count | 0, first: firstIndex | 0, base: baseVertex | 0, indexed: true }));
+  after(P, 'draw', (pass, [count, instances = 1, first = 0, firstInstance = 0]) => push(pass, { count: count | 0, first: first | 0, indexed: false, instances, firstInstance }));
+  after(P, 'drawIndexed', (pass, [count, instances = 1, firstIndex = 0, baseVertex = 0, firstInstance = 0]) => push(pass, { count: count | 0, first: firstIndex | 0, base: baseVertex | 0, indexed: true, instances, firstInstance }));
 }
+
+/**
+ * For the surface (grader/browser/surface-webgpu.js): each bind group's entries, and what a pass
+ * binds and draws into (its bind groups; the size of its first colour attachment's texture), kept
+ * in the pass's state (`stateOf`). Returns what a pipeline is drawn again as: (device, desc, its
+ * vertex stage's WGSL) → { device, code, entryPoint, constants, buffers, primitive, depth }.
+ */
+export function webgpuBindings(after, stateOf) {
+  const groupsOf = new WeakMap(); // GPUBindGroup → its entries ({ binding, resource })
+  const textureOf = new WeakMap(); // GPUTextureView → its GPUTexture
+  after(GPUDevice.prototype, 'createBindGroup', (device, [desc], group) => groupsOf.set(group, [...((desc && desc.entries) || [])].map((e) => ({ binding: e.binding, resource: e.resource }))));
+  after(GPUTexture.prototype, 'createView', (texture, args, view) => textureOf.set(view, texture));
+  // the size of the texture a pass draws into (its first colour attachment's)
+  after(GPUCommandEncoder.prototype, 'beginRenderPass', (encoder, [desc], pass) => {
+    const a = desc && desc.colorAttachments && [...desc.colorAttachments].find(Boolean);
+    const t = a && textureOf.get(a.view);
+    if (t) stateOf(pass).size = { width: t.width, height: t.height };
+  });
+  after(GPURenderPassEncoder.prototype, 'setBindGroup', (pass, [index, group, offsets]) => {
+    stateOf(pass).groups[index] = group ? { group, entries: groupsOf.get(group) || null, dynamic: !!(offsets && offsets.length) } : null;
+  });
+  return (device, desc, code) => {
+    const v = desc.vertex || {}, depth = desc.depthStencil;
+    return { device, code, entryPoint: v.entryPoint, constants: v.constants, buffers: v.buffers, primitive: desc.primitive || {}, depth: depth ? { compare: depth.depthCompare || 'less' } : null };
+  };
+}
+
+/** The recorder as an expression for a page's script: (G) → the WebGPU record, with its bindings'. */
+export const webgpuRecorderScript = `((g) => (${webgpuGeometry})(g, ${webgpuBindings}))`;

@@ -8,15 +8,16 @@
 // grader/browser/mesh.js, a pure function also run by the unit tests).
 // The same script starts grader/browser/sent.js's record (the uniforms), which shares its helpers.
 import { meshAnalysisScript } from './mesh.js';
-import { webgpuGeometry } from './geometry-webgpu.js';
+import { webgpuRecorderScript } from './geometry-webgpu.js';
 import { sentScript } from './sent.js';
-import { surfaceReaderScript } from './surface.js';
+import { surfaceReaderScript, picturesScript } from './surface.js';
+import { webgpuSurfaceReaderScript } from './surface-webgpu.js';
 
 /** The init script as text: the recorders of what a page sends (its geometry, WebGL and WebGPU, and its uniforms) with the analysis in it. */
-export const recordersInit = `(${geometryScript})(${meshAnalysisScript}, ${webgpuGeometry}, ${sentScript}, ${geometryStore}, ${frameRecorder}, ${recordWebGL}, ${geometryReader}, ${programInfoOf}, ${surfaceReaderScript});`;
+export const recordersInit = `(${geometryScript})(${meshAnalysisScript}, ${webgpuRecorderScript}, ${sentScript}, ${geometryStore}, ${frameRecorder}, ${recordWebGL}, ${geometryReader}, ${programInfoOf}, ${surfaceReaderScript}, ${webgpuSurfaceReaderScript(picturesScript)});`;
 
 /** The init script's body (its parts are passed in as arguments: the script is their text). */
-function geometryScript(analyseMesh, recordWebGPU, recordSent, geometryStore, frameRecorder, recordWebGL, geometryReader, programInfoOf, surfaceReader) {
+function geometryScript(analyseMesh, recordWebGPU, recordSent, geometryStore, frameRecorder, recordWebGL, geometryReader, programInfoOf, surfaceReader, webgpuSurfaceReader) {
   if (window.__geometry || !window.WebGLRenderingContext) return;
   const G = geometryStore();
   Object.defineProperty(window, '__geometry', { value: G.rec, enumerable: false });
@@ -28,7 +29,9 @@ function geometryScript(analyseMesh, recordWebGPU, recordSent, geometryStore, fr
   recordWebGPU({ frameOf, closeFrame, wrap, bytesIn, vertexInputs: analyseMesh.vertexInputs, MAX_DRAWS, FLOAT, TRIANGLES });
   recordSent({ wrap, bytesIn });
   G.rec.read = read;
-  G.rec.surface = surfaceReader(G, infoOf); // (grader/browser/surface.js: the surface per pixel)
+  // the surface per pixel (grader/browser/surface.js; a frame drawn with WebGPU: surface-webgpu.js, a promise)
+  const webgl = surfaceReader(G, infoOf), webgpu = webgpuSurfaceReader(G);
+  G.rec.surface = (opts) => webgpu(opts) || webgl(opts);
 }
 
 /**

@@ -23,7 +23,7 @@ function surfaceReaderOf(calls, shaders, copyUniforms, copyAttributes, drawPass,
     if (!N || !N.offscreenGetContext || !N.WebGL2RenderingContext) return { why: 'this browser has no WebGL 2 OffscreenCanvas for the grader to draw the page\'s geometry again' };
     const frame = rec.cur && rec.cur.draws.length ? rec.cur : rec.last;
     const draws = frame ? frame.draws.filter((d) => !d.resolve && d.mode === TRIANGLES && d.count >= 3 && d.program) : [];
-    if (!draws.length) return { why: frame && frame.draws.some((d) => d.resolve) ? 'a WebGPU page: its surface is not drawn again here' : 'no separate triangles (gl.TRIANGLES) were drawn in the last frame' };
+    if (!draws.length) return { why: 'no separate triangles (gl.TRIANGLES) were drawn in the last frame' };
     const pg = draws[0].gl, width = pg.drawingBufferWidth, height = pg.drawingBufferHeight;
     const { gl, page } = calls(N, pg, new OffscreenCanvas(width, height));
     if (!gl) return { why: 'the grader could not make a WebGL 2 context of its own' };
@@ -227,3 +227,6 @@ const PARTS = [calls, shaders, copyUniforms, copyAttributes, drawPass, pictures]
 
 /** The reader's maker as an expression for a page's script: (G, infoOf) → rec.surface. */
 export const surfaceReaderScript = `(${surfaceReaderOf})(${PARTS.join(', ')})`;
+
+/** pictures() as text, for the WebGPU reader (grader/browser/surface-webgpu.js), which makes the same pictures. */
+export const picturesScript = `${pictures}`;

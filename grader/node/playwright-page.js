@@ -176,9 +176,9 @@ export function pageDriver(page, log) {
     geometry: (limits) => page.evaluate((l) => (window.__geometry ? window.__geometry.read(l) : { why: 'the geometry was not recorded' }), limits),
     /** The surface the last frame drew, per pixel (grader/browser/surface.js): its two pictures as { width, height, data }. */
     surface: async (opts) => {
-      const r = await page.evaluate((o) => {
+      const r = await page.evaluate(async (o) => {
         if (!window.__geometry || !window.__geometry.surface) return { why: 'the geometry was not recorded' };
-        const s = window.__geometry.surface(o);
+        const s = await window.__geometry.surface(o);
         const base64 = (bytes) => {
           let text = '';
           for (let i = 0; i < bytes.length; i += 0x8000) text += String.fromCharCode.apply(null, bytes.subarray(i, i + 0x8000));
