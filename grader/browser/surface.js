@@ -23,7 +23,7 @@ function surfaceReaderOf(calls, shaders, copyUniforms, copyAttributes, drawPass,
     if (!N || !N.offscreenGetContext || !N.WebGL2RenderingContext) return { why: 'this browser has no WebGL 2 OffscreenCanvas for the grader to draw the page\'s geometry again' };
     const frame = rec.cur && rec.cur.draws.length ? rec.cur : rec.last;
     const draws = frame ? frame.draws.filter((d) => !d.resolve && d.mode === TRIANGLES && d.count >= 3 && d.program) : [];
-    if (!draws.length) return { why: 'no separate triangles (gl.TRIANGLES) were drawn in the last frame' };
+    if (!draws.length) return { why: frame && frame.draws.some((d) => d.resolve) ? 'a WebGPU page whose pipelines the grader did not see made' : 'no separate triangles (gl.TRIANGLES) were drawn in the last frame' };
     const pg = draws[0].gl, width = pg.drawingBufferWidth, height = pg.drawingBufferHeight;
     const { gl, page } = calls(N, pg, new OffscreenCanvas(width, height));
     if (!gl) return { why: 'the grader could not make a WebGL 2 context of its own' };
