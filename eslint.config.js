@@ -7,6 +7,7 @@ import globals from 'globals';
 // the grader's core runs in Node and in the browser alike: its own modules only
 const CORE_ONLY = { regex: '^(node:|[a-z@])', message: 'the grader\'s core imports only its own modules (no Node, no packages)' };
 const NOT_TOOLS = { regex: '(^|/)tools/', message: 'the check page and the grader import the grader from grader/, never from tools/' };
+const NOT_CHECK = { regex: '(^|/)check/', message: 'the grader takes what it shares with the check page from grader/core/, never from check/' };
 
 export default [
   { ignores: ['node_modules/', 'out/', 'test-results/', 'playwright-report/', 'tests/fixtures/handins/', 'tests/fixtures/student/', 'tests/fixtures/similar/', 'tests/fixtures/artifacts/', 'tests/fixtures/check/', 'tests/fixtures/firefox/', 'tests/fixtures/heavy/'] },
@@ -45,8 +46,17 @@ export default [
   },
   {
     files: ['grader/node/**'],
-    rules: { 'no-restricted-imports': ['error', { patterns: [NOT_TOOLS, { regex: '(^|/)check/', message: 'the grader takes what it shares with the check page from grader/core/, never from check/' }] }] },
+    rules: { 'no-restricted-imports': ['error', { patterns: [NOT_TOOLS, NOT_CHECK] }] },
   },
+  // grader/node/ in rooms: cli/ (the command: options, help, progress, the teacher's loop) above
+  // run/ (the browsers, the workers, serving a hand-in), sites/ (the course sites' downloads and
+  // import files) and report/ (the report, the feedback pages, the item analysis), which never
+  // import each other or the command: what two of them share lives below them (grader/files/)
+  ...['run', 'sites', 'report'].map((room) => ({
+    files: [`grader/node/${room}/**`],
+    rules: { 'no-restricted-imports': ['error', { patterns: [NOT_TOOLS, NOT_CHECK, { regex: `(^|/)(${['cli', 'run', 'sites', 'report'].filter((r) => r !== room).join('|')})/`,
+      message: `grader/node/${room}/ imports neither the command (cli/) nor another room: put what they share below them, in grader/files/ or grader/core/` }] }] },
+  })),
   {
     files: ['check/**'],
     rules: { 'no-restricted-imports': ['error', { patterns: [NOT_TOOLS, { regex: '(^|/)grader/(node|similarity|files)/', message: 'the check page takes the grader from grader/core/ only' }] }] },

@@ -1,11 +1,11 @@
-// Browser tests: the machine's Chromium and Firefox (grader/node/find-browser.js: Debian's Chromium
+// Browser tests: the machine's Chromium and Firefox (grader/node/run/find-browser.js: Debian's Chromium
 // and Firefox ESR here; never a downloaded browser), small canvases,
 // one server. Every Chromium spec runs under WebGL 2 (the page's ?api= is set from the project),
 // and what the API changes in the page specs again under WebGPU, whose screenshots must match the
 // WebGL 2 baselines. The project "firefox" runs firefox.spec.js, which
 // launches Firefox itself (puppeteer-core over WebDriver BiDi: tests/browser/firefox-fixtures.js).
 import { defineConfig } from '@playwright/test';
-import { CHROMIUM, CHROMIUM_ARGS, CHROMIUM_MISSING, WEBGPU_ARGS } from './grader/node/chromium.js';
+import { CHROMIUM, CHROMIUM_ARGS, CHROMIUM_MISSING, WEBGPU_ARGS } from './grader/node/run/chromium.js';
 
 const PORT = Number(process.env.TEST_PORT || 4173);
 // (without one, Playwright would ask for a browser of its own to be downloaded: say what to install instead)

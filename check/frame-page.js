@@ -1,5 +1,5 @@
 // The grader's page interface (what grader/core/gather/ drives) on a same-origin iframe of the
-// check page, as grader/node/playwright-page.js is on a Playwright page: state, snap, controls,
+// check page, as grader/node/run/playwright-page.js is on a Playwright page: state, snap, controls,
 // click, setValue, press, tick, setNoCull, sources, errors. The frame's scripts were put in place by
 // check/serve.js: window.__grade (grader/browser/instrument.js), window.__webgpuCapture
 // (grader/browser/webgpu-capture.js), window.__checkClock (grader/browser/clock.js), window.__checkWatch

@@ -43,7 +43,7 @@ function main() {
   const out = path.resolve(o.out || mkdtempSync(path.join(os.tmpdir(), 'bench-grader-')));
   console.error(`bench:grader: grading ${handins} into ${out}`);
   const t0 = Date.now();
-  const run = spawnSync(process.execPath, [path.join(repo, 'grader/node/grade.js'), '--batch', handins, ...(existsSync(labels) ? ['--labels', labels] : []),
+  const run = spawnSync(process.execPath, [path.join(repo, 'grader/node/cli/grade.js'), '--batch', handins, ...(existsSync(labels) ? ['--labels', labels] : []),
     '--out', out, '--workers', o.workers || '2'], { stdio: ['ignore', 'ignore', 'inherit'] });
   const wall = (Date.now() - t0) / 1000;
   const reportFile = path.join(out, 'report.json');

@@ -22,7 +22,7 @@ import { compareToReference, shadingError, silhouetteErrorPx } from './reference
 import { toRGBA8 } from './reference/png.js';
 import { PNG } from 'pngjs';
 import { canvasScreenshot, startServer } from './browser.js';
-import { CHROMIUM_ARGS, WEBGPU_ARGS, launchChromium } from '../grader/node/chromium.js';
+import { CHROMIUM_ARGS, WEBGPU_ARGS, launchChromium } from '../grader/node/run/chromium.js';
 import { parseOptions, progressLine, runCommand } from './cli.js';
 import { chooseLevel } from '../common/sphere.js';
 import { EDGE_CASES, STEP } from './edge-cases.js';

@@ -1,6 +1,6 @@
 // Shared by the command-line tools and the browser tests: a canvas's screenshot on whole pixels,
-// and the site's static server on a free loopback port. (Launching a browser: grader/node/chromium.js
-// and grader/node/firefox.js, which the grader owns.)
+// and the site's static server on a free loopback port. (Launching a browser: grader/node/run/chromium.js
+// and grader/node/run/firefox.js, which the grader owns.)
 import { spawn } from 'node:child_process';
 import { readFileSync } from 'node:fs';
 import net from 'node:net';

@@ -15,7 +15,7 @@ import { fileURLToPath, pathToFileURL } from 'node:url';
 import { renderReference } from './reference/render.js';
 import { meshDeviation, shadingError } from './reference/measure.js';
 import { startServer } from './browser.js';
-import { CHROMIUM_ARGS, launchChromium } from '../grader/node/chromium.js';
+import { CHROMIUM_ARGS, launchChromium } from '../grader/node/run/chromium.js';
 import { isMainScript, parseOptions, progressLine, runCommand, wholeNumber } from './cli.js';
 import { MAX_LEVEL, sphereMesh } from '../common/sphere.js';
 

@@ -42,7 +42,7 @@ export function wholeNumber(text, label, min, max) {
 }
 
 // (the progress line lives beside the grader's, which uses it too)
-export { progressLine } from '../grader/node/progress-line.js';
+export { progressLine } from '../grader/node/cli/progress-line.js';
 
 /** Whether the module at `moduleUrl` (its import.meta.url) is the script node was started with; importing it, as a test does, runs nothing. */
 export function isMainScript(moduleUrl) {

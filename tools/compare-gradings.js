@@ -5,7 +5,7 @@
 // busy processes, then run this.
 import { existsSync, readFileSync, readdirSync } from 'node:fs';
 import path from 'node:path';
-import { readArtifact, listArtifacts } from '../grader/node/artifacts.js';
+import { readArtifact, listArtifacts } from '../grader/node/run/artifacts.js';
 import { parseOptions, UsageError, progressLine } from './cli.js';
 
 const HELP = `usage: node tools/compare-gradings.js --a OUT1 --b OUT2

@@ -1,14 +1,14 @@
 #!/usr/bin/env node
 // Makes a fresh machine ready for `npm start`, `npm test`, `npm run grade` and `npm run bench`: installs the npm packages if they are
 // missing, and checks for a Chromium (or Chrome, or Edge), and with --firefox a Firefox too, as
-// grader/node/find-browser.js finds them (installing Debian's with apt-get when we are root on Debian
+// grader/node/run/find-browser.js finds them (installing Debian's with apt-get when we are root on Debian
 // or Ubuntu, else printing the one line to run for this OS).
 // Runs before each of them (npm's pre-scripts); uses only Node's own modules.
 import { existsSync } from 'node:fs';
 import { spawnSync } from 'node:child_process';
 import { fileURLToPath } from 'node:url';
 import path from 'node:path';
-import { ENV_VAR, findHere } from '../grader/node/find-browser.js';
+import { ENV_VAR, findHere } from '../grader/node/run/find-browser.js';
 
 const root = path.dirname(path.dirname(fileURLToPath(import.meta.url)));
 const args = process.argv.slice(2);
@@ -41,9 +41,9 @@ if (!existsSync(marker)) {
   }
 }
 
-// The browsers npm test drives, found as grader/node/find-browser.js finds them (CHROMIUM_PATH,
+// The browsers npm test drives, found as grader/node/run/find-browser.js finds them (CHROMIUM_PATH,
 // FIREFOX_PATH, the usual installs of this OS, Playwright's cache): Chromium (Playwright) and
-// Firefox (puppeteer-core, grader/node/firefox.js)
+// Firefox (puppeteer-core, grader/node/run/firefox.js)
 const wanted = args.includes('--no-browser') ? [] : args.includes('--firefox') ? ['chromium', 'firefox'] : ['chromium'];
 const missing = () => wanted.map((kind) => ({ kind, ...findHere(kind) })).filter((b) => !b.found);
 const lacking = missing();

@@ -9,7 +9,7 @@ import path from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { PNG } from 'pngjs';
 import { canvasScreenshot, startServer } from './browser.js';
-import { launchChromium } from '../grader/node/chromium.js';
+import { launchChromium } from '../grader/node/run/chromium.js';
 import { isMainScript, parseOptions, progressLine, runCommand } from './cli.js';
 import { readPNG } from './reference/png.js';
 

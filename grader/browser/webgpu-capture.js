@@ -1,5 +1,5 @@
 // Seeing what a WebGPU page draws in headless Chromium. Headless Chromium gets a SwiftShader
-// WebGPU adapter (WEBGPU_ARGS, grader/node/chromium.js) but cannot present a WebGPU canvas: a screenshot shows one flat
+// WebGPU adapter (WEBGPU_ARGS, grader/node/run/chromium.js) but cannot present a WebGPU canvas: a screenshot shows one flat
 // colour. So an init script (webgpuCaptureScript, for context.addInitScript) stands in for the
 // canvas's 'webgpu' context: configure() remembers the device and format, getCurrentTexture()
 // hands out an ordinary texture of the canvas's size (RENDER_ATTACHMENT | COPY_SRC | the page's

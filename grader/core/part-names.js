@@ -3,7 +3,7 @@
 // case-insensitive, in the spellings students use (WP04P1, Part1, part1, p1, p01, w4p1, week04p01,
 // worksheet4/part1, W4-1, Danish Del1, ...); a course site's numbered sections (3.2.1.-Sphere …
 // 3.2.5.-Phong-shading); a step's title in a name (sphere/, gouraud.html) or, where the names say
-// nothing, in the page's <title> or first heading. grader/node/parts.js walks the folders on disk.
+// nothing, in the page's <title> or first heading. grader/files/parts.js walks the folders on disk.
 
 export const PARTS = ['WP04P1', 'WP04P2', 'WP04P3', 'WP04P4', 'WP04P5'];
 

@@ -1,5 +1,5 @@
 // A teacher's rubric over the default one (grader/core/rubric.json): the command line
-// (grader/node/grade.js) merges with it, and the check page can too: plain data, no Node.
+// (grader/node/cli/grade.js) merges with it, and the check page can too: plain data, no Node.
 import { AUDITS } from './audits/index.js';
 
 /** The names a part's `must` had before it listed audit ids, and the audit each one is. */

@@ -7,7 +7,7 @@ import path from 'node:path';
 import { PNG } from 'pngjs';
 import { partFiles } from '../files/layout.js';
 
-/** The judged picture of a hand-in's part in a grading out folder (its artifact: grader/node/artifacts.js), or null. */
+/** The judged picture of a hand-in's part in a grading out folder (its artifact: grader/node/run/artifacts.js), or null. */
 export function judgedPicture(out, name, part) {
   const dir = partFiles(out, name, part).artifactDir;
   try {

@@ -52,7 +52,7 @@ export function gradeVerdicts(dir, names) {
   for (const n of names) cpSync(path.join(dir, 'class', n), path.join(batch, n), { recursive: true });
   const rubric = path.join(dir, 'rubric.json');
   writeFileSync(rubric, JSON.stringify({ reference: false }));
-  const run = spawnSync(process.execPath, ['grader/node/grade.js', '--batch', batch, '--rubric', rubric, '--out', path.join(dir, 'report')],
+  const run = spawnSync(process.execPath, ['grader/node/cli/grade.js', '--batch', batch, '--rubric', rubric, '--out', path.join(dir, 'report')],
     { encoding: 'utf8', timeout: 3_000_000 });
   expect(run.status, run.stderr + run.stdout.slice(-2000)).toBe(0);
   return partsByName(JSON.parse(readFileSync(path.join(dir, 'report', 'report.json'), 'utf8')));

@@ -20,7 +20,7 @@ import { zipSync } from 'fflate';
 import { PNG } from 'pngjs';
 import { buildClass } from '../fixtures/build.js';
 import { copyHandins } from '../fixtures/handins.js';
-import { CHROMIUM, CHROMIUM_ARGS, WEBGPU_ARGS } from '../../grader/node/chromium.js';
+import { CHROMIUM, CHROMIUM_ARGS, WEBGPU_ARGS } from '../../grader/node/run/chromium.js';
 import { STEPS, maxDifference, renderThumbnails, thumbnailPath } from '../../tools/thumbnails.js';
 import { readPNG } from '../../tools/reference/png.js';
 import { checkFolder, gradeVerdicts, routeRubric } from './check-helpers.js';

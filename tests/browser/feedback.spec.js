@@ -1,4 +1,4 @@
-// A student's feedback page (grader/node/feedback/) opened from disk as a student opens it, with
+// A student's feedback page (grader/node/report/) opened from disk as a student opens it, with
 // the network off: every part's verdict is there, every picture loads (inlined), nothing is
 // fetched, no other student is named, and axe finds no serious or critical violation. Made from
 // the RECORDED fixture class (tests/fixtures/artifacts/, judged without a browser), in seconds.
@@ -9,9 +9,9 @@ import os from 'node:os';
 import path from 'node:path';
 import { pathToFileURL } from 'node:url';
 import { recordedOut, testRubric } from '../unit/recorded-out.js';
-import { readClass } from '../../grader/node/class-results.js';
-import { prepareClass, writeTeacherFiles } from '../../grader/node/teacher-loop.js';
-import { writeReport } from '../../grader/node/report.js';
+import { readClass } from '../../grader/node/report/class-results.js';
+import { prepareClass, writeTeacherFiles } from '../../grader/node/cli/teacher-loop.js';
+import { writeReport } from '../../grader/node/report/report.js';
 
 const NAMES = ['ada', 'cy', 'eve'];
 const FULL = { ada: 'Ada Lovelace', cy: 'Cy Twombly', eve: 'Eve Ærø Ås' };

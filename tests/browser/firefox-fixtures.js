@@ -1,11 +1,11 @@
-// The Firefox suite's fixtures: Debian's Firefox ESR (grader/node/firefox.js, puppeteer-core over WebDriver
+// The Firefox suite's fixtures: Debian's Firefox ESR (grader/node/run/firefox.js, puppeteer-core over WebDriver
 // BiDi), launched once per worker, and a page per test that fixtures.js's helpers (open, scene,
 // andDraw, canvasPixels, errorAgainstReference, messages) drive as they drive Chromium's: a
 // puppeteer page wearing the few methods of Playwright's that they use. As in Chromium, the page
 // counts its WebGL calls (fixtures.js: instrument), and a test fails on any page error, console
 // error or gl.getError() other than NO_ERROR.
 import { test as base, expect } from '@playwright/test';
-import { launchFirefox } from '../../grader/node/firefox.js';
+import { launchFirefox } from '../../grader/node/run/firefox.js';
 import { instrument } from './fixtures.js';
 
 const VIEWPORT = { width: 800, height: 700 };

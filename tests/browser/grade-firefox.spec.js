@@ -1,4 +1,4 @@
-// npm run grade -- --browser firefox: the grader in Debian's Firefox ESR (grader/node/grade-firefox.js,
+// npm run grade -- --browser firefox: the grader in Debian's Firefox ESR (grader/node/run/grade-firefox.js,
 // firefox-page.js), on two hand-written fixture hand-ins: carla's WP04P1 (WebGL, drawn in a
 // requestAnimationFrame loop, so it shows only if the driver runs frames) gets its label, pass;
 // jonas's WP04P1 (WebGPU, which this Firefox does not have) is "not graded here", with the reason,
@@ -24,7 +24,7 @@ test('--browser firefox: a WebGL part gets its label; a WebGPU part is not grade
   const labels = path.join(dir, 'labels.tsv');
   writeFileSync(labels, 'submission\tpart\tlabel\treasons\ncarla\tWP04P1\tcorrect\trAF loop\njonas\tWP04P1\tcorrect\tWebGPU\nelin\tWP04P2\tcorrect\tscripts before <html>\n');
   const out = path.join(dir, 'out');
-  const grade = (...args) => spawnSync(process.execPath, ['grader/node/grade.js', ...args, '--rubric', 'tests/fixtures/test-rubric.json', '--labels', labels],
+  const grade = (...args) => spawnSync(process.execPath, ['grader/node/cli/grade.js', ...args, '--rubric', 'tests/fixtures/test-rubric.json', '--labels', labels],
     { encoding: 'utf8', timeout: 170_000 });
   const run = grade('--batch', path.join(dir, 'class'), '--browser', 'firefox', '--workers', '1', '--out', out);
   expect(run.status, run.stderr + run.stdout.slice(-3000)).toBe(0);

@@ -14,7 +14,7 @@ import { unzipSync } from 'fflate';
 
 const HANDINS = path.resolve(import.meta.dirname, '../fixtures/handins');
 
-const grade = (...args) => spawnSync(process.execPath, ['grader/node/grade.js', ...args, '--rubric', 'tests/fixtures/test-rubric.json', '--workers', '1'],
+const grade = (...args) => spawnSync(process.execPath, ['grader/node/cli/grade.js', ...args, '--rubric', 'tests/fixtures/test-rubric.json', '--workers', '1'],
   { encoding: 'utf8', timeout: 170_000 });
 
 /** report.json without what differs run to run: when it was written and how long each part took. */

@@ -9,12 +9,12 @@ import path from 'node:path';
 import { test, expect, chromium } from '@playwright/test';
 import { buildClass } from '../fixtures/build.js';
 import { copyHandins } from '../fixtures/handins.js';
-import { readArtifact } from '../../grader/node/artifacts.js';
+import { readArtifact } from '../../grader/node/run/artifacts.js';
 import { findParts, partNumber } from '../../grader/files/parts.js';
-import { partOpener } from '../../grader/node/playwright-page.js';
-import { CHROMIUM, CHROMIUM_ARGS, WEBGPU_ARGS } from '../../grader/node/chromium.js';
+import { partOpener } from '../../grader/node/run/playwright-page.js';
+import { CHROMIUM, CHROMIUM_ARGS, WEBGPU_ARGS } from '../../grader/node/run/chromium.js';
 import { webgpuCaptureScript, readWebGPUFrame } from '../../grader/browser/webgpu-capture.js';
-import { launchFirefox } from '../../grader/node/firefox.js';
+import { launchFirefox } from '../../grader/node/run/firefox.js';
 import { checkClassInFirefox, NO_WEBGPU, partsByName } from './check-helpers.js';
 
 const RECORDED = path.resolve(import.meta.dirname, '../fixtures/artifacts');
@@ -145,7 +145,7 @@ test.describe(`gathering live gives the recorded artifacts (${LIVE.join(', ')})`
     copyHandins(path.join(dir, 'all'));
     for (const name of LIVE) cpSync(path.join(dir, 'all', name), path.join(dir, 'class', name), { recursive: true });
     out = path.join(dir, 'report');
-    run = spawnSync(process.execPath, ['grader/node/grade.js', '--batch', path.join(dir, 'class'), '--rubric', 'tests/fixtures/test-rubric.json', '--out', out],
+    run = spawnSync(process.execPath, ['grader/node/cli/grade.js', '--batch', path.join(dir, 'class'), '--rubric', 'tests/fixtures/test-rubric.json', '--out', out],
       { encoding: 'utf8', timeout: 1_200_000 });
     expect(run.status, run.stderr + run.stdout.slice(-3000)).toBe(0);
   });
@@ -188,7 +188,7 @@ test.describe(`gathering live gives the recorded artifacts (${LIVE.join(', ')})`
     expect(csv.find((l) => l.startsWith('ada,')).split(',').slice(1, 7)).toEqual(['5', 'pass', 'pass', 'pass', 'pass', 'pass']);
     expect(findParts(path.join(dir, 'all', 'cy')).WP04P3).toBe(path.join('Lab 4', 'w04', 'w04p03.html'));
     expect(findParts(path.join(dir, 'all', 'bo')).WP04P2).toBe(path.join('week04', 'part02', 'index.html'));
-    const again = spawnSync(process.execPath, ['grader/node/grade.js', '--audit-only', out, '--rubric', 'tests/fixtures/test-rubric.json'], { encoding: 'utf8' });
+    const again = spawnSync(process.execPath, ['grader/node/cli/grade.js', '--audit-only', out, '--rubric', 'tests/fixtures/test-rubric.json'], { encoding: 'utf8' });
     expect(again.status, again.stderr).toBe(0);
     expect(verdicts(JSON.parse(readFileSync(path.join(out, 'report.json'), 'utf8')))).toEqual(verdicts(report));
   });
@@ -246,7 +246,7 @@ test.describe('grading real hand-ins against their labels', () => {
     const started = Date.now();
     const firefox = await launchFirefox();
     const [graded, checked] = await Promise.all([
-      run(['grader/node/grade.js', '--batch', cls, '--labels', path.join(cls, 'labels.tsv'), '--rubric', rubric, '--out', out], 2_400_000),
+      run(['grader/node/cli/grade.js', '--batch', cls, '--labels', path.join(cls, 'labels.tsv'), '--rubric', rubric, '--out', out], 2_400_000),
       checkClassInFirefox(firefox, baseURL, HANDINS, checkedInFirefox(names), mkdtempSync(path.join(os.tmpdir(), 'handins-zip-'))).finally(() => firefox.close()),
     ]);
     expect(graded.status, graded.stderr + graded.stdout.slice(-3000)).toBe(0);
@@ -263,7 +263,7 @@ test.describe('grading real hand-ins against their labels', () => {
     expect(a.brokenPassed, summary).toBe(0);
     expect(a.partialPassed, summary).toBeLessThanOrEqual(1);
     // judged again from the saved artifacts, with no browser: the same verdicts and reasons
-    const again = spawnSync(process.execPath, ['grader/node/grade.js', '--audit-only', out, '--rubric', rubric], { encoding: 'utf8' });
+    const again = spawnSync(process.execPath, ['grader/node/cli/grade.js', '--audit-only', out, '--rubric', rubric], { encoding: 'utf8' });
     expect(again.status, again.stderr).toBe(0);
     expect(verdicts(JSON.parse(readFileSync(path.join(out, 'report.json'), 'utf8')))).toEqual(verdicts(report));
     // the check page in Firefox: the grader's verdict on every WebGL part, but where the engines
@@ -304,7 +304,7 @@ test('a heavy page past the rubric\'s bound is not graded here, never failed', (
   test.skip(testInfo.project.name !== 'webgl2', 'the grader runs its own Chromium; once is enough');
   const out = mkdtempSync(path.join(os.tmpdir(), 'heavy-'));
   writeFileSync(path.join(out, 'rubric.json'), JSON.stringify({ timeoutSeconds: 20, deadlineShare: 0.25, reference: false }));
-  const run = spawnSync(process.execPath, ['grader/node/grade.js', 'tests/fixtures/heavy/dagny', '--rubric', path.join(out, 'rubric.json'), '--out', out], { encoding: 'utf8', timeout: 120_000 });
+  const run = spawnSync(process.execPath, ['grader/node/cli/grade.js', 'tests/fixtures/heavy/dagny', '--rubric', path.join(out, 'rubric.json'), '--out', out], { encoding: 'utf8', timeout: 120_000 });
   expect(run.status, run.stderr).toBe(0);
   const p5 = JSON.parse(readFileSync(path.join(out, 'report.json'), 'utf8')).submissions[0].parts.find((p) => p.part === 'WP04P5');
   expect([p5.verdict, p5.status]).toEqual(['not graded here', 'too slow']);
@@ -317,7 +317,7 @@ test('a heavy page past the rubric\'s budget of work is not graded here, never f
   test.skip(testInfo.project.name !== 'webgl2', 'the grader runs its own Chromium; once is enough');
   const out = mkdtempSync(path.join(os.tmpdir(), 'heavy-'));
   writeFileSync(path.join(out, 'rubric.json'), JSON.stringify({ thresholds: { gatherWork: 20e6 }, reference: false }));
-  const run = spawnSync(process.execPath, ['grader/node/grade.js', 'tests/fixtures/heavy/dagny', '--rubric', path.join(out, 'rubric.json'), '--out', out], { encoding: 'utf8', timeout: 120_000 });
+  const run = spawnSync(process.execPath, ['grader/node/cli/grade.js', 'tests/fixtures/heavy/dagny', '--rubric', path.join(out, 'rubric.json'), '--out', out], { encoding: 'utf8', timeout: 120_000 });
   expect(run.status, run.stderr).toBe(0);
   const p5 = JSON.parse(readFileSync(path.join(out, 'report.json'), 'utf8')).submissions[0].parts.find((p) => p.part === 'WP04P5');
   expect([p5.verdict, p5.status]).toEqual(['not graded here', 'too heavy']);
@@ -325,17 +325,17 @@ test('a heavy page past the rubric\'s budget of work is not graded here, never f
 });
 
 test('a submission folder that does not exist: a clear message and exit code 1; a bad rubric: exit code 2', () => {
-  const run = spawnSync(process.execPath, ['grader/node/grade.js', '/nonexistent/student'], { encoding: 'utf8' });
+  const run = spawnSync(process.execPath, ['grader/node/cli/grade.js', '/nonexistent/student'], { encoding: 'utf8' });
   expect(run.status).toBe(1);
   expect(run.stderr).toContain('grade: no such folder: /nonexistent/student');
-  const usage = spawnSync(process.execPath, ['grader/node/grade.js', '--bogus'], { encoding: 'utf8' });
+  const usage = spawnSync(process.execPath, ['grader/node/cli/grade.js', '--bogus'], { encoding: 'utf8' });
   expect(usage.status).toBe(2);
-  const rubric = spawnSync(process.execPath, ['grader/node/grade.js', '--rubric', '/nonexistent/rubric.json', mkdtempSync(path.join(os.tmpdir(), 'empty-'))], { encoding: 'utf8' });
+  const rubric = spawnSync(process.execPath, ['grader/node/cli/grade.js', '--rubric', '/nonexistent/rubric.json', mkdtempSync(path.join(os.tmpdir(), 'empty-'))], { encoding: 'utf8' });
   expect(rubric.status).toBe(2);
   expect(rubric.stderr).toContain('cannot read the rubric');
   const badMust = path.join(mkdtempSync(path.join(os.tmpdir(), 'rubric-')), 'mine.json');
   writeFileSync(badMust, JSON.stringify({ parts: { WP04P3: { must: ['diffuse', 'difuse'] } } }));
-  const must = spawnSync(process.execPath, ['grader/node/grade.js', '--rubric', badMust, mkdtempSync(path.join(os.tmpdir(), 'empty-'))], { encoding: 'utf8' });
+  const must = spawnSync(process.execPath, ['grader/node/cli/grade.js', '--rubric', badMust, mkdtempSync(path.join(os.tmpdir(), 'empty-'))], { encoding: 'utf8' });
   expect(must.status).toBe(2);
   expect(must.stderr).toContain('mine.json: the rubric\'s parts.WP04P3.must names "difuse", which no audit has');
   expect(findParts('/nonexistent')).toEqual({ WP04P1: null, WP04P2: null, WP04P3: null, WP04P4: null, WP04P5: null });

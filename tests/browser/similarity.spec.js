@@ -28,7 +28,7 @@ test.beforeAll(({}, testInfo) => {
       writeFileSync(path.join(out, 'parts', name, `${part}.json`), JSON.stringify({ name, part, verdict: 'review', status: 'graded', reasons: [], api: 'webgl', actions: [] }));
     }
   }
-  const run = spawnSync(process.execPath, ['grader/node/grade.js', '--batch', cls, '--similarity-only', '--out', out], { encoding: 'utf8' });
+  const run = spawnSync(process.execPath, ['grader/node/cli/grade.js', '--batch', cls, '--similarity-only', '--out', out], { encoding: 'utf8' });
   expect(run.status, run.stderr).toBe(0);
 });
 test.afterAll(() => { if (dir) rmSync(dir, { recursive: true, force: true }); });

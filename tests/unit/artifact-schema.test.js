@@ -7,7 +7,7 @@ import { mkdtempSync, readFileSync } from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
 import { ARTIFACT_SCHEMA, currentFacts } from '../../grader/core/artifact-schema.js';
-import { readArtifact, writeArtifact } from '../../grader/node/artifacts.js';
+import { readArtifact, writeArtifact } from '../../grader/node/run/artifacts.js';
 import { rolesInWords } from '../../grader/core/computed/roles.js';
 import { mergeRubric } from '../../grader/core/rubric.js';
 import { staleKeys } from '../../grader/core/gather/reads.js';

@@ -7,12 +7,12 @@ import assert from 'node:assert/strict';
 import { existsSync, readFileSync, readdirSync } from 'node:fs';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
-import { auditDirs } from '../../grader/node/audit-pool.js';
+import { auditDirs } from '../../grader/node/run/audit-pool.js';
 import { judgement } from '../../grader/core/part-result.js';
 import { mergeRubric } from '../../grader/core/rubric.js';
 import { AUDITS } from '../../grader/core/audits/index.js';
 import { missedSlides } from '../../check/slides.js';
-import { gradesCsv } from '../../grader/node/grades-csv.js';
+import { gradesCsv } from '../../grader/node/report/grades-csv.js';
 import { PARTS } from '../../grader/core/part-names.js';
 import { readTable } from '../../grader/files/csv.js';
 

@@ -15,8 +15,8 @@ import { strictly } from '../../grader/core/audits/strict.js';
 import { judgement } from '../../grader/core/part-result.js';
 import { mergeRubric } from '../../grader/core/rubric.js';
 import { PARTS } from '../../grader/core/part-names.js';
-import { readArtifact, listArtifacts } from '../../grader/node/artifacts.js';
-import { gradesCsv } from '../../grader/node/grades-csv.js';
+import { readArtifact, listArtifacts } from '../../grader/node/run/artifacts.js';
+import { gradesCsv } from '../../grader/node/report/grades-csv.js';
 import { readTable } from '../../grader/files/csv.js';
 import { auditTable, withTable, README } from '../../tools/audit-table.js';
 

@@ -1,4 +1,4 @@
-// The grader's CSV and TSV (grader/node/csv.js over csv-parse and csv-stringify) where a teacher's
+// The grader's CSV and TSV (grader/files/csv.js over csv-parse and csv-stringify) where a teacher's
 // files come in: each site's class list as the site exports it (Brightspace's "#" before ids and
 // its BOM, Canvas's "Last, First" and Points Possible row, Moodle's fputcsv quoting and its tab
 // choice), labels.tsv and overrides.tsv as a spreadsheet saves them (quoted cells holding a tab, a
@@ -6,9 +6,9 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { csvText, readRows, readTable } from '../../grader/files/csv.js';
-import { matchRoster, parseRoster } from '../../grader/node/roster.js';
-import { parseLabels } from '../../grader/node/labels.js';
-import { parseOverrides } from '../../grader/node/overrides.js';
+import { matchRoster, parseRoster } from '../../grader/node/sites/roster.js';
+import { parseLabels } from '../../grader/node/report/labels.js';
+import { parseOverrides } from '../../grader/node/report/overrides.js';
 
 const BOM = '\uFEFF';
 const crlf = (lines) => `${lines.join('\r\n')}\r\n`;

@@ -1,4 +1,4 @@
-// grader/node/find-browser.js on made-up machines: which Chromium or Firefox it picks on Debian,
+// grader/node/run/find-browser.js on made-up machines: which Chromium or Firefox it picks on Debian,
 // Ubuntu with only the snap, Fedora, macOS, Windows, Playwright's cache alone, and what it says when
 // there is none (the one install command of that OS); the environment variable wins.
 import { test } from 'node:test';
@@ -7,7 +7,7 @@ import { spawnSync } from 'node:child_process';
 import { mkdtempSync, rmSync } from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
-import { findBrowser, candidates, installCommand, linuxFamily, thisMachine } from '../../grader/node/find-browser.js';
+import { findBrowser, candidates, installCommand, linuxFamily, thisMachine } from '../../grader/node/run/find-browser.js';
 
 const DEBIAN = 'PRETTY_NAME="Debian GNU/Linux 12 (bookworm)"\nID=debian\n';
 const UBUNTU = 'NAME="Ubuntu"\nID=ubuntu\nID_LIKE=debian\n';
@@ -163,7 +163,7 @@ test('npm run grade with no browser found prints the install line and exits 1 (t
   try {
     // (PATH: an empty folder; node is run by its own path)
     const env = { PATH: empty, HOME: empty, BROWSER_FINDER_ROOT: empty };
-    const run = spawnSync(process.execPath, ['grader/node/grade.js', 'tests/fixtures/handins/anna', '--out', path.join(empty, 'out')], { encoding: 'utf8', env });
+    const run = spawnSync(process.execPath, ['grader/node/cli/grade.js', 'tests/fixtures/handins/anna', '--out', path.join(empty, 'out')], { encoding: 'utf8', env });
     assert.equal(run.status, 1, run.stderr);
     const line = installCommand('chromium', thisMachine()).line; // (Debian's apt-get line here)
     assert.ok(run.stderr.startsWith(`grade: No Chromium, Google Chrome or Microsoft Edge was found on this machine. Install one:\n  ${line}\n(or set CHROMIUM_PATH`), run.stderr);

@@ -13,7 +13,7 @@ import { unzipSync } from 'fflate';
 import { makeZip } from './downloads.js';
 import { readTable } from '../../grader/files/csv.js';
 
-const grade = fileURLToPath(new URL('../../grader/node/grade.js', import.meta.url));
+const grade = fileURLToPath(new URL('../../grader/node/cli/grade.js', import.meta.url));
 const run = (args) => spawnSync(process.execPath, [grade, ...args], { encoding: 'utf8' });
 
 test('a download of hostile hand-ins only: each student told why, every part fail, the files written, overrides applied by --report-only', () => {

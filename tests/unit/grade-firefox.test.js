@@ -10,12 +10,12 @@ import { spawnSync } from 'node:child_process';
 import { mkdtempSync, readFileSync } from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
-import { readArtifact } from '../../grader/node/artifacts.js';
+import { readArtifact } from '../../grader/node/run/artifacts.js';
 import { judged } from '../../grader/core/grade-part.js';
 import { applyAudit } from '../../grader/core/part-result.js';
 import { NOT_GRADED } from '../../grader/core/verdict.js';
-import { parseLabels, agreement, agreementText } from '../../grader/node/labels.js';
-import { writeReport } from '../../grader/node/report.js';
+import { parseLabels, agreement, agreementText } from '../../grader/node/report/labels.js';
+import { writeReport } from '../../grader/node/report/report.js';
 
 const rubric = JSON.parse(readFileSync(new URL('../../grader/core/rubric.json', import.meta.url), 'utf8'));
 const RECORDED = fileURLToPath(new URL('../fixtures/artifacts/', import.meta.url));
@@ -78,7 +78,7 @@ test('the labels and the report count a part not graded here as not graded, not 
 });
 
 test('--browser: chromium or firefox (2 on anything else); Firefox missing says how to install it', () => {
-  const grade = (args, env = {}) => spawnSync(process.execPath, ['grader/node/grade.js', ...args], { encoding: 'utf8', env: { ...process.env, ...env } });
+  const grade = (args, env = {}) => spawnSync(process.execPath, ['grader/node/cli/grade.js', ...args], { encoding: 'utf8', env: { ...process.env, ...env } });
   const bad = grade(['--browser', 'safari', '/tmp']);
   assert.equal(bad.status, 2);
   assert.match(bad.stderr, /--browser takes chromium or firefox, not "safari"/);

@@ -3,7 +3,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import path from 'node:path';
-import { linkedPart } from '../../grader/node/linked-part.js';
+import { linkedPart } from '../../grader/node/run/linked-part.js';
 
 const parts = { WP04P1: null, WP04P2: null, WP04P3: null, WP04P4: 'uge4/del4/index.html', WP04P5: 'uge4/del5/index.html' };
 const page = (body) => `<!DOCTYPE html><html><head><title>Del 5</title></head><body>${body}</body></html>`;

@@ -6,12 +6,12 @@ import assert from 'node:assert/strict';
 import { partNumber } from '../../grader/files/parts.js';
 import { partsOf } from '../../grader/core/part-names.js';
 import { findStandIn, typeOf } from '../../grader/core/standin.js';
-import { serveSubmission } from '../../grader/node/serve-submission.js';
+import { serveSubmission } from '../../grader/node/run/serve-submission.js';
 import { analyse, diffuseFit, samples, highlightSeen, highlightOffset, openMask } from '../../grader/core/measure.js';
 import { effectOf, nameRole, trialOrder } from '../../grader/core/controls.js';
 import { normalAngle } from '../../grader/core/measure/perspective.js';
 import { checkList, verdictOf, reasonsOf, findingsOf } from '../../grader/core/verdict.js';
-import { parseLabels, agreement, agreementText } from '../../grader/node/labels.js';
+import { parseLabels, agreement, agreementText } from '../../grader/node/report/labels.js';
 import { memo } from '../../grader/core/computed/memo.js';
 import { readFileSync } from 'node:fs';
 

@@ -1,4 +1,4 @@
-// npm run grade's progress as a person reads it (grader/node/progress.js and the Playwright
+// npm run grade's progress as a person reads it (grader/node/cli/progress.js and the Playwright
 // reporter progress-reporter.js), on a clock the test moves: the line's words from the counts and
 // times (the time left from the parts opened in the browser, none counted for a part not handed
 // in), and in a log (not a terminal) a plain line a part with its verdict, never a rewritten line.
@@ -7,8 +7,8 @@ import assert from 'node:assert/strict';
 import { mkdtempSync, mkdirSync, rmSync, writeFileSync } from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
-import { clock, timeLeft, progressText, doneText } from '../../grader/node/progress.js';
-import ProgressReporter from '../../grader/node/progress-reporter.js';
+import { clock, timeLeft, progressText, doneText } from '../../grader/node/cli/progress.js';
+import ProgressReporter from '../../grader/node/cli/progress-reporter.js';
 
 test('a time reads as a clock: m:ss, and h:mm:ss past the hour', () => {
   assert.deepEqual([0, 7000, 59_600, 205_000, 3_729_000].map(clock), ['0:00', '0:07', '1:00', '3:25', '1:02:09']);

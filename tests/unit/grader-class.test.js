@@ -7,7 +7,7 @@ import assert from 'node:assert/strict';
 import { existsSync, readFileSync } from 'node:fs';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
-import { auditDirs } from '../../grader/node/audit-pool.js';
+import { auditDirs } from '../../grader/node/run/audit-pool.js';
 import { verdictOf, reasonsOf } from '../../grader/core/verdict.js';
 import { mergeRubric } from '../../grader/core/rubric.js';
 

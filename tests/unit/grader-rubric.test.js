@@ -88,7 +88,7 @@ test('every threshold the grader reads is in grader/core/rubric.json, every top-
 
 test('no rubric value has a number written beside it as a fallback in grader/ and check/', () => {
   const files = sources();
-  assert.ok(files.some((rel) => rel.startsWith('core/measure/')) && files.some((rel) => rel.startsWith('core/gather/')) && files.includes('node/harness.js') && files.includes('../check/runner.js'), 'the measurements, the gatherers, the harness and the check page\'s runner are scanned');
+  assert.ok(files.some((rel) => rel.startsWith('core/measure/')) && files.some((rel) => rel.startsWith('core/gather/')) && files.includes('node/run/harness.js') && files.includes('../check/runner.js'), 'the measurements, the gatherers, the harness and the check page\'s runner are scanned');
   const found = files.flatMap((rel) => numericFallbacks(read(rel)).map((f) => `${rel}: ${f}`));
   assert.deepEqual(found, [], 'numbers that belong in rubric.json');
 });
@@ -157,8 +157,8 @@ const ALLOWED = {
 // a number a default parameter gives, allowed where it is not the rubric's (in grader/ outside core/ too)
 const DEFAULTS_ALLOWED = {
   'browser/mesh.js': [60000, 65536],
-  'node/browser-version.js': [5000],
-  'node/progress-line.js': [2000], // how often a log (not a terminal) gets a progress line
+  'node/run/browser-version.js': [5000],
+  'node/cli/progress-line.js': [2000], // how often a log (not a terminal) gets a progress line
   '../check/host.js': [500, 5000],
   '../check/sw.js': [15000],
 };

@@ -1,4 +1,4 @@
-// The grader's intake (grader/node/intake/): a download from each course site, built here from the
+// The grader's intake (grader/node/sites/intake/): a download from each course site, built here from the
 // fixture hand-ins (tests/fixtures/handins/, or the real ones in HANDINS_DIR) in the site's own
 // names (a student's zip, a zip in a zip, loose files, a resubmission, __MACOSX/, a name with
 // æ/ø/å), and hostile hand-ins, each a student of its own (a zip bomb, a "../" entry, a symbolic
@@ -13,11 +13,11 @@ import { existsSync, mkdirSync, mkdtempSync, readdirSync, readFileSync, rmSync, 
 import os from 'node:os';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
-import { intake, readIntake } from '../../grader/node/intake/intake.js';
-import { brightspaceTime, detectSite, dueTime, groupBySite, lateOf } from '../../grader/node/intake/formats.js';
-import { decodeName, safeSegments } from '../../grader/node/intake/names.js';
-import { IntakeError } from '../../grader/node/intake/zip.js';
-import { feedbackZipPath } from '../../grader/node/feedback/write.js';
+import { intake, readIntake } from '../../grader/node/sites/intake/intake.js';
+import { brightspaceTime, detectSite, dueTime, groupBySite, lateOf } from '../../grader/node/sites/intake/formats.js';
+import { decodeName, safeSegments } from '../../grader/node/sites/intake/names.js';
+import { IntakeError } from '../../grader/node/sites/intake/zip.js';
+import { feedbackZipPath } from '../../grader/node/sites/feedback-zip.js';
 import { findParts } from '../../grader/files/parts.js';
 import { copyHandins } from '../fixtures/handins.js';
 import { makeZip, cp850, tree, entriesOf, idsOf, lastFirst, siteName } from './downloads.js';

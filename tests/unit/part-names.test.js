@@ -1,6 +1,6 @@
 // Finding the parts where names carry no part number the usual way: a course site's numbered
 // sections, a step's title in a name, a page's own <title> or first heading (grader/core/part-names.js),
-// on disk (grader/node/parts.js) and on the check page (check/files.js) alike.
+// on disk (grader/files/parts.js) and on the check page (check/files.js) alike.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { mkdtempSync, mkdirSync, writeFileSync, rmSync } from 'node:fs';

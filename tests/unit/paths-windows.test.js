@@ -1,14 +1,14 @@
 // The grader's paths under Windows' rules (path.win32: C:\..., backslashes) and POSIX's on any
-// machine: the part finder (grader/node/parts.js on a made-up file system), the out folder's
-// layout (grader/node/layout.js) and the submission server's mapping between URLs and files
-// (grader/node/serve-submission.js), with folder names with spaces and æøå. A part finder that
+// machine: the part finder (grader/files/parts.js on a made-up file system), the out folder's
+// layout (grader/files/layout.js) and the submission server's mapping between URLs and files
+// (grader/node/run/serve-submission.js), with folder names with spaces and æøå. A part finder that
 // splits a path on '/' finds the wrong part under Windows' rules here.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import path from 'node:path';
 import { findParts } from '../../grader/files/parts.js';
 import { partFiles, hrefOf, fileOfHref, safeName } from '../../grader/files/layout.js';
-import { fileOf, urlOf } from '../../grader/node/serve-submission.js';
+import { fileOf, urlOf } from '../../grader/node/run/serve-submission.js';
 
 const SYSTEMS = [
   { name: 'Windows', p: path.win32, root: 'C:\\Users\\Åse Ødegård\\Downloads\\02561 hand-ins\\Søren Æbelø', out: 'C:\\Users\\Åse Ødegård\\grading out' },

@@ -5,7 +5,7 @@
 import { cpSync, existsSync, mkdirSync, readFileSync, writeFileSync } from 'node:fs';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
-import { auditAgain } from '../../grader/node/audit-only.js';
+import { auditAgain } from '../../grader/node/run/audit-only.js';
 import { mergeRubric } from '../../grader/core/rubric.js';
 import { PARTS } from '../../grader/files/parts.js';
 

@@ -10,8 +10,8 @@ import os from 'node:os';
 import path from 'node:path';
 import { spawnSync } from 'node:child_process';
 import { fileURLToPath } from 'node:url';
-import { auditDirs } from '../../grader/node/audit-pool.js';
-import { regatherLines } from '../../grader/node/audit-only.js';
+import { auditDirs } from '../../grader/node/run/audit-pool.js';
+import { regatherLines } from '../../grader/node/run/audit-only.js';
 import { recording, staleKeys } from '../../grader/core/gather/reads.js';
 import { rolesInWords } from '../../grader/core/computed/roles.js';
 import { currentFacts } from '../../grader/core/artifact-schema.js';
@@ -66,7 +66,7 @@ test('npm run grade -- --audit-only OUT --rubric names them on its output and in
     }
     const file = path.join(out, 'changed.json');
     writeFileSync(file, JSON.stringify({ ...read(path.join(here, '../fixtures/test-rubric.json')), thresholds: { sliderChange: changed.thresholds.sliderChange } }));
-    const run = spawnSync(process.execPath, [path.join(root, 'grader/node/grade.js'), '--audit-only', out, '--rubric', file], { encoding: 'utf8' });
+    const run = spawnSync(process.execPath, [path.join(root, 'grader/node/cli/grade.js'), '--audit-only', out, '--rubric', file], { encoding: 'utf8' });
     assert.equal(run.status, 0, run.stderr);
     assert.match(run.stdout, /re-gather these 2 parts for `sliderChange` \(their gathering read it, under another value\): carla WP04P4, dee WP04P4 \(--regather-changed does it\)/);
     assert.deepEqual(read(path.join(out, 'parts', 'dee', 'WP04P4.json')).regather, ['sliderChange']);

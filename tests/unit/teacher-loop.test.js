@@ -10,15 +10,15 @@ import { mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
 import { recordedOut } from './recorded-out.js';
-import { readClass } from '../../grader/node/class-results.js';
-import { prepareClass, writeTeacherFiles } from '../../grader/node/teacher-loop.js';
-import { writeReport } from '../../grader/node/report.js';
-import { parseOverrides } from '../../grader/node/overrides.js';
-import { studentPoints } from '../../grader/node/grades-export.js';
+import { readClass } from '../../grader/node/report/class-results.js';
+import { prepareClass, writeTeacherFiles } from '../../grader/node/cli/teacher-loop.js';
+import { writeReport } from '../../grader/node/report/report.js';
+import { parseOverrides } from '../../grader/node/report/overrides.js';
+import { studentPoints } from '../../grader/node/sites/points.js';
 import { readTable } from '../../grader/files/csv.js';
-import { zipEntries, entryData } from '../../grader/node/intake/zip.js';
+import { zipEntries, entryData } from '../../grader/node/sites/intake/zip.js';
 import { PARTS } from '../../grader/files/parts.js';
-import { agreement } from '../../grader/node/labels.js';
+import { agreement } from '../../grader/node/report/labels.js';
 
 const NAMES = ['ada', 'cy', 'eve', 'gus'];
 // who they are on the course site (Brightspace): the names and ids the download and the roster give
@@ -152,7 +152,7 @@ test('item analysis: each part\'s checks with how many students each failed, rev
 });
 
 test('Canvas and Moodle import files have their documented columns', async () => {
-  const { canvasCsv, moodleCsv } = await import('../../grader/node/grades-export.js');
+  const [{ canvasCsv }, { moodleCsv }] = await Promise.all([import('../../grader/node/sites/canvas.js'), import('../../grader/node/sites/moodle.js')]);
   const { rows } = runReport();
   const ids = (n, extra) => ({ ...rows.find((s) => s.name === n), identity: { name: WHO[n].name, userId: WHO[n].userId, ...extra } });
   const canvas = readTable(canvasCsv([ids('ada', { sisUserId: 's012', sisLoginId: 'ada1', section: 'A' })], rubric.points).text);

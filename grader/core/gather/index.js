@@ -5,7 +5,7 @@
 // gathered depends only on the page, the rubric and counts: the page's clock is frozen and
 // stepped, and the wall clock is an outer bound (facts.tooSlow says where it ran out).
 //
-// It drives the page only through the page interface (grader/node/playwright-page.js for the
+// It drives the page only through the page interface (grader/node/run/playwright-page.js for the
 // grader, check/frame-page.js for the check page): state(), snap(), controls(), click(c),
 // setValue(c, v, events), press(key), tick(ms, frames) → state(), setNoCull(on), sources(), errors().
 import { openSession, TooSlow, TooHeavy } from './session.js';
@@ -130,7 +130,7 @@ async function orbitAndLevel(session, controls) {
       else facts.orbitKeptMoving = true;
     }
   }
-  Object.assign(facts.orbit = {}, { movedAtFirst: orbit.movedAtFirst, toggles: orbit.toggles, start: orbit.start ? orbit.start.index : null, stop: orbit.stop ? orbit.stop.index : null, control: session.R.orbit ? session.R.orbit.index : null });
+  Object.assign(facts.orbit = {}, { movedAtFirst: orbit.movedAtFirst, toggles: orbit.toggles, start: orbit.start ? orbit.start.index : null, stop: orbit.stop ? orbit.stop.index : null, control: session.roles.orbit ? session.roles.orbit.index : null });
   // a page that goes blank at a higher level is judged at the last level it drew
   let j = ladder.length - 1;
   if (ladder[j].an.blank) {

@@ -12,20 +12,20 @@ const LEVEL_KEYS = [['ArrowUp', 'ArrowDown'], ['+', '-'], ['ArrowRight', 'ArrowL
 
 /** Buttons (named for the level first); a button that did nothing at the top or bottom level is tried again once the level moved. */
 async function levelButtons(session, clickables, levelBy) {
-  const { thresholds, P } = session;
+  const { thresholds, patterns } = session;
   const clickLevel = (c) => () => session.press(c, 'a control');
   const idle = [];
-  for (const c of trialOrder(clickables, 'subdivide', P, session.taken).filter((x) => x.type !== 'checkbox')) {
+  for (const c of trialOrder(clickables, 'subdivide', patterns, session.taken).filter((x) => x.type !== 'checkbox')) {
     if (levelBy.subdivide && levelBy.coarsen) break;
-    if (session.trialsMade >= thresholds.maxControlTrials && !named(c, 'subdivide', P) && !named(c, 'coarsen', P)) break;
+    if (session.trialsMade >= thresholds.maxControlTrials && !named(c, 'subdivide', patterns) && !named(c, 'coarsen', patterns)) break;
     let effect = session.effects.get(c.index);
     if (effect === undefined || effect === 'none') {
       session.trialsMade++;
       const base = session.cur;
-      effect = await session.tryClick(c, 'a control', { watchMotion: !session.R.orbit && session.must.has('diffuse') });
+      effect = await session.tryClick(c, 'a control', { watchMotion: !session.roles.orbit && session.must.has('diffuse') });
       // a page that starts as round as pixels allow shows one level's change nowhere on the
       // outline: a few more clicks of a button that may be a level control, against the picture before
-      for (let k = 0; k < thresholds.levelClicksAgain && (effect === 'shading' || effect === 'none') && [null, 'subdivide', 'coarsen'].includes(nameRole(c, P)); k++) {
+      for (let k = 0; k < thresholds.levelClicksAgain && (effect === 'shading' || effect === 'none') && [null, 'subdivide', 'coarsen'].includes(nameRole(c, patterns)); k++) {
         if (!await session.press(c, 'again')) break;
         const now = await session.shot();
         if (!now) break;
@@ -53,11 +53,11 @@ async function levelButtons(session, clickables, levelBy) {
 
 /** A level slider, number input or menu: one that makes the silhouette rounder as it goes up (named for the level first). */
 async function levelSliderByEffect(session, valued) {
-  const { P } = session;
-  for (const c of trialOrder(valued, 'levelSlider', P, session.taken)) {
+  const { patterns } = session;
+  for (const c of trialOrder(valued, 'levelSlider', patterns, session.taken)) {
     const lo = c.type === 'select' ? null : Number(c.min || 0), hi = c.type === 'select' ? null : (c.max === '' || c.max === undefined ? lo + 8 : Number(c.max));
     const values = c.type === 'select' ? (c.options || []) : [lo, Math.min(hi, lo + 1), Math.min(hi, lo + 2)];
-    if (values.length < 2 || (!named(c, 'levelSlider', P) && nameRole(c, P) !== null)) continue;
+    if (values.length < 2 || (!named(c, 'levelSlider', patterns) && nameRole(c, patterns) !== null)) continue;
     session.trialsMade++;
     // to its least, then one up: a level control makes the silhouette rounder
     await session.page.setValue(c, values[0], ['input', 'change']);
@@ -100,7 +100,7 @@ async function levelKeys(session, levelBy) {
 
 /** Finds the level controls: session.level = { subdivide, coarsen } ({ act }) and session.levelSlider. */
 export async function findLevel(session, controls) {
-  const { P } = session;
+  const { patterns } = session;
   session.step('looking for the level controls');
   const clickables = controls.filter(isClickable), valued = controls.filter(isValued);
   const levelBy = session.level = {};
@@ -115,11 +115,11 @@ export async function findLevel(session, controls) {
     // the picture never stood still: the level controls are taken by their names (the ladder
     // shows whether the sphere gets rounder)
     for (const c of clickables) {
-      const role = nameRole(c, P);
+      const role = nameRole(c, patterns);
       if ((role === 'subdivide' || role === 'coarsen') && !levelBy[role] && !session.taken.has(c.index)) levelBy[role] = { c, act: () => session.press(c, 'a control') };
     }
     for (const role of ['subdivide', 'coarsen']) if (levelBy[role]) session.assign(role, levelBy[role].c, 'by-name');
-    const c = levelBy.subdivide ? null : valued.find((x) => !session.taken.has(x.index) && nameRole(x, P) === 'levelSlider');
+    const c = levelBy.subdivide ? null : valued.find((x) => !session.taken.has(x.index) && nameRole(x, patterns) === 'levelSlider');
     if (c) {
       session.levelSlider = c;
       session.assign('levelSlider', c, 'by-name');

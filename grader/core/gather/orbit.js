@@ -78,7 +78,7 @@ export async function searchOrbit(session, good) {
  * what stops it again. Sets session.orbit: { movedAtFirst, toggles, start, stop, later }.
  */
 export async function findOrbit(session, controls) {
-  const { facts, thresholds, P } = session;
+  const { facts, thresholds, patterns } = session;
   const orbit = session.orbit = { movedAtFirst: false, toggles: false, start: null, stop: null, later: false };
   const clickables = controls.filter(isClickable);
   const shaded = session.must.has('diffuse');
@@ -96,7 +96,7 @@ export async function findOrbit(session, controls) {
     if (shaded) await sampleOrbit(session);
     // the control that stops it: named for the orbit first, then the others
     session.step('looking for the control that stops the orbit');
-    for (const c of trialOrder(clickables, 'orbit', P, session.taken).slice(0, thresholds.maxControlTrials)) {
+    for (const c of trialOrder(clickables, 'orbit', patterns, session.taken).slice(0, thresholds.maxControlTrials)) {
       session.trialsMade++;
       if (await session.tryClick(c, 'a control', { watchMotion: true }) === 'stops') {
         session.assign('orbit', c, 'stopped');
@@ -107,7 +107,7 @@ export async function findOrbit(session, controls) {
   } else if (shaded) {
     // the orbit may be off at first: a control that starts it (named for it first; a start and a stop button)
     session.step('looking for the control that starts the orbit');
-    const namedOrbit = trialOrder(clickables, 'orbit', P, session.taken).filter((c) => named(c, 'orbit', P));
+    const namedOrbit = trialOrder(clickables, 'orbit', patterns, session.taken).filter((c) => named(c, 'orbit', patterns));
     for (const c of namedOrbit) {
       session.trialsMade++;
       if (await session.tryClick(c, 'a control', { watchMotion: true }) !== 'starts') continue;
@@ -136,10 +136,10 @@ export async function findOrbit(session, controls) {
  * orbit is then found moving), or null.
  */
 export async function startOrbitToSee(session) {
-  const { thresholds, P } = session;
+  const { thresholds, patterns } = session;
   session.step('starting the orbit to see the lit side');
   const clickables = (await session.page.controls()).filter(isClickable);
-  for (const c of trialOrder(clickables, 'orbit', P, session.taken).filter((x) => named(x, 'orbit', P)).slice(0, thresholds.maxControlTrials)) {
+  for (const c of trialOrder(clickables, 'orbit', patterns, session.taken).filter((x) => named(x, 'orbit', patterns)).slice(0, thresholds.maxControlTrials)) {
     session.trialsMade++;
     if (!await session.press(c, 'a control named for the orbit, to see the lit side,')) continue;
     const seen = await searchOrbit(session, (img) => litView(img, thresholds).lit);
@@ -155,9 +155,9 @@ export async function startOrbitToSee(session) {
 
 /** An orbit control found while looking for the level (it started the picture moving): sampled, then stopped again. */
 export async function orbitFoundLate(session, c) {
-  if (session.must.has('diffuse') && !session.R.orbit) await sampleOrbit(session);
+  if (session.must.has('diffuse') && !session.roles.orbit) await sampleOrbit(session);
   const again = await session.tryClick(c, 'a control', { watchMotion: true });
-  if (!session.R.orbit) {
+  if (!session.roles.orbit) {
     session.assign('orbit', c, again === 'stops' ? 'starts-stops' : 'starts');
     session.orbit.toggles = again === 'stops';
     if (session.orbit.toggles) Object.assign(session.orbit, { start: c, stop: c });

@@ -3,7 +3,7 @@
 // and a free control found by its name. Shared by faces.js, highlight.js, sliders.js and visible.js.
 import { nameRole, parameterGroups } from '../controls.js';
 
-const role = (session, c) => nameRole(c, session.P);
+const role = (session, c) => nameRole(c, session.patterns);
 
 /** The first of `controls` not yet given a role whose name says `r` (and `pred` holds). */
 export const free = (session, controls, r, pred = () => true) => controls.find((x) => !session.taken.has(x.index) && pred(x) && role(session, x) === r);
@@ -13,7 +13,7 @@ export const least = (c) => (c.type === 'color' ? '#000000' : Number(c.min || 0)
 export const greatest = (c) => (c.type === 'color' ? '#ffffff' : Number(c.max === '' || c.max === undefined ? (c.type === 'range' ? 100 : 1) : c.max));
 
 /** The parameters the page's free sliders set (parameterGroups: ks r, g, b as one). */
-export const groupsOf = (session, controls) => parameterGroups(controls.filter((c) => !session.taken.has(c.index)), session.P);
+export const groupsOf = (session, controls) => parameterGroups(controls.filter((c) => !session.taken.has(c.index)), session.patterns);
 
 /** Sets every slider of a parameter group (`value(c)` each), on `events`; returns the values set. */
 export async function setGroup(session, g, value, events = ['input', 'change']) {

@@ -45,14 +45,14 @@ export function openSession(page, { part, rubric, progress = () => {}, deadline 
     work: { frames: 0, draws: 0, vertices: 0 }, gatheredWith,
   };
   const session = {
-    page, rubric, thresholds, P: recording(rubric.controls, gatheredWith, 'controls.'), part, facts,
+    page, rubric, thresholds, patterns: recording(rubric.controls, gatheredWith, 'controls.'), part, facts,
     must: new Set((rubric.parts[part] || {}).must || []),
     images: {}, // name → { width, height, data }
     cur: null, // the picture as it is now: { img, an }
     moving: false, // does the picture move by itself now?
     effects: new Map(), // control index → the effect seen when it was tried
     taken: new Set(), // controls given a role
-    R: {}, // role → control
+    roles: {}, // role → control
     trialsMade: 0,
     values: new Map(), // control index → the value we left it at (a slider lowered to make the shading visible stays lowered)
     // what a frame of this page costs, in its own work (vertices, and draw calls at drawCallWork
@@ -120,8 +120,8 @@ export function openSession(page, { part, rubric, progress = () => {}, deadline 
      * control, its description and listeners, what showed it; the audits put them in words.
      */
     assign(role, c, found, more = {}) {
-      if (session.R[role]) return;
-      session.R[role] = c;
+      if (session.roles[role]) return;
+      session.roles[role] = c;
       session.taken.add(c.index);
       facts.roles[role] = { control: c.index, what: describe(c), listens: c.events || [], found, ...more };
     },

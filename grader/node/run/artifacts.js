@@ -1,0 +1,71 @@
+// A part's artifact on disk (Lighthouse's latest-run/): `facts.json` (what the page showed, as
+// plain data) and its pictures as PNG files beside it, a picture shown twice stored once
+// (facts.json's `files` maps each picture's name to its file; its `schema` numbers its shape).
+// Read back, it audits as it did when gathered: `npm run grade -- --audit-only OUT` re-judges a
+// class with no browser.
+import { createHash } from 'node:crypto';
+import { existsSync, mkdirSync, readFileSync, readdirSync, rmSync, writeFileSync } from 'node:fs';
+import path from 'node:path';
+import { PNG } from 'pngjs';
+import { ARTIFACT_SCHEMA, currentFacts } from '../../core/artifact-schema.js';
+
+/** A picture ({ width, height, data }) as PNG bytes: RGB where every pixel is opaque (the same pixels read back), else RGBA. */
+export function pngOf(img) {
+  const p = new PNG({ width: img.width, height: img.height });
+  p.data.set(img.data);
+  let opaque = true;
+  for (let k = 3; k < img.data.length && opaque; k += 4) opaque = img.data[k] === 255;
+  return PNG.sync.write(p, opaque ? { colorType: 2, inputHasAlpha: true } : { colorType: 6 });
+}
+
+/** Writes `artifact` ({ facts, images }) into `dir` (emptied first); returns the files by picture name. */
+export function writeArtifact(dir, { facts, images }) {
+  rmSync(dir, { recursive: true, force: true });
+  mkdirSync(dir, { recursive: true });
+  const files = {};
+  const byHash = new Map();
+  for (const [name, img] of Object.entries(images)) {
+    const hash = createHash('sha1').update(`${img.width}x${img.height}:`).update(img.data).digest('hex');
+    if (!byHash.has(hash)) {
+      const file = `${name}.png`;
+      writeFileSync(path.join(dir, file), pngOf(img));
+      byHash.set(hash, file);
+    }
+    files[name] = byHash.get(hash);
+  }
+  writeFileSync(path.join(dir, 'facts.json'), `${JSON.stringify({ schema: ARTIFACT_SCHEMA, ...facts, files }, null, 1)}\n`);
+  return files;
+}
+
+/**
+ * The artifact in `dir`: { facts, images, files }, its facts in today's shape (an older one brought
+ * up to it by core/artifact-schema.js); null when there is none.
+ */
+export function readArtifact(dir) {
+  const f = path.join(dir, 'facts.json');
+  if (!existsSync(f)) return null;
+  const { files = {}, ...facts } = currentFacts(JSON.parse(readFileSync(f, 'utf8')));
+  const images = {};
+  const read = new Map();
+  for (const [name, file] of Object.entries(files)) {
+    if (!read.has(file)) {
+      const png = PNG.sync.read(readFileSync(path.join(dir, file)));
+      read.set(file, { width: png.width, height: png.height, data: new Uint8Array(png.data.buffer, png.data.byteOffset, png.data.length) });
+    }
+    images[name] = read.get(file);
+  }
+  return { facts, images, files };
+}
+
+/** Every artifact under `root` (root/<submission>/<part>/facts.json): [{ submission, part, dir }]. */
+export function listArtifacts(root) {
+  if (!existsSync(root)) return [];
+  const out = [];
+  for (const s of readdirSync(root, { withFileTypes: true }).filter((e) => e.isDirectory()).map((e) => e.name).sort()) {
+    const sd = path.join(root, s);
+    for (const p of readdirSync(sd).sort()) {
+      if (existsSync(path.join(sd, p, 'facts.json'))) out.push({ submission: s, part: p, dir: path.join(sd, p) });
+    }
+  }
+  return out;
+}

@@ -1,0 +1,133 @@
+// One part of the plan graded in a browser, the same in either engine: opened (an opener of
+// playwright-page.js or firefox-page.js: served by serve-submission.js's rules, time frozen,
+// instrumented), gathered and audited (grader/core/grade-part.js), its artifact saved
+// (artifacts.js) and its result (core/part-result.js), our reference drawn beside it. Chromium's
+// harness runs it as one Playwright test a part (harness.js), Firefox's as a plain Node loop
+// (grade-firefox.js).
+import { writeFileSync, mkdirSync } from 'node:fs';
+import path from 'node:path';
+import { PNG } from 'pngjs';
+import { compareImages } from './compare.js';
+import { writeArtifact, pngOf } from './artifacts.js';
+import { hrefOf } from '../../files/layout.js';
+import { applyAudit, withFindings } from '../../core/part-result.js';
+import { missingPage, timedOut, stoppedAtFirstFrame, tooSlow, linkedPage, notOpened, asFail, graderTrouble } from '../../core/audits/page.js';
+import { tooSlowWords } from '../../core/verdict.js';
+import { deadlineOf } from '../../core/deadline.js';
+import { FIRST_FRAME } from '../../core/gather/index.js';
+import { gradePart, addTime } from '../../core/grade-part.js';
+import { referenceQuery, referenceStateOf, referencePicture } from '../../core/reference-state.js';
+
+// the message of an error thrown because Playwright's time bound closed the part's page (the result stays 'timeout')
+const CLOSED = /Test ended|Target page, context or browser has been closed/;
+
+/**
+ * Grades `item` of `plan` with `openers` ({ student, reference }): writes item.resultFile (first
+ * as a timeout, which stays if the part's time bound stops it) and item.artifactDir. `more(seconds)`
+ * asks for more time for our reference; `over()` says the time bound has stopped the part (nothing
+ * is written after that). `browserVersion` ("Chromium 156.0.8078.108") names the browser that grades it.
+ */
+export async function runPart({ item, plan, openers, browserVersion = null, more = () => {}, over = () => false }) {
+  const rubric = plan.rubric;
+  const save = (result) => {
+    if (over()) return;
+    mkdirSync(path.dirname(item.resultFile), { recursive: true });
+    writeFileSync(item.resultFile, JSON.stringify(result, null, 1));
+  };
+  const result = withFindings({ name: item.name, part: item.part, file: item.page, status: 'timeout', verdict: 'fail', api: null }, [timedOut(rubric)]);
+  Object.assign(result, { actions: [], controls: {}, numbers: {}, mismatch: null, rmse: null, pass: false, comparison: null, notes: [], errors: [], blocked: [], images: null,
+    ...(plan.browser && plan.browser !== 'chromium' ? { browser: plan.browser } : {}), ...(browserVersion ? { browserVersion } : {}) });
+  // how the part's page was found, where its name did not say it plainly (core/part-names.js)
+  if (item.foundBy) result.notes.push(item.foundBy);
+  save(result); // what stays if the page never lets go: a timeout
+  if (!item.page) {
+    withFindings(Object.assign(result, { status: 'missing' }), [missingPage(item.part)]);
+    return save(result);
+  }
+  if (item.linksTo) {
+    withFindings(Object.assign(result, { status: 'linked', verdict: 'review' }), [linkedPage(item.part, item.page, item.linksTo)]);
+    return save(result);
+  }
+  const started = Date.now();
+  let graded = { fail: null, checks: [], actions: [], images: {}, shown: {}, busy: 0 };
+  const files = {};
+  let clean = false;
+  // where the part's time goes: opening it, each page-interface call, closing it, writing the pictures
+  const timing = result.timing = {};
+  const phase = (what, t0) => addTime(timing, what, Date.now() - t0);
+  try {
+    const t0 = Date.now();
+    const opened = await openers.student.open({ root: item.root, rel: item.page, loadSeconds: rubric.loadSeconds, log: result });
+    phase('open', t0);
+    if (opened.why) Object.assign(graded, asFail(notOpened(opened.why)));
+    else {
+      // what has been done so far stays in the result if the time bound stops the part
+      const deadline = deadlineOf(started, rubric);
+      graded = await gradePart(opened.driver, { part: item.part, rubric, deadline, timing, progress: (what) => {
+        // what stays if the time bound stops the part now: past its first frame the page draws, and
+        // a page that draws is too slow here, not broken (the rubric's tooSlowVerdict)
+        if (what === FIRST_FRAME) withFindings(result, [stoppedAtFirstFrame(rubric, what)]);
+        else {
+          const slow = tooSlow(rubric, tooSlowWords(rubric, what));
+          withFindings(Object.assign(result, { verdict: slow.level, status: 'too slow' }), [slow]);
+        }
+        save(result);
+      } });
+      const t0 = Date.now();
+      const { facts, images } = graded.artifact;
+      if (over()) return;
+      const saved = writeArtifact(item.artifactDir, { facts: { ...facts, blocked: result.blocked, notes: result.notes }, images });
+      for (const [name, file] of Object.entries(saved)) files[name] = hrefOf(plan.out, path.join(item.artifactDir, file));
+      phase('write', t0);
+    }
+    clean = true;
+  } catch (err) {
+    if (over() || CLOSED.test(err.message)) throw err; // the time bound: stays 'timeout'
+    // the grader's own trouble with this page: never a pass on it, a teacher looks
+    graded.checks = [graderTrouble(err)];
+    if (process.env.GRADE_DEBUG) console.error(err);
+  } finally {
+    const t0 = Date.now();
+    if (!over()) await openers.student.done(clean);
+    phase('close', t0);
+  }
+  applyAudit(result, graded, files);
+  result.seconds = (Date.now() - started) / 1000;
+  save(result);
+  if (rubric.reference && graded.images.judged && !graded.fail && !graded.notGraded) {
+    more(plan.referenceSeconds);
+    await drawReference({ item, plan, openers, result, graded });
+    save(result);
+  }
+}
+
+/** Our reference at the student's size, beside theirs: evidence, not the verdict. */
+async function drawReference({ item, plan, openers, result, graded }) {
+  const dir = path.dirname(item.resultFile);
+  const stem = path.basename(item.resultFile, '.json');
+  const refLog = { errors: [], blocked: [], notes: [] };
+  const query = referenceQuery(graded.images.judged, result.numbers, plan.rubric.thresholds, item.referenceQuery);
+  let ref = null;
+  try {
+    const r = await openers.reference.open({ root: plan.repo, rel: `${item.part}/index.html`, query: query.toString(), loadSeconds: plan.rubric.loadSeconds, log: refLog });
+    if (!r.why) {
+      const drawn = await referencePicture(r.driver, graded.images.judged);
+      ref = drawn.img;
+      if (drawn.why) result.notes.push(drawn.why);
+      const scene = await r.page.evaluate(() => window.scene || null).catch(() => null);
+      result.referenceState = referenceStateOf(query, scene);
+    }
+    await openers.reference.done(true);
+  } catch (err) {
+    await openers.reference.done(false);
+    result.notes.push(`our reference could not be drawn: ${err.message.split('\n')[0]}`);
+  }
+  if (ref) {
+    const cmp = compareImages(PNG.sync.read(pngOf(ref)), PNG.sync.read(pngOf(graded.images.judged)));
+    Object.assign(result, { mismatch: cmp.mismatch, rmse: cmp.rmse, comparison: cmp.comparison, mismatchFull: cmp.mismatchFull, mismatchObject: cmp.mismatchObject });
+    result.notes.push(...cmp.notes, `the reference is our page at the same canvas size${result.referenceState && result.referenceState.light ? ', lit from the fitted light' : ''}; the difference is evidence, the verdict comes from the checks`);
+    writeFileSync(path.join(dir, `${stem}-reference.png`), PNG.sync.write(cmp.reference));
+    writeFileSync(path.join(dir, `${stem}-diff.png`), PNG.sync.write(cmp.diff));
+    Object.assign(result.images, { reference: hrefOf(plan.out, path.join(dir, `${stem}-reference.png`)), diff: hrefOf(plan.out, path.join(dir, `${stem}-diff.png`)) });
+  }
+}

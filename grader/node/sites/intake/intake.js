@@ -1,0 +1,116 @@
+// npm run grade -- --batch <download>: a course site's download (its .zip, or the folder it was
+// unpacked into, either one inside a folder around it: wrapping.js) turned into one folder a
+// student, each with the identity the site gave it.
+// A folder a student with no zip in it is graded where it is, as before; everything else is
+// unpacked (safely, bounded: unpack.js) into OUT/handins/<student>/. What was found is written
+// to OUT/intake.json, which every later run of the report (--report-only, --audit-only) reads.
+import { existsSync, lstatSync, readFileSync, readdirSync, rmSync, writeFileSync } from 'node:fs';
+import path from 'node:path';
+import { IntakeError, TooBig, entryData, zipEntries } from './zip.js';
+import { isJunk, safeSegments } from './names.js';
+import { groupBySite, lateOf, SITES } from './formats.js';
+import { findLayout } from './wrapping.js';
+import { unpackHandin } from './unpack.js';
+import { safeName } from '../../../files/layout.js';
+
+export const INTAKE_FILE = 'intake.json';
+
+/** The files of a download .zip: [{ segments, read(cap) }], and notes on what was left out. */
+function zipFiles(file) {
+  const bytes = readFileSync(file);
+  const entries = zipEntries(bytes);
+  const files = [], notes = [];
+  for (const e of entries) {
+    if (e.dir) continue;
+    const safe = safeSegments(e.name);
+    if (safe.unsafe || e.symlink) { notes.push(`left out "${e.name}" of the download: ${safe.unsafe || 'a symbolic link'}`); continue; }
+    if (isJunk(safe.segments)) continue;
+    files.push({ segments: safe.segments, read: (cap) => entryData(bytes, e, cap) });
+  }
+  return { files, notes };
+}
+
+/** The files under folder `root`: [{ segments, read(cap) }] (links are not followed, and said). */
+function folderFiles(root) {
+  const files = [], notes = [];
+  const walk = (segments) => {
+    for (const name of readdirSync(path.join(root, ...segments)).sort()) {
+      const rel = [...segments, name];
+      if (isJunk(rel)) continue;
+      const full = path.join(root, ...rel);
+      const st = lstatSync(full);
+      if (st.isSymbolicLink()) notes.push(`left out "${rel.join('/')}": a symbolic link`);
+      else if (st.isDirectory()) walk(rel);
+      else if (st.isFile()) {
+        files.push({ segments: rel, size: st.size, read: (cap) => {
+          if (st.size > cap) throw new TooBig(st.size);
+          return readFileSync(full);
+        } });
+      }
+    }
+  };
+  walk([]);
+  return { files, notes };
+}
+
+/**
+ * Reads the download `input` (a .zip or a folder) into one folder a student under `out`/handins.
+ * `bounds`: the rubric's unpack; `due`: the due date (dueTime's form) that makes a timed hand-in
+ * late, or null. Returns { site, found (what it was, in words), due, submissions: [{ name, root,
+ * identity, earlier, notes, error }], notes, seconds }, also written to OUT/intake.json.
+ */
+export function intake(input, out, bounds, due = null) {
+  const t0 = Date.now();
+  const isZipFile = lstatSync(input).isFile();
+  let listing;
+  try {
+    listing = isZipFile ? zipFiles(input) : folderFiles(input);
+  } catch (err) {
+    if (err instanceof IntakeError) throw new IntakeError(`${input} could not be read as a download: ${err.message}`);
+    throw err;
+  }
+  // the site's own layout, looked for through any folder around it (wrapping.js)
+  const layout = findLayout(listing.files, input);
+  const { site, students, notes } = groupBySite(layout.files, layout.site);
+  for (const s of students) {
+    s.identity.late = lateOf(s.identity, due);
+    for (const e of s.earlier) e.late = lateOf(e, due);
+  }
+  if (due && students.some((s) => !s.identity.time && s.identity.late === null)) notes.push(`--due ${due.replace('T', ' ')}: this download's names carry no hand-in time, so late is not known`);
+  const handins = path.join(out, 'handins');
+  rmSync(handins, { recursive: true, force: true });
+  // the name the report shows: the site's name for the student, with the user id when two share one
+  const count = new Map();
+  for (const s of students) count.set(s.identity.name, (count.get(s.identity.name) || 0) + 1);
+  const used = new Set();
+  const submissions = students.sort((a, b) => a.identity.name.localeCompare(b.identity.name)).map((s) => {
+    let name = count.get(s.identity.name) > 1 && s.identity.userId ? `${s.identity.name} (${s.identity.userId})` : s.identity.name;
+    while (used.has(safeName(name))) name = `${name}+`;
+    used.add(safeName(name));
+    const sub = { name, identity: s.identity, earlier: s.earlier, notes: [], error: null };
+    if (site === 'folders' && !isZipFile && !s.files.some((f) => /\.zip$/i.test(f.segments[f.segments.length - 1]))) {
+      // as before: a plain folder is graded where it lies
+      return { ...sub, root: path.resolve(input, ...layout.prefix, s.identity.source[0].replace(/\/$/, '')) };
+    }
+    sub.root = path.join(handins, safeName(name));
+    try {
+      const done = unpackHandin(s.files, sub.root, bounds);
+      sub.notes = done.notes;
+      Object.assign(sub, { files: done.files, bytes: done.bytes });
+    } catch (err) {
+      if (!(err instanceof IntakeError)) throw err;
+      rmSync(sub.root, { recursive: true, force: true });
+      sub.error = `the hand-in could not be unpacked: ${err.message}`;
+    }
+    return sub;
+  });
+  const result = { site, found: SITES[site], input: path.resolve(input), due, submissions, notes: [...listing.notes, ...layout.notes, ...notes], seconds: (Date.now() - t0) / 1000 };
+  writeFileSync(path.join(out, INTAKE_FILE), JSON.stringify(result, null, 1));
+  return result;
+}
+
+/** OUT/intake.json, or null when the class came as folders before intake existed. */
+export function readIntake(out) {
+  const f = path.join(out, INTAKE_FILE);
+  return existsSync(f) ? JSON.parse(readFileSync(f, 'utf8')) : null;
+}
