@@ -34,11 +34,11 @@ export default defineConfig({
     // Projects are queued in this order: the long tests early (Firefox's grader run is 16 s), the
     // short ones of WebGPU's page specs last, so that neither worker waits on the other at the end
     { name: 'firefox', testMatch: /firefox\.spec\.js/ },
-    { name: 'webgl2', use: { api: 'webgl2' }, testIgnore: /firefox\.spec\.js/, grepInvert: /real hand-ins/ },
+    { name: 'webgl2', use: { api: 'webgl2' }, testIgnore: /(firefox|surface-webgpu)\.spec\.js/, grepInvert: /real hand-ins/ },
     {
       name: 'webgpu',
       use: { api: 'webgpu', launchOptions: { executablePath: CHROMIUM, args: [...CHROMIUM_ARGS, ...WEBGPU_ARGS] } },
-      testMatch: /(foundation|lighting|faults|edge-cases|webgpu|surface)\.spec\.js/,
+      testMatch: /(foundation|lighting|faults|edge-cases|webgpu)\.spec\.js/,
       grepInvert: /@any-api/,
       // the same pictures: a WebGPU page is held to the WebGL 2 baselines
       snapshotPathTemplate: 'tests/screenshots/webgl2/{arg}{ext}',
