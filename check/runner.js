@@ -19,7 +19,7 @@ import { webgpuCaptureScript } from '../grader/browser/webgpu-capture.js';
 import { gradePart } from '../grader/core/grade-part.js';
 import { judgement, notJudgedHere } from '../grader/core/part-result.js';
 import { timedOut, notOpened, asFail, graderTrouble } from '../grader/core/audits/page.js';
-import { referenceQuery, referencePicture } from '../grader/core/reference-state.js';
+import { referenceQuery, referencePicture, untilDrawn } from '../grader/core/reference-state.js';
 import { deadlineOf } from '../grader/core/deadline.js';
 import { NOT_CHECKED, notCheckedHere } from './not-checked.js';
 
@@ -138,14 +138,7 @@ export async function drawReference({ result, rubric, session, stage }) {
     const fp = framePage(frame, session.log);
     // our pages publish window.scene after each frame drawn: wait for one (a loaded machine is slow)
     const shows = () => frame.contentWindow.scene && frame.contentWindow.scene.frame >= 1;
-    const drawn = async () => {
-      for (const until = performance.now() + 1000 * rubric.firstFrameSeconds; !shows() && performance.now() < until;) {
-        await sleep(100);
-        await fp.tick(16);
-      }
-      return shows();
-    };
-    return (await referencePicture(fp, judged, drawn)).img;
+    return (await referencePicture(fp, judged, () => untilDrawn(shows, fp, rubric.firstFrameSeconds))).img;
   } finally {
     frame.remove();
   }

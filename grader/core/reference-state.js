@@ -41,6 +41,20 @@ export function referenceStateOf(query, scene) {
 const SETTLE = { ms: 500, frames: 30 };
 
 /**
+ * Waits until our reference shows a drawn frame (`shows()`: our pages publish window.scene after each
+ * frame), a frame of frozen time at a time, within `seconds` of the wall clock: a loaded machine
+ * takes longer to fetch our shaders, and a picture taken before the first frame is blank. Our page,
+ * not a bound on a student's. Returns whether it shows one.
+ */
+export async function untilDrawn(shows, driver, seconds) {
+  for (const until = Date.now() + 1000 * seconds; !(await shows()) && Date.now() < until;) {
+    await new Promise((resolve) => setTimeout(resolve, 100));
+    await driver.tick(16);
+  }
+  return shows();
+}
+
+/**
  * Our reference's picture, drawn as the grader and the check page both draw it (opened by the
  * caller with referenceQuery's settings, through the page interface `driver`): run SETTLE, wait for
  * `drawn` (the check page polls our page's window.scene there), then read back. { img, why }: img

@@ -16,7 +16,7 @@ import { tooSlowWords } from '../../core/verdict.js';
 import { deadlineOf } from '../../core/deadline.js';
 import { FIRST_FRAME } from '../../core/gather/index.js';
 import { gradePart, addTime } from '../../core/grade-part.js';
-import { referenceQuery, referenceStateOf, referencePicture } from '../../core/reference-state.js';
+import { referenceQuery, referenceStateOf, referencePicture, untilDrawn } from '../../core/reference-state.js';
 
 // the message of an error thrown because Playwright's time bound closed the part's page (the result stays 'timeout')
 const CLOSED = /Test ended|Target page, context or browser has been closed/;
@@ -111,7 +111,9 @@ async function drawReference({ item, plan, openers, result, graded }) {
   try {
     const r = await openers.reference.open({ root: plan.repo, rel: `${item.part}/index.html`, query: query.toString(), loadSeconds: plan.rubric.loadSeconds, log: refLog });
     if (!r.why) {
-      const drawn = await referencePicture(r.driver, graded.images.judged);
+      // (our pages publish window.scene after each frame drawn: the picture waits for one)
+      const shows = () => r.page.evaluate(() => !!(window.scene && window.scene.frame >= 1)).catch(() => false);
+      const drawn = await referencePicture(r.driver, graded.images.judged, () => untilDrawn(shows, r.driver, plan.rubric.firstFrameSeconds));
       ref = drawn.img;
       if (drawn.why) result.notes.push(drawn.why);
       const scene = await r.page.evaluate(() => window.scene || null).catch(() => null);
