@@ -2,7 +2,9 @@
 // them): how many triangles, which way they are wound seen from outside, whether the mesh is closed,
 // and which attributes are constant over each triangle (a face's colour or normal, not a vertex's).
 // Self-contained functions (put into graded pages as text, meshAnalysisScript, and called by the
-// unit tests in Node, meshAnalysis), giving { vertexShader, vertexInputs, summary }.
+// unit tests in Node, meshAnalysis), giving { vertexShader, vertexInputs, summary }; a WGSL entry
+// point's inputs are read by wgsl-vertex.js, which the script defines beside them.
+import { wgslVertexEntry } from './wgsl-vertex.js';
 
 /**
  * The analysis, from its parts (each self-contained: the page gets them as text, meshAnalysisScript):
@@ -74,22 +76,8 @@ function vertexShader(source) {
  * position (named for one, else location 0).
  */
 function vertexInputs(source, entryPoint) {
-  const code = String(source).replace(/\/\*[\s\S]*?\*\//g, ' ').replace(/\/\/.*$/gm, ' ');
   const byLocation = {};
-  const entries = [...code.matchAll(/@vertex\s+fn\s+(\w+)\s*\(/g)];
-  const entry = entries.find((m) => !entryPoint || m[1] === entryPoint);
-  if (!entry) return { byLocation, position: null };
-  let depth = 1, k = entry.index + entry[0].length;
-  const from = k;
-  for (; k < code.length && depth > 0; k++) depth += code[k] === '(' ? 1 : code[k] === ')' ? -1 : 0;
-  const params = code.slice(from, k - 1);
-  const LOCATED = /@location\s*\(\s*(\d+)\s*\)\s*(?:@\w+(?:\([^)]*\))?\s*)*(\w+)\s*:\s*([\w<>]+)/g;
-  const add = (text) => { for (const m of text.matchAll(LOCATED)) byLocation[m[1]] = { name: m[2], type: m[3] }; };
-  add(params);
-  for (const m of params.replace(LOCATED, ' ').matchAll(/(\w+)\s*:\s*(\w+)/g)) {
-    const struct = new RegExp(`struct\\s+${m[2]}\\s*\\{([^}]*)\\}`).exec(code);
-    if (struct) add(struct[1]);
-  }
+  for (const i of wgslVertexEntry(source, entryPoint).inputs || []) byLocation[i.at] = { name: i.name, type: i.type };
   const vector = (t) => /vec[34]/.test(t.type);
   const named = Object.entries(byLocation).find(([, t]) => vector(t) && /pos|vert/i.test(t.name));
   const position = named ? Number(named[0]) : byLocation[0] ? 0 : null;
@@ -232,7 +220,7 @@ function tally(each, centre, diag, edgesWanted) {
 const PARTS = [vertexShader, vertexInputs, reader, indexer, meshesOf, walker, tally];
 
 /** The analysis as an expression for a page's script: its parts as text. */
-export const meshAnalysisScript = `(${analysis})(${PARTS.join(', ')})`;
+export const meshAnalysisScript = `((wgslVertexEntry) => (${analysis})(${PARTS.join(', ')}))(${wgslVertexEntry})`;
 
 /** The analysis here (the unit tests run it in Node, as a page runs meshAnalysisScript). */
 export const meshAnalysis = () => analysis(...PARTS);

@@ -11,7 +11,8 @@
 // rasterised as the page rasterised them. Every call goes to the browser's own functions
 // (window.__glNative.gpu: grader/browser/natives.js): nothing is counted, recorded, captured or seen as the page's.
 // Self-contained parts, put into graded pages as text (webgpuSurfaceReaderScript, by grader/browser/geometry.js);
-// wgslForSurface is also run by the unit tests in Node.
+// wgslForSurface is also run by the unit tests in Node. The entry point is read by wgsl-vertex.js.
+import { wgslVertexEntry } from './wgsl-vertex.js';
 
 /**
  * The page's WGSL `code` with our entry points for the surface, around its vertex entry point
@@ -19,47 +20,11 @@
  * or { why } where the entry point or its position input is not found.
  */
 export function wgslForSurface(code, entryPoint) {
-  const src = String(code).replace(/\/\*[\s\S]*?\*\//g, ' ').replace(/\/\/.*$/gm, ' ');
-  const entries = [...src.matchAll(/@vertex\s+fn\s+(\w+)\s*\(/g)];
-  const entry = entries.find((m) => !entryPoint || m[1] === entryPoint);
-  if (!entry) return { why: `the vertex entry point${entryPoint ? ` ${entryPoint}` : ''} was not found in the page's WGSL` };
-  // its parameters (balanced parentheses) and its result's type, up to the body's brace
-  let depth = 1, k = entry.index + entry[0].length;
-  const from = k;
-  for (; k < src.length && depth > 0; k++) depth += src[k] === '(' ? 1 : src[k] === ')' ? -1 : 0;
-  const paramsText = src.slice(from, k - 1);
-  const brace = src.indexOf('{', k);
-  if (brace < 0) return { why: 'the vertex entry point\'s body was not found' };
-  const result = src.slice(k, brace);
-  const ATTRS = /(?:@\w+\s*(?:\([^)]*\))?\s*)*/;
-  const split = (text) => {
-    const out = [];
-    let level = 0, cur = '';
-    for (const ch of text) {
-      if (ch === '<' || ch === '(') level++;
-      if (ch === '>' || ch === ')') level--;
-      if (ch === ',' && level === 0) { out.push(cur); cur = ''; } else cur += ch;
-    }
-    out.push(cur);
-    return out.map((p) => p.trim()).filter(Boolean);
-  };
-  const PARAM = new RegExp(`^(${ATTRS.source})(\\w+)\\s*:\\s*(.+)$`, 's');
-  const params = split(paramsText).map((p) => {
-    const m = PARAM.exec(p);
-    return m && { attrs: m[1], name: m[2], type: m[3].trim() };
-  });
+  const e = wgslVertexEntry(code, entryPoint);
+  if (e.why) return e;
+  const { src, params, inputs, structOf } = e;
+  if (e.body < 0) return { why: 'the vertex entry point\'s body was not found' };
   if (params.some((p) => !p)) return { why: 'the vertex entry point\'s parameters could not be read' };
-  const structOf = (type) => {
-    const m = new RegExp(`struct\\s+${type.replace(/\W/g, '')}\\s*\\{([^}]*)\\}`).exec(src);
-    return m ? split(m[1].replace(/;/g, ',')).map((x) => PARAM.exec(x)).filter(Boolean).map((x) => ({ attrs: x[1], name: x[2], type: x[3].trim() })) : null;
-  };
-  const location = (attrs) => { const m = /@location\s*\(\s*(\d+)\s*\)/.exec(attrs); return m ? Number(m[1]) : null; };
-  // every located input, with the expression that reads it inside our entry point
-  const inputs = [];
-  for (const p of params) {
-    if (location(p.attrs) !== null) inputs.push({ at: location(p.attrs), name: p.name, path: p.name, type: p.type });
-    else for (const m of structOf(p.type) || []) if (location(m.attrs) !== null) inputs.push({ at: location(m.attrs), name: m.name, path: `${p.name}.${m.name}`, type: m.type });
-  }
   const size = (t) => { const m = /^vec([234])/.exec(t); return m ? Number(m[1]) : 0; };
   const vector = (i) => size(i.type) >= 3;
   const position = inputs.find((i) => vector(i) && /pos|vert/i.test(i.name)) || inputs.find((i) => i.at === 0 && size(i.type) >= 2);
@@ -68,16 +33,16 @@ export function wgslForSurface(code, entryPoint) {
   const n = size(position.type);
   const p4 = n === 4 ? `vec4f(${position.path})` : n === 3 ? `vec4f(${position.path}, 1.0)` : `vec4f(${position.path}, 0.0, 1.0)`;
   // the clip position: the result itself, or its struct's @builtin(position) member
-  const type = result.replace(/^\s*->/, '').replace(new RegExp(`^\\s*${ATTRS.source}`), '').trim();
+  const type = e.resultType;
   const members = structOf(type);
   const clipMember = members && members.find((m) => /@builtin\s*\(\s*position\s*\)/.test(m.attrs));
   if (!clipMember && !/^vec4(f|<\s*f32\s*>)$/.test(type)) return { why: 'the vertex entry point\'s clip position was not found' };
   const clip = clipMember ? `r.${clipMember.name}` : 'r';
   const plain = `fn _grPage(${params.map((p) => `${p.name}: ${p.type}`).join(', ')}) -> ${type} {`;
-  const out = `${src.slice(0, entry.index)}${plain}${src.slice(brace + 1)}
+  const out = `${src.slice(0, e.at)}${plain}${src.slice(e.body + 1)}
 struct _GrOut { @builtin(position) clip: vec4f, @location(0) p: vec4f, @location(1) n: vec4f, @location(2) c: vec4f }
 override _grWhat: u32 = 0u;
-@vertex fn _grVs(${paramsText}) -> _GrOut {
+@vertex fn _grVs(${e.paramsText}) -> _GrOut {
   let r = _grPage(${params.map((p) => p.name).join(', ')});
   var o: _GrOut;
   o.clip = ${clip};
@@ -158,8 +123,8 @@ function webgpuSurfaceOf({ pipelineMaker, encodePasses, readFloats, pictures }) 
     let out;
     try {
       const maker = pipelineMaker(dev, call);
-      const reads = await encodePasses(mine, size, { call, dev, made, maker });
-      const pics = pictures(await readFloats(reads, size, call), size.width, size.height, fitSamples);
+      const passes = await encodePasses(mine, size, { call, dev, made, maker });
+      const pics = pictures(await readFloats(passes, size, call), size.width, size.height, fitSamples);
       const inputs = maker.inputs();
       out = pics.why ? pics : { width: size.width, height: size.height, position: inputs.position, normal: inputs.normal, ...pics };
     } catch (err) {
@@ -230,7 +195,8 @@ function pipelineMaker(dev, call) {
 /**
  * The page's draws `mine` drawn again in three passes (what: 0 the position and the face, 1 the
  * normal, 2 the clip position) into a float texture of `size`, each copied into a buffer, and
- * submitted: the buffers (rows padded to 256 bytes).
+ * submitted: { reads (the buffers), row (their rows' bytes, padded to 256) }. Each draw's layouts
+ * and bind groups are made once, for the three passes.
  */
 async function encodePasses(mine, { width, height }, { call, dev, made, maker }) {
   const colour = dev('createTexture', { size: [width, height], format: 'rgba32float', usage: 0x10 | 0x01 }); // RENDER_ATTACHMENT | COPY_SRC
@@ -238,6 +204,14 @@ async function encodePasses(mine, { width, height }, { call, dev, made, maker })
   const row = Math.ceil((16 * width) / 256) * 256;
   const reads = [0, 1, 2].map(() => dev('createBuffer', { size: row * height, usage: 0x0001 | 0x0008 })); // MAP_READ | COPY_DST
   made.push(colour, depth, ...reads);
+  // the page's own resources, in groups of ours (a layout made alike is the pipeline's)
+  const bound = mine.map(({ gpu: { desc, groups } }) => {
+    const layouts = maker.layoutsOf(desc, groups);
+    return { layouts, groups: layouts.map((entries, i) => {
+      const used = new Set(entries.map((e) => e.binding));
+      return dev('createBindGroup', { layout: dev('createBindGroupLayout', { entries }), entries: groups[i] ? groups[i].entries.filter((e) => used.has(e.binding)) : [] });
+    }) };
+  });
   const encoder = dev('createCommandEncoder');
   for (const what of [0, 1, 2]) {
     const pass = call('GPUCommandEncoder', 'beginRenderPass', encoder, {
@@ -245,16 +219,10 @@ async function encodePasses(mine, { width, height }, { call, dev, made, maker })
       depthStencilAttachment: { view: call('GPUTexture', 'createView', depth), depthLoadOp: 'clear', depthClearValue: 1, depthStoreOp: 'store' },
     });
     const enc = (name, ...a) => call('GPURenderPassEncoder', name, pass, ...a);
-    for (const d of mine) {
-      const { desc, vertex, index, groups, call: c } = d.gpu;
-      const layouts = maker.layoutsOf(desc, groups);
-      enc('setPipeline', await maker.pipelineOf(desc, layouts, what));
-      // the page's own resources, in groups of ours (a layout made alike is the pipeline's)
-      layouts.forEach((entries, i) => {
-        const used = new Set(entries.map((e) => e.binding));
-        const bound = groups[i] ? groups[i].entries.filter((e) => used.has(e.binding)) : [];
-        enc('setBindGroup', i, dev('createBindGroup', { layout: dev('createBindGroupLayout', { entries }), entries: bound }));
-      });
+    for (const [k, d] of mine.entries()) {
+      const { desc, vertex, index, call: c } = d.gpu;
+      enc('setPipeline', await maker.pipelineOf(desc, bound[k].layouts, what));
+      bound[k].groups.forEach((group, i) => enc('setBindGroup', i, group));
       vertex.forEach((v, slot) => { if (v) enc('setVertexBuffer', slot, v.buffer, v.offset); });
       if (c.indexed) {
         enc('setIndexBuffer', index.buffer, index.format, index.offset);
@@ -265,12 +233,12 @@ async function encodePasses(mine, { width, height }, { call, dev, made, maker })
     call('GPUCommandEncoder', 'copyTextureToBuffer', encoder, { texture: colour }, { buffer: reads[what], bytesPerRow: row }, [width, height]);
   }
   call('GPUQueue', 'submit', mine[0].gpu.desc.device.queue, [call('GPUCommandEncoder', 'finish', encoder)]);
-  return reads;
+  return { reads, row };
 }
 
-/** Each read-back buffer as floats, its rows from the bottom up (as WebGL reads them: pictures() turns them). */
-async function readFloats(reads, { width, height }, call) {
-  const row = Math.ceil((16 * width) / 256) * 256, floats = row / 4;
+/** Each read-back buffer (`reads`, rows of `row` bytes) as floats, its rows from the bottom up (as WebGL reads them: pictures() turns them). */
+async function readFloats({ reads, row }, { width, height }, call) {
+  const floats = row / 4;
   const passes = [];
   for (const b of reads) {
     await call('GPUBuffer', 'mapAsync', b, 0x0001);
@@ -285,7 +253,7 @@ async function readFloats(reads, { width, height }, call) {
 
 /** The reader's maker as an expression for a page's script: ({ rec, TRIANGLES }) → rec's WebGPU surface reader; `picturesText` is surface.js's pictures(). */
 export const webgpuSurfaceReaderScript = (picturesText) => `((${webgpuSurfaceOf})((() => {
-  const wgslForSurface = ${wgslForSurface}, layoutEntries = ${layoutEntries};
+  const wgslVertexEntry = ${wgslVertexEntry}, wgslForSurface = ${wgslForSurface}, layoutEntries = ${layoutEntries};
   const pipelineMaker = ${pipelineMaker};
   return { pipelineMaker, encodePasses: ${encodePasses}, readFloats: ${readFloats}, pictures: ${picturesText} };
 })()))`;
