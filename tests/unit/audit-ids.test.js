@@ -24,8 +24,11 @@ const rubric = mergeRubric(read(path.join(root, 'grader/core/rubric.json')), rea
 // students whose parts give reviews and fails of many kinds (labels.json)
 const STUDENTS = ['cy', 'dee', 'eve', 'dmitri', 'mona', 'finn', 'ada'];
 
-/** The recorded students' rows as report.js has them ({ name, passes, parts: [result] }), each part's result as part-result.js makes it. */
-async function recordedRows() {
+/** The recorded students' rows as report.js has them ({ name, passes, parts: [result] }), each part's result as part-result.js makes it; judged once, for both tests below. */
+let rows = null;
+const recordedRows = async () => rows || (rows = await judgeRows());
+
+async function judgeRows() {
   const dirs = STUDENTS.flatMap((name) => PARTS.map((part) => path.join(RECORDED, name, part))).filter((d) => existsSync(path.join(d, 'facts.json')));
   const judged = await auditDirs(dirs, rubric);
   return STUDENTS.map((name) => {
