@@ -8,6 +8,7 @@
 //     (leading zeros too).
 //   Feedback zip: the download's folder "<submission id>-<user id> - <name> - <date>/".
 import { importFile } from './points.js';
+import { sourceFolder } from './source-folder.js';
 
 const MONTHS = ['Jan', 'Feb', 'Mar', 'Apr', 'May', 'Jun', 'Jul', 'Aug', 'Sep', 'Oct', 'Nov', 'Dec'];
 const NAME = new RegExp(`^(\\d+)-(\\d+) - (.+?) - ((?:${MONTHS.join('|')}) \\d{1,2}, \\d{4} \\d{1,2}:?\\d{2} [AP]M)(?: - (.+))?$`);
@@ -45,5 +46,5 @@ export const brightspace = {
   siteFile: /^index\.html?$/i,
   gradeFile: { name: 'grades-brightspace.csv', make: brightspaceCsv },
   /** Where a student's feedback file `file` goes in the zip: in the folder the download gave the hand-in. */
-  feedbackPath: (s, file) => `${((s.identity && s.identity.source && s.identity.source[0]) || '').replace(/\/$/, '')}/${file}`,
+  feedbackPath: (s, file) => `${sourceFolder(s)}/${file}`,
 };

@@ -8,6 +8,7 @@
 //     folder "<Full Name>_<participant id>_assignsubmission_file/" is a new feedback file for
 //     that participant (mod/assign/feedback/file/importziplib.php reads the id from the folder).
 import { importFile, verdictWords } from './points.js';
+import { sourceFolder } from './source-folder.js';
 
 const NAME = /^(.+)_(\d+)_assignsubmission_([a-z]+)(?:_(.*))?$/;
 
@@ -32,7 +33,7 @@ export const moodle = {
   gradeFile: { name: 'grades-moodle.csv', make: moodleCsv },
   /** The feedback file `file` in the folder the download gave the participant (a loose-files download: the same prefix, its folder form). */
   feedbackPath(s, file) {
-    const folder = ((s.identity && s.identity.source && s.identity.source[0]) || '').replace(/\/$/, '');
+    const folder = sourceFolder(s);
     const prefix = /^(.+_\d+_assignsubmission_file)/.exec(folder);
     return `${prefix ? prefix[1] : folder}/${file}`;
   },
