@@ -10,6 +10,18 @@ import { orbitFoundLate } from './orbit.js';
 // keys students bind to the level, tried when no control changes it: up/down arrows, + and −, page up/down
 const LEVEL_KEYS = [['ArrowUp', 'ArrowDown'], ['+', '-'], ['ArrowRight', 'ArrowLeft'], ['PageUp', 'PageDown']];
 
+/**
+ * A level slider's or number input's values from its least up, `steps` steps at most: [min … max].
+ * Without a max the page sets no top, and the count of steps is the only bound (an <input
+ * type=range> without one runs to HTML's 100, far past any level the climb reaches).
+ */
+export function levelValues(c, steps) {
+  const lo = Number(c.min || 0), hi = c.max === '' || c.max === undefined ? Infinity : Number(c.max);
+  const values = [];
+  for (let v = lo; v <= Math.min(hi, lo + steps); v++) values.push(v);
+  return values;
+}
+
 /** Buttons (named for the level first); a button that did nothing at the top or bottom level is tried again once the level moved. */
 async function levelButtons(session, clickables, levelBy) {
   const { thresholds, patterns } = session;
@@ -55,8 +67,7 @@ async function levelButtons(session, clickables, levelBy) {
 async function levelSliderByEffect(session, valued) {
   const { patterns } = session;
   for (const c of trialOrder(valued, 'levelSlider', patterns, session.taken)) {
-    const lo = c.type === 'select' ? null : Number(c.min || 0), hi = c.type === 'select' ? null : (c.max === '' || c.max === undefined ? lo + 8 : Number(c.max));
-    const values = c.type === 'select' ? (c.options || []) : [lo, Math.min(hi, lo + 1), Math.min(hi, lo + 2)];
+    const values = c.type === 'select' ? (c.options || []) : levelValues(c, 1);
     if (values.length < 2 || (!named(c, 'levelSlider', patterns) && nameRole(c, patterns) !== null)) continue;
     session.trialsMade++;
     // to its least, then one up: a level control makes the silhouette rounder
@@ -173,11 +184,7 @@ export async function climb(session) {
     // Subdivide is clicked, until the silhouette settles (at most maxSubdivisions steps)
     const c = session.levelSlider;
     const values = [];
-    if (c.type === 'select') values.push(...(c.options || []).slice(0, thresholds.maxSubdivisions + 1));
-    else {
-      const lo = Number(c.min || 0), hi = Math.min(c.max === '' || c.max === undefined ? 8 : Number(c.max), lo + thresholds.maxSubdivisions);
-      for (let v = lo; v <= hi; v++) values.push(v);
-    }
+    values.push(...(c.type === 'select' ? (c.options || []).slice(0, thresholds.maxSubdivisions + 1) : levelValues(c, thresholds.maxSubdivisions)));
     ladder.length = 0;
     for (const v of values) {
       await session.page.setValue(c, v, ['input', 'change']);
