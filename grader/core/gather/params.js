@@ -8,9 +8,12 @@ const role = (session, c) => nameRole(c, session.patterns);
 /** The first of `controls` not yet given a role whose name says `r` (and `pred` holds). */
 export const free = (session, controls, r, pred = () => true) => controls.find((x) => !session.taken.has(x.index) && pred(x) && role(session, x) === r);
 
+/** An <input type=range> without min or max runs from 0 to 100: HTML's defaults. */
+export const RANGE_DEFAULT_MAX = 100;
+
 /** A slider's least and greatest values (a colour picker's: black and white). */
 export const least = (c) => (c.type === 'color' ? '#000000' : Number(c.min || 0));
-export const greatest = (c) => (c.type === 'color' ? '#ffffff' : Number(c.max === '' || c.max === undefined ? (c.type === 'range' ? 100 : 1) : c.max));
+export const greatest = (c) => (c.type === 'color' ? '#ffffff' : Number(c.max === '' || c.max === undefined ? (c.type === 'range' ? RANGE_DEFAULT_MAX : 1) : c.max));
 
 /** The parameters the page's free sliders set (parameterGroups: ks r, g, b as one). */
 export const groupsOf = (session, controls) => parameterGroups(controls.filter((c) => !session.taken.has(c.index)), session.patterns);

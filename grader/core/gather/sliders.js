@@ -5,7 +5,7 @@ import { pictureChange } from '../measure.js';
 import { describeGroup, sentChanges } from '../controls.js';
 import { sliderEvent } from '../computed/slider-event.js';
 import { readSent } from './geometry.js';
-import { groupsOf, setGroup, least, free, groupFacts } from './params.js';
+import { groupsOf, setGroup, least, free, groupFacts, RANGE_DEFAULT_MAX } from './params.js';
 
 /**
  * P4: each parameter's sliders (one slider, or the three of a colour or vector: parameterGroups)
@@ -22,7 +22,7 @@ export async function trySliders(session, controls) {
     const k = g.role;
     const target = (c) => {
       if (c.type === 'color') return least(c);
-      const lo = Number(c.min || 0), hi = Number(c.max === '' || c.max === undefined ? 100 : c.max);
+      const lo = least(c), hi = Number(c.max === '' || c.max === undefined ? RANGE_DEFAULT_MAX : c.max);
       return k === 's' ? (Number(session.now(c)) > (lo + hi) / 2 ? lo : hi) : (Number(session.now(c)) > lo ? lo : hi); // s: far from where it is; others: to the least
     };
     const vs = await setGroup(session, g, target, ['input']);
