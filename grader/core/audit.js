@@ -29,7 +29,19 @@ export function auditPart({ facts, images }, rubric, { audits = AUDIT_LIST } = {
   const declared = new Map(audits.flatMap((u) => Object.entries(u.meta)));
   // an audit says its findings under an id it declares (audits/index.js, or a unit of the list)
   const sayAs = (id) => list.sayAs(declared.has(id) ? id : auditMeta(id).id);
-  const context = { facts, images, thresholds, rubric, part, must, litStep, sayAs, numbers, imagesShown: shown, notGraded: null };
+  const context = {
+    facts,
+    images,
+    thresholds,
+    rubric,
+    part,
+    must,
+    litStep,
+    sayAs,
+    numbers,
+    imagesShown: shown,
+    notGraded: null,
+  };
   const results = {};
   let ended = { fail: null, failId: null };
   for (const u of audits) {
@@ -40,6 +52,14 @@ export function auditPart({ facts, images }, rubric, { audits = AUDIT_LIST } = {
     }
     results[u.id] = r;
   }
-  return { fail: ended.fail, failId: ended.failId, checks, numbers, shown, tooSlow: facts.tooSlow || null, tooHeavy: facts.tooHeavy ?? null,
-    ...(context.notGraded ? { notGraded: context.notGraded.reason, notGradedId: context.notGraded.id } : {}) };
+  return {
+    fail: ended.fail,
+    failId: ended.failId,
+    checks,
+    numbers,
+    shown,
+    tooSlow: facts.tooSlow || null,
+    tooHeavy: facts.tooHeavy ?? null,
+    ...(context.notGraded ? { notGraded: context.notGraded.reason, notGradedId: context.notGraded.id } : {}),
+  };
 }

@@ -60,7 +60,8 @@ export function effectOf({ before, after, later, wasMoving }, thresholds) {
   const sil = silhouetteChange(before.an, after.an);
   if (sil > thresholds.silhouetteSettled) {
     // a finer mesh inscribed in the sphere covers more of its disc, and its outline is rounder
-    const rounder = before.an.roundness - after.an.roundness, larger = (after.an.area - before.an.area) / before.an.area;
+    const rounder = before.an.roundness - after.an.roundness,
+      larger = (after.an.area - before.an.area) / before.an.area;
     if (Math.abs(larger) > thresholds.levelAreaChange) return larger > 0 ? 'finer' : 'coarser';
     return rounder > 0 ? 'finer' : 'coarser';
   }
@@ -128,7 +129,12 @@ export function parameterGroups(controls, patterns) {
   // (a handler's channel counts where its stem names the parameter, or the three carry the same words)
   const sameWords = (xs) => new Set(xs.map((x) => String(x.c.text || '').replace(/[([]?\b([012]|[rgbxyz])\b[)\]]?/gi, '').replace(/[\s\d.:=]+/g, ' ').trim().toLowerCase())).size === 1;
   const handlerOk = (stem, xs) => !!nameRole({ index: -1, type: 'range', id: stem, text: stem }, patterns) || sameWords(xs);
-  for (const [source, parse, ok] of [[(c) => c.id, channelOf], [(c) => c.name, channelOf], [(c) => c.text, channelOf], [(c) => c.handler, handlerChannelOf, handlerOk]]) {
+  // where a channel is read: the id, the name, the text (each by channelOf), the handler (handlerChannelOf)
+  const readers = [
+    [(c) => c.id, channelOf], [(c) => c.name, channelOf], [(c) => c.text, channelOf],
+    [(c) => c.handler, handlerChannelOf, handlerOk],
+  ];
+  for (const [source, parse, ok] of readers) {
     const byStem = new Map();
     for (const c of settable) {
       if (grouped.has(c.index) || c.type === 'color') continue;
@@ -140,7 +146,15 @@ export function parameterGroups(controls, patterns) {
     for (const [stem, xs] of byStem) {
       const fam = xs[0].family;
       const channels = new Set(xs.map((x) => x.channel));
-      if (fam < 0 || xs.length !== 3 || channels.size !== 3 || xs.some((x) => x.family !== fam) || (ok && !ok(stem, xs))) continue;
+      if (
+        fam < 0 ||
+        xs.length !== 3 ||
+        channels.size !== 3 ||
+        xs.some((x) => x.family !== fam) ||
+        (ok && !ok(stem, xs))
+      ) {
+        continue;
+      }
       const g = { controls: xs.map((x) => x.c), stem, channels: FAMILIES[fam].join(', ') };
       for (const x of xs) grouped.set(x.c.index, g);
     }

@@ -22,6 +22,21 @@ export function judged(artifact, rubric, { audits } = {}) {
   const a = auditPart(artifact, rubric, audits ? { audits } : {});
   const shown = {};
   for (const [k, name] of Object.entries(a.shown)) if (images[name]) shown[k] = images[name];
-  return { artifact, fail: a.fail, failId: a.failId, checks: a.checks, numbers: a.numbers, tooSlow: a.tooSlow, tooHeavy: a.tooHeavy, notGraded: a.notGraded || null, notGradedId: a.notGradedId, images: shown, shown: a.shown,
-    actions: facts.actions, controls: rolesInWords(facts, rubric.thresholds), api: facts.api, canvas: facts.canvas };
+  return {
+    artifact,
+    fail: a.fail,
+    failId: a.failId,
+    checks: a.checks,
+    numbers: a.numbers,
+    tooSlow: a.tooSlow,
+    tooHeavy: a.tooHeavy,
+    notGraded: a.notGraded || null,
+    notGradedId: a.notGradedId,
+    images: shown,
+    shown: a.shown,
+    actions: facts.actions,
+    controls: rolesInWords(facts, rubric.thresholds),
+    api: facts.api,
+    canvas: facts.canvas,
+  };
 }

@@ -12,7 +12,8 @@ import { verdictOf, findingsOf, NOT_GRADED } from './verdict.js';
  * teacher reads, labels and comparisons match), `findings` each with its audit's id and level (what
  * the check page, the feedback pages and grades.csv go by).
  */
-export const withFindings = (result, findings) => Object.assign(result, { reasons: findings.map((f) => f.reason), findings });
+export const withFindings = (result, findings) =>
+  Object.assign(result, { reasons: findings.map((f) => f.reason), findings });
 
 /**
  * A part's findings ({ id, level, reason }, as report.json and the check page have them). A result
@@ -57,7 +58,13 @@ export function notJudgedHere(result, verdict, reason, seen, id) {
  * the report (the artifact's files).
  */
 export function applyAudit(result, judged, files = {}) {
-  Object.assign(result, { api: judged.api ?? null, canvas: judged.canvas, controls: judged.controls || {}, numbers: judged.numbers || {}, actions: [...(judged.actions || [])] });
+  Object.assign(result, {
+    api: judged.api ?? null,
+    canvas: judged.canvas,
+    controls: judged.controls || {},
+    numbers: judged.numbers || {},
+    actions: [...(judged.actions || [])],
+  });
   Object.assign(result, judgement(judged, result.errors || []));
   const slow = judged.tooHeavy ? 'too heavy' : 'too slow';
   result.status = judged.fail ? 'failed' : judged.tooSlow ? slow : 'ok';

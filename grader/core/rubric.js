@@ -25,8 +25,20 @@ export function mergeRubric(base, teacher) {
   }
   // (the intake's bounds and the grade files' points are merged key by key too, a part's weight as well)
   const unpack = { ...base.unpack, ...(teacher.unpack || {}) };
-  const points = { ...base.points, ...(teacher.points || {}), weights: { ...(base.points || {}).weights, ...((teacher.points || {}).weights || {}) } };
-  return { ...base, ...teacher, thresholds: { ...base.thresholds, ...(teacher.thresholds || {}) }, controls: { ...base.controls, ...(teacher.controls || {}) }, parts, unpack, points };
+  const points = {
+    ...base.points,
+    ...(teacher.points || {}),
+    weights: { ...(base.points || {}).weights, ...((teacher.points || {}).weights || {}) },
+  };
+  return {
+    ...base,
+    ...teacher,
+    thresholds: { ...base.thresholds, ...(teacher.thresholds || {}) },
+    controls: { ...base.controls, ...(teacher.controls || {}) },
+    parts,
+    unpack,
+    points,
+  };
 }
 
 /** A teacher's `must` for `part`, in audit ids; throws, naming them, on a list that is not one or on an id no audit has. */

@@ -19,13 +19,26 @@ export function auditDiffuse({ thresholds, must, sayAs, numbers }, shading, lit)
   if (!must.has('diffuse') && !must.has('highlight')) return;
   const { fit, pointLight } = shading;
   if (pointLight) numbers.pointLight = pointLight;
-  numbers.fit = fit && { r2: fit.r2, ambient: fit.ambient, diffuse: fit.diffuse, light: fit.light, highlightPeak: fit.highlightPeak, highlightRise: fit.highlightRise, spread: fit.spread };
+  numbers.fit = fit && {
+    r2: fit.r2,
+    ambient: fit.ambient,
+    diffuse: fit.diffuse,
+    light: fit.light,
+    highlightPeak: fit.highlightPeak,
+    highlightRise: fit.highlightRise,
+    spread: fit.spread,
+  };
   const orbitFits = lit.filter((v) => v.orbiting).map((v) => v.fit);
   // lit on both sides shows where the light comes from the side: any view seen on the orbit (or
   // over all pixels: a crescent lit from behind is left out of the first fit as if a highlight; on
   // a page lit one-sided, |n·w_i| never explains all pixels better, it lights the dark side)
-  const twoSided = [fit, ...lit.map((v) => v.fit)].filter(Boolean).find((f) => (f.r2TwoSided > f.r2 + thresholds.twoSidedGain && f.r2 < thresholds.twoSidedBelow) ||
-    (f.r2TwoSidedAll > f.r2All + thresholds.twoSidedGainAll && f.r2TwoSidedAll >= thresholds.diffuseR2));
+  const twoSided = [fit, ...lit.map((v) => v.fit)]
+    .filter(Boolean)
+    .find(
+      (f) =>
+        (f.r2TwoSided > f.r2 + thresholds.twoSidedGain && f.r2 < thresholds.twoSidedBelow) ||
+        (f.r2TwoSidedAll > f.r2All + thresholds.twoSidedGainAll && f.r2TwoSidedAll >= thresholds.diffuseR2),
+    );
   if (fit && fit.tint && fit.tint.added) say('pass', `note: the colour is the lighting with WP04P1's normal colouring added (about ${fmt(fit.tint.added, 2)}·n, read from how the channels differ: each follows one component of the normal, the lighting is the same in all three): the lighting is judged with it taken out`);
   if (!fit) say('mistake', 'too little of the sphere to read its shading');
   else if (fit.spread < thresholds.evenSpread) say('mistake', `the sphere is evenly bright: no diffuse shading to see (in ${1 + lit.length} views${orbitFits.length ? ' along the orbit' : ''})`);

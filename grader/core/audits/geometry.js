@@ -20,7 +20,8 @@ export const META = {
 };
 
 /** The geometry judged: the judged level's, else the first level's (where the page went blank later). */
-const judgedGeometry = (facts) => [facts.geometry, facts.geometryAtFirst].find((g) => g && !g.why && g.analysed > 0) || null;
+const judgedGeometry = (facts) =>
+  [facts.geometry, facts.geometryAtFirst].find((g) => g && !g.why && g.analysed > 0) || null;
 
 /** The share of the triangles, wound as read, that the culling the page set takes away seen from outside. */
 function culledOutward(cull, cw) {
@@ -81,7 +82,8 @@ export function auditGrowth({ facts, thresholds, sayAs, numbers }) {
   const f = g && g.frames;
   if (!f || f.length < thresholds.growthFrames) return;
   const last = f.slice(-thresholds.growthFrames);
-  const grows = last.every((v, k) => k === 0 || v > last[k - 1]) && last[last.length - 1] >= thresholds.growthRatio * last[0];
+  const grows =
+    last.every((v, k) => k === 0 || v > last[k - 1]) && last[last.length - 1] >= thresholds.growthRatio * last[0];
   if (!grows) return;
   numbers.growth = f;
   say('mistake', `the page draws more every frame (${f[0]} → ${f[f.length - 1]} vertices over ${f.length} frames, no control touched): the mesh is built again and appended to its arrays, and the page slows until it stalls`);
@@ -96,7 +98,12 @@ export function auditGrowth({ facts, thresholds, sayAs, numbers }) {
 export function auditLoopsMultiply({ facts, thresholds, sayAs, numbers }) {
   const f = facts.frameDraws;
   if (!f || !f.first || !f.last || !f.clicks || !(f.first.loops >= 1) || !(f.first.draws > 0)) return;
-  if (f.last.loops < thresholds.loopsMultiplied * f.first.loops || f.last.draws < thresholds.loopsMultiplied * f.first.draws) return;
+  if (
+    f.last.loops < thresholds.loopsMultiplied * f.first.loops ||
+    f.last.draws < thresholds.loopsMultiplied * f.first.draws
+  ) {
+    return;
+  }
   numbers.frameDraws = f;
   // (the loops are counted exactly; the draws a frame also hold a click's own drawing)
   sayAs('loops-multiply')('pass', `note: the page draws its sphere ${f.last.loops} times a frame after ${f.clicks} click${f.clicks === 1 ? '' : 's'} (${f.last.loops} animation loops, where it started with ${f.first.loops}; ${f.last.draws} draw calls a frame, ${f.first.draws} at first): each click starts another animation loop, so the orbit speeds up and the page slows`);
@@ -107,7 +114,15 @@ export function auditPictureNotGeometry({ facts, thresholds, sayAs }, judged) {
   const say = sayAs('picture-not-geometry');
   // (the triangles are counted whether or not their positions could be read)
   const g = [facts.geometry, facts.geometryAtFirst].find((x) => x && Number.isFinite(x.triangles));
-  if (!g || !g.draws || 3 * g.triangles + (g.otherVertices || 0) > 3 * thresholds.pictureTriangles || judged.an.blank || !(judged.an.roundness <= thresholds.roundness)) return;
+  if (
+    !g ||
+    !g.draws ||
+    3 * g.triangles + (g.otherVertices || 0) > 3 * thresholds.pictureTriangles ||
+    judged.an.blank ||
+    !(judged.an.roundness <= thresholds.roundness)
+  ) {
+    return;
+  }
   say('review', `the sphere is a picture, not geometry: a round sphere shows, but the page draws ${g.triangles} triangle${g.triangles === 1 ? '' : 's'} (read from what it sent to WebGL): the slide asks for a tetrahedron subdivided into a sphere`);
 }
 

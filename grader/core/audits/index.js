@@ -17,7 +17,20 @@ import { META as sliders } from './sliders.js';
 import { META as shading } from './shading.js';
 import { META as surface } from './surface.js';
 
-const modules = { page, firstFrame, channels, sphere, geometry, normals, diffuse, orbit, highlight, sliders, shading, surface };
+const modules = {
+  page,
+  firstFrame,
+  channels,
+  sphere,
+  geometry,
+  normals,
+  diffuse,
+  orbit,
+  highlight,
+  sliders,
+  shading,
+  surface,
+};
 
 /** id → { id, title, failureTitle, description, slide, note?, reads, module }. */
 export const AUDITS = {};

@@ -60,7 +60,21 @@ const ORDER = [
   'orbit-not-stopped',
 ];
 
-const ALL = [...page, ...firstFrame, ...channels, ...sphere, ...geometry, ...normals, ...surface, ...readings, ...diffuse, ...orbit, ...highlight, ...sliders, ...shading];
+const ALL = [
+  ...page,
+  ...firstFrame,
+  ...channels,
+  ...sphere,
+  ...geometry,
+  ...normals,
+  ...surface,
+  ...readings,
+  ...diffuse,
+  ...orbit,
+  ...highlight,
+  ...sliders,
+  ...shading,
+];
 
 /** The units in ORDER; checks that each is listed once and runs after the units it uses. */
 export function orderedUnits(units, order) {

@@ -14,7 +14,9 @@ export function missedSlides(findings) {
     if (f.level !== 'fail' && f.level !== 'review') continue;
     const audit = AUDITS[f.id];
     if (!audit || !audit.slide) continue;
-    if (!out.some((o) => o.slide === audit.slide)) out.push({ reason: f.reason, slide: audit.slide, note: audit.note, id: f.id });
+    if (!out.some((o) => o.slide === audit.slide)) {
+      out.push({ reason: f.reason, slide: audit.slide, note: audit.note, id: f.id });
+    }
   }
   return out;
 }

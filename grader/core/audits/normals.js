@@ -69,7 +69,13 @@ function clockwiseExperiment(facts) {
 }
 
 /** The colours decode to unit normals (2c − 1) that vary over the picture as one side of a sphere's do. */
-const smoothUnitNormals = (nc, thresholds) => !!nc && !(nc.spread < thresholds.normalsSpread || nc.unitError > thresholds.normalsUnitError || nc.residual > thresholds.facingResidual);
+const smoothUnitNormals = (nc, thresholds) =>
+  !!nc &&
+  !(
+    nc.spread < thresholds.normalsSpread ||
+    nc.unitError > thresholds.normalsUnitError ||
+    nc.residual > thresholds.facingResidual
+  );
 
 /**
  * WP04P1/P2: "Draw a solid sphere in perspective view". Where the colours decode to the normals of

@@ -14,7 +14,11 @@ export const META = {
   'orbit-toggle': { title: 'A button toggles the orbit', slide: SLIDE.orbit, failureTitle: 'No button toggles the orbit', description: 'Finds the control that starts and stops the orbit by what it does to the picture.', reads: ['facts.orbit', 'facts.controls', 'facts.roles', 'facts.level'] },
 };
 
-const signedAngle = (a, b) => (180 / Math.PI) * Math.acos(Math.max(-1, Math.min(1, (a[0] * b[0] + a[1] * b[1] + a[2] * b[2]) / (Math.hypot(...a) * Math.hypot(...b)))));
+const signedAngle = (a, b) =>
+  (180 / Math.PI) *
+  Math.acos(
+    Math.max(-1, Math.min(1, (a[0] * b[0] + a[1] * b[1] + a[2] * b[2]) / (Math.hypot(...a) * Math.hypot(...b)))),
+  );
 const angle = (a, b) => (180 / Math.PI) * Math.acos(Math.min(1, Math.abs(a[0] * b[0] + a[1] * b[1] + a[2] * b[2])));
 
 /** The orbit restarted to look at the shading would not stop again. */
@@ -36,7 +40,11 @@ export function auditOrbit({ facts, thresholds, must, sayAs, numbers }, lit) {
     // far less than that is a light that moves with the camera, whatever the fits' noise; where the
     // camera's turn moves such a light little (it turned too little, or about the light itself), the
     // fit's own turn tells only when it is clear
-    const seen = orbiting.filter((v) => v.camera), rs = cameraRotations(seen.map((v) => v.camera), thresholds.cameraRotationTolerance);
+    const seen = orbiting.filter((v) => v.camera),
+      rs = cameraRotations(
+        seen.map((v) => v.camera),
+        thresholds.cameraRotationTolerance,
+      );
     let apart = null;
     if (rs) {
       const ref = seen.reduce((b, v, k) => (v.fit.r2 > seen[b].fit.r2 ? k : b), 0), l = seen[ref].fit.light;

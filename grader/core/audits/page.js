@@ -65,7 +65,10 @@ function auditTamper({ facts, sayAs }) {
 function auditTooSlow(context) {
   const { facts, rubric, sayAs } = context;
   if (!facts.tooSlow) return null;
-  const slow = tooSlow(rubric, facts.tooHeavy != null ? tooHeavyWords(rubric, facts.tooSlow, facts.tooHeavy) : tooSlowWords(rubric, facts.tooSlow));
+  const slow = tooSlow(
+    rubric,
+    facts.tooHeavy != null ? tooHeavyWords(rubric, facts.tooSlow, facts.tooHeavy) : tooSlowWords(rubric, facts.tooSlow),
+  );
   if (slow.level === NOT_GRADED) context.notGraded = { reason: slow.reason, id: slow.id };
   else sayAs(slow.id)(slow.level, slow.reason);
   return end();

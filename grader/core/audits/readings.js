@@ -19,7 +19,9 @@ function readShading({ facts, images, thresholds, litStep }, results) {
 /** The lit views kept along the orbit, with their sparse fits (where the shading is judged; else none). */
 function readLitViews({ facts, images, thresholds }, { shading }) {
   if (!shading.shaded) return [];
-  return facts.views.map((v) => ({ ...litView(images[v.image], thresholds), orbiting: v.orbiting, image: v.image, camera: v.camera })).filter((v) => v.lit);
+  return facts.views
+    .map((v) => ({ ...litView(images[v.image], thresholds), orbiting: v.orbiting, image: v.image, camera: v.camera }))
+    .filter((v) => v.lit);
 }
 
 /** This module's units (audits/list.js runs them in its order). */

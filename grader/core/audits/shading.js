@@ -49,7 +49,10 @@ export function auditPerFragment({ facts, images, thresholds, must, sayAs, numbe
   const raw = facts.sources ? unnormalisedInputs(facts.sources) : [];
   if (raw.length) say('mistake', `the fragment shader takes the interpolated ${raw.join(' and ')} into dot() or reflect() without normalising ${raw.length > 1 ? 'them' : 'it'}: interpolated directions are shorter than 1 between the vertices (the slides: "most importantly, we must normalize the direction vectors in the fragment shader")`);
   const j = facts.judgedLevel;
-  const coarseAt = facts.stopped && !facts.viewMoved ? facts.ladder.findIndex((s, k) => k !== j && !s.blank && s.roundness < thresholds.coarseRoundness && s.image) : -1;
+  const coarseAt =
+    facts.stopped && !facts.viewMoved
+      ? facts.ladder.findIndex((s, k) => k !== j && !s.blank && s.roundness < thresholds.coarseRoundness && s.image)
+      : -1;
   const coarse = coarseAt >= 0 ? images[facts.ladder[coarseAt].image] : null;
   if (coarse && coarse.width === judged.img.width) {
     const change = shadingChange(coarse, analyse(coarse, thresholds), judged.img, judged.raw, thresholds);

@@ -41,10 +41,26 @@ export function auditSliders({ facts, images, thresholds, must, sayAs, rubric, p
       // 1/r² spot stays and is no highlight), or above the after picture's own directional fit
       const after = images[s.image];
       const a = analyse(after, thresholds);
-      const f = a.blank ? null : nearModel ? { highlightPeak: highlightAbove(perspectiveSamples(after, judged.an, thresholds, { max: thresholds.fitSamples }), nearModel, thresholds) }
-        : fullFit(after, thresholds);
-      if (f && f.highlightPeak >= baseFit.highlightPeak * thresholds.ksLeftShare && f.highlightPeak >= thresholds.highlightPeak) {
-        sayKs('review', `ks${s.controls ? ` (its ${s.controls.length} sliders)` : ''} at ${target} leaves the highlight as it was (${fmt(f.highlightPeak)}): is ks used in the specular term?`);
+      const f = a.blank
+        ? null
+        : nearModel
+          ? {
+              highlightPeak: highlightAbove(
+                perspectiveSamples(after, judged.an, thresholds, { max: thresholds.fitSamples }),
+                nearModel,
+                thresholds,
+              ),
+            }
+          : fullFit(after, thresholds);
+      if (
+        f &&
+        f.highlightPeak >= baseFit.highlightPeak * thresholds.ksLeftShare &&
+        f.highlightPeak >= thresholds.highlightPeak
+      ) {
+        sayKs(
+          'review',
+          `ks${s.controls ? ` (its ${s.controls.length} sliders)` : ''} at ${target} leaves the highlight as it was (${fmt(f.highlightPeak)}): is ks used in the specular term?`,
+        );
       }
     }
   }

@@ -41,7 +41,14 @@ export function auditHeavyLevel({ facts, sayAs }) {
 export function auditSphere({ thresholds, sayAs, numbers }, judged, ladder, firstRoundness) {
   const say = sayAs('sphere');
   const { an, circleArc } = judged;
-  Object.assign(numbers, { radius: an.radius, roundness: an.roundness, fill: an.fill, coverage: an.coverage, firstRoundness, levelsSeen: ladder.length });
+  Object.assign(numbers, {
+    radius: an.radius,
+    roundness: an.roundness,
+    fill: an.fill,
+    coverage: an.coverage,
+    firstRoundness,
+    levelsSeen: ladder.length,
+  });
   if (circleArc) say('pass', `part of the sphere is as dark as the background: its outline was fitted to the lit edge (${circleArc}° of a circle)`);
   if (an.radius < thresholds.minRadiusPixels) say('review', `the sphere is very small on screen (${fmt(an.radius, 0)} px radius): hard to judge`);
   else if (an.roundness <= thresholds.roundness && an.fill >= thresholds.fill) {

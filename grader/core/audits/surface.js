@@ -37,7 +37,17 @@ export function auditSurfaceFit({ sayAs }, exact) {
 /** The lighting fitted on the page's own surface (its normals and positions as it drew them): evidence in the numbers, and the note. */
 function auditLightingOnSurface(context, results) {
   const exact = context.litStep ? exactLighting(context.facts, context.images, results['judged-picture'], context.thresholds) : null;
-  if (exact) context.numbers.surfaceFit = exact.why ? { why: exact.why } : { samples: exact.samples, diffuse: exact.diffuse, slide: exact.slide, best: exact.best, variants: exact.variants.slice(0, 8) };
+  if (exact) {
+    context.numbers.surfaceFit = exact.why
+      ? { why: exact.why }
+      : {
+          samples: exact.samples,
+          diffuse: exact.diffuse,
+          slide: exact.slide,
+          best: exact.best,
+          variants: exact.variants.slice(0, 8),
+        };
+  }
   auditSurfaceFit(context, exact);
 }
 

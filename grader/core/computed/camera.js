@@ -18,7 +18,13 @@ export function cameraOf(sent, animated) {
 /** The 3×3 part of a column-major 4×4 matrix, as rows, scaled to unit rows; null where it is no rotation (a projection in it). */
 function rotationOf(m, tolerance) {
   const r = [[m[0], m[4], m[8]], [m[1], m[5], m[9]], [m[2], m[6], m[10]]];
-  const scale = Math.cbrt(Math.abs(r[0][0] * (r[1][1] * r[2][2] - r[1][2] * r[2][1]) - r[0][1] * (r[1][0] * r[2][2] - r[1][2] * r[2][0]) + r[0][2] * (r[1][0] * r[2][1] - r[1][1] * r[2][0])));
+  const scale = Math.cbrt(
+    Math.abs(
+      r[0][0] * (r[1][1] * r[2][2] - r[1][2] * r[2][1]) -
+        r[0][1] * (r[1][0] * r[2][2] - r[1][2] * r[2][0]) +
+        r[0][2] * (r[1][0] * r[2][1] - r[1][1] * r[2][0]),
+    ),
+  );
   if (!(scale > 0)) return null;
   const u = r.map((row) => row.map((x) => x / scale));
   for (let i = 0; i < 3; i++) {

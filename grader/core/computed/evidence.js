@@ -14,7 +14,14 @@ export function sphereView(img, thresholds) {
   let an = analyse(img, thresholds);
   let circleArc = null;
   const circ = an.circle;
-  if (!an.blank && !(an.roundness <= thresholds.roundness && an.fill >= thresholds.fill) && circ && circ.roundness <= thresholds.roundness && circ.arc >= thresholds.litEdgeArcDegrees && !an.touches) {
+  if (
+    !an.blank &&
+    !(an.roundness <= thresholds.roundness && an.fill >= thresholds.fill) &&
+    circ &&
+    circ.roundness <= thresholds.roundness &&
+    circ.arc >= thresholds.litEdgeArcDegrees &&
+    !an.touches
+  ) {
     an = { ...an, cx: circ.cx, cy: circ.cy, radius: circ.r, roundness: circ.roundness, fill: 1 };
     circleArc = circ.arc;
   }
@@ -31,10 +38,17 @@ export const shadingOf = memo((img, an, thresholds) => {
   const fit = shadeFit(samples(img, an, thresholds), thresholds);
   let pointLight = null;
   if (fit && fit.spread >= thresholds.litSpread) {
-    pointLight = pointLightFit(perspectiveSamples(img, an, thresholds, { max: thresholds.fitSamples }), thresholds, fit.light);
+    pointLight = pointLightFit(
+      perspectiveSamples(img, an, thresholds, { max: thresholds.fitSamples }),
+      thresholds,
+      fit.light,
+    );
   }
   const nearModel = clearlyNearFalloff(pointLight, thresholds) ? pointLight.falloff.model : null;
-  const judgedFit = fit && nearModel ? { ...fit, highlightPeak: pointLight.falloff.highlightPeak, highlightRise: pointLight.falloff.highlightRise } : fit;
+  const judgedFit =
+    fit && nearModel
+      ? { ...fit, highlightPeak: pointLight.falloff.highlightPeak, highlightRise: pointLight.falloff.highlightRise }
+      : fit;
   return { fit, judgedFit, pointLight, nearModel };
 });
 

@@ -28,5 +28,7 @@ function roleWords(r, facts, thresholds) {
 
 /** facts.roles in words: { role: sentence }, in the order the roles were given. */
 export function rolesInWords(facts, thresholds) {
-  return Object.fromEntries(Object.entries(facts.roles || {}).map(([role, r]) => [role, roleWords(r, facts, thresholds)]));
+  return Object.fromEntries(
+    Object.entries(facts.roles || {}).map(([role, r]) => [role, roleWords(r, facts, thresholds)]),
+  );
 }

@@ -15,7 +15,18 @@ export const solve = (A, b) => solveNormal(A.flat(), b, b.length);
  */
 export function clipMatrix(samples) {
   // one normal matrix [p, 1]ᵀ[p, 1] for the four rows; a right-hand side a row
-  const AtA = [[0, 0, 0, 0], [0, 0, 0, 0], [0, 0, 0, 0], [0, 0, 0, 0]], Atb = [[0, 0, 0, 0], [0, 0, 0, 0], [0, 0, 0, 0], [0, 0, 0, 0]];
+  const AtA = [
+      [0, 0, 0, 0],
+      [0, 0, 0, 0],
+      [0, 0, 0, 0],
+      [0, 0, 0, 0],
+    ],
+    Atb = [
+      [0, 0, 0, 0],
+      [0, 0, 0, 0],
+      [0, 0, 0, 0],
+      [0, 0, 0, 0],
+    ];
   for (const { p, clip } of samples) {
     const x = [p[0], p[1], p[2], 1];
     for (let i = 0; i < 4; i++) {
@@ -67,7 +78,9 @@ export function surfaceOf(surface, images, thresholds) {
       const n = unit([0, 1, 2].map((k) => (2 * nImg.data[o + k]) / 255 - 1));
       if (!n) continue;
       const p = [0, 1, 2].map((k) => lo[k] + ((hi[k] - lo[k]) * pImg.data[o + k]) / 255);
-      const w_o = camera.eye ? unit([camera.eye[0] - p[0], camera.eye[1] - p[1], camera.eye[2] - p[2]]) : camera.towards;
+      const w_o = camera.eye
+        ? unit([camera.eye[0] - p[0], camera.eye[1] - p[1], camera.eye[2] - p[2]])
+        : camera.towards;
       samples.push({ x, y, p, n, front: a === 255, w_o });
     }
   }

@@ -32,9 +32,14 @@ export async function lookAllRound(session) {
     turned = step !== null ? turned + step : null;
     last = session.camera;
     // the next step's frames: sized to turn about roundStepDegrees where this one's turn is read, else doubled
-    frames = Math.max(1, Math.min(most(), step > 0 ? Math.round((frames * thresholds.roundStepDegrees) / step) : 2 * frames));
+    frames = Math.max(
+      1,
+      Math.min(most(), step > 0 ? Math.round((frames * thresholds.roundStepDegrees) / step) : 2 * frames),
+    );
     const an = sh ? sh.an : { blank: true };
-    views.push(an.blank ? { blank: true } : { roundness: an.roundness, fill: an.fill, ...(turned !== null ? { turned } : {}) });
+    views.push(
+      an.blank ? { blank: true } : { roundness: an.roundness, fill: an.fill, ...(turned !== null ? { turned } : {}) },
+    );
     if (!gap && !an.blank && an.roundness <= thresholds.roundness && an.fill < thresholds.fill) gap = session.keep('all-round-gap', sh.img);
   }
   facts.allRound = { views, turned, gap, why: g.why };

@@ -8,7 +8,10 @@ import { clipMatrix } from '../computed/surface.js';
 export async function readGeometry(session) {
   if (!session.page.geometry) return null;
   session.outOfTime();
-  return session.page.geometry({ maxTriangles: session.thresholds.geometrySampleTriangles, maxEdgeTriangles: session.thresholds.geometryEdgeTriangles });
+  return session.page.geometry({
+    maxTriangles: session.thresholds.geometrySampleTriangles,
+    maxEdgeTriangles: session.thresholds.geometryEdgeTriangles,
+  });
 }
 
 /** What the page last sent for its shaders ({ key: digest }: grader/browser/sent.js); null where not recorded. */

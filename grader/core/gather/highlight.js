@@ -16,7 +16,8 @@ export async function raiseHighlight(session, controls) {
   const { thresholds } = session;
   const set = [];
   // s raised to raisedShininess, within the slider's range
-  const s10 = (c) => Math.max(Number(c.min || 0) + 1, Math.min(thresholds.raisedShininess, Number(c.max || thresholds.raisedShininess)));
+  const s10 = (c) =>
+    Math.max(Number(c.min || 0) + 1, Math.min(thresholds.raisedShininess, Number(c.max || thresholds.raisedShininess)));
   const raised = session.facts.raised = [];
   const groups = groupsOf(session, controls).filter((g) => g.controls.every((c) => c.type === 'range' || c.type === 'number' || (g.role === 'ks' && c.type === 'color')));
   for (const [r, to] of [['ks', (c) => (c.type === 'color' ? greatest(c) : Number(c.max === '' || c.max === undefined ? 1 : c.max))], ['s', s10]]) {
@@ -57,7 +58,12 @@ export async function placeFarther(session, controls) {
     far = await searchOrbit(session, (img, an) => {
       if (an.blank || an.roundness >= thresholds.orbitCoarseRoundness) return false;
       const f = fullFit(img, thresholds); // (the fit the highlight's place is judged on: audits/highlight.js)
-      return !!f && f.r2 >= thresholds.diffuseR2 && highlightSeen(f, thresholds) && lightAngle(f) >= thresholds.highlightPlaceLightDegrees;
+      return (
+        !!f &&
+        f.r2 >= thresholds.diffuseR2 &&
+        highlightSeen(f, thresholds) &&
+        lightAngle(f) >= thresholds.highlightPlaceLightDegrees
+      );
     });
     await session.tryClick(orbit.stop, 'the orbit control again', { watchMotion: true });
   }

@@ -130,7 +130,13 @@ async function orbitAndLevel(session, controls) {
       else facts.orbitKeptMoving = true;
     }
   }
-  Object.assign(facts.orbit = {}, { movedAtFirst: orbit.movedAtFirst, toggles: orbit.toggles, start: orbit.start ? orbit.start.index : null, stop: orbit.stop ? orbit.stop.index : null, control: session.roles.orbit ? session.roles.orbit.index : null });
+  Object.assign((facts.orbit = {}), {
+    movedAtFirst: orbit.movedAtFirst,
+    toggles: orbit.toggles,
+    start: orbit.start ? orbit.start.index : null,
+    stop: orbit.stop ? orbit.stop.index : null,
+    control: session.roles.orbit ? session.roles.orbit.index : null,
+  });
   // a page that goes blank at a higher level is judged at the last level it drew
   let j = ladder.length - 1;
   if (ladder[j].an.blank) {
@@ -162,13 +168,20 @@ async function whatTheStepAsks(session, controls, img) {
   // a picture that clips to white over much of the sphere: read with the page's own kd, Le, La
   // lowered; one too dim to show its shading, with the page's own Le (else kd) raised
   const shaded = must.has('diffuse') || must.has('highlight');
-  const shadeImg = (shaded && (await unclip(session, controls, img, an) || await brighten(session, controls, img, an))) || img;
+  const shadeImg =
+    (shaded && ((await unclip(session, controls, img, an)) || (await brighten(session, controls, img, an)))) || img;
   const shading = shaded ? shadingOf(shadeImg, an, thresholds) : null;
   let placeLater = false;
   if (must.has('highlight') && shading.fit) {
     const views = viewFits(facts.views.map((v) => ({ img: session.images[v.image] })), thresholds);
-    if (!highlightEvidence(shading, views, null, session.images, thresholds).seen && !shading.nearModel) await raiseHighlight(session, controls);
-    placeLater = highlightEvidence(shading, views, facts.raised, session.images, thresholds).farther && !!orbit.start && !!orbit.stop && stopped;
+    if (!highlightEvidence(shading, views, null, session.images, thresholds).seen && !shading.nearModel) {
+      await raiseHighlight(session, controls);
+    }
+    placeLater =
+      highlightEvidence(shading, views, facts.raised, session.images, thresholds).farther &&
+      !!orbit.start &&
+      !!orbit.stop &&
+      stopped;
   }
   if (must.has('sliders')) await trySliders(session, controls);
   if (must.has('highlight') && shading.fit && stopped) await leastShininess(session, controls);

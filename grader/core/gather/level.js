@@ -136,7 +136,14 @@ export async function findLevel(session, controls) {
       session.assign('levelSlider', c, 'by-name');
     }
   }
-  session.facts.level = { subdivide: !!levelBy.subdivide, coarsen: !!levelBy.coarsen, slider: !!session.levelSlider, stopped, trials: session.trialsMade, valued: valued.length };
+  session.facts.level = {
+    subdivide: !!levelBy.subdivide,
+    coarsen: !!levelBy.coarsen,
+    slider: !!session.levelSlider,
+    stopped,
+    trials: session.trialsMade,
+    valued: valued.length,
+  };
 }
 
 /**
@@ -160,7 +167,12 @@ export async function climb(session) {
       if (isDone) break;
       // a level whose frame is heavy work ends the climb once the sphere is nearly round: the next
       // has four times the triangles, and a click cannot be stopped once it runs
-      if (up && session.frameWork >= thresholds.heavyLevelWork && !s.an.blank && s.an.roundness <= thresholds.roundEnoughWhenHeavy) {
+      if (
+        up &&
+        session.frameWork >= thresholds.heavyLevelWork &&
+        !s.an.blank &&
+        s.an.roundness <= thresholds.roundEnoughWhenHeavy
+      ) {
         session.facts.heavyLevel = Math.round(session.frameWork);
         break;
       }
@@ -169,16 +181,29 @@ export async function climb(session) {
   };
   const same = (a, b) => pictureChange(a.img, b.img, thresholds) <= thresholds.pictureChanged;
   // settled: the silhouette no longer changes, or it is as round as pixels allow (a teacher stops there too)
-  const settledSilhouette = (a, b) => silhouetteChange(a.an, b.an) <= thresholds.silhouetteSettled || (!b.an.blank && b.an.roundness <= thresholds.roundEnough);
+  const settledSilhouette = (a, b) =>
+    silhouetteChange(a.an, b.an) <= thresholds.silhouetteSettled ||
+    (!b.an.blank && b.an.roundness <= thresholds.roundEnough);
   let coarsened = false;
   // (down first only where a coarse level is judged: P5's highlight per fragment)
   if (levelBy.coarsen && !session.moving && session.must.has('per-fragment')) {
-    const down = await step(levelBy.coarsen, thresholds.maxCoarsenings, (a, b) => same(a, b) || b.an.blank || b.an.roundness > 2 * thresholds.coarseRoundness);
+    const down = await step(
+      levelBy.coarsen,
+      thresholds.maxCoarsenings,
+      (a, b) => same(a, b) || b.an.blank || b.an.roundness > 2 * thresholds.coarseRoundness,
+    );
     if (down.length) ladder[0] = down[down.length - 1];
     coarsened = down.length > 0;
   }
   if (levelBy.subdivide) {
-    ladder.push(...await step(levelBy.subdivide, thresholds.maxSubdivisions + (coarsened ? thresholds.maxCoarsenings : 0), settledSilhouette, true));
+    ladder.push(
+      ...(await step(
+        levelBy.subdivide,
+        thresholds.maxSubdivisions + (coarsened ? thresholds.maxCoarsenings : 0),
+        settledSilhouette,
+        true,
+      )),
+    );
   } else if (session.levelSlider) {
     // a level slider or <select> (which may start at level 0): stepped from its least up, as
     // Subdivide is clicked, until the silhouette settles (at most maxSubdivisions steps)

@@ -23,17 +23,30 @@ export async function readCamera(session) {
 
 /** Has the camera turned, over the orbiting views kept, less than it takes to tell where the light is? (unknown: no) */
 function turnedTooLittle(session) {
-  const turn = cameraTurn(session.facts.views.filter((v) => v.orbiting).map((v) => v.camera), session.thresholds.cameraRotationTolerance);
+  const turn = cameraTurn(
+    session.facts.views.filter((v) => v.orbiting).map((v) => v.camera),
+    session.thresholds.cameraRotationTolerance,
+  );
   return turn !== null && turn < session.thresholds.cameraTurnDegrees;
 }
 
 /** The most frames an orbit sample runs: orbitSampleSeconds of frames, as many as orbitSampleWork affords a page of this cost. */
-export const orbitSampleFrames = (session) => Math.min(Math.round(session.thresholds.framesPerSecond * session.thresholds.orbitSampleSeconds), Math.floor(session.thresholds.orbitSampleWork / Math.max(1, session.frameWork)));
+export const orbitSampleFrames = (session) =>
+  Math.min(
+    Math.round(session.thresholds.framesPerSecond * session.thresholds.orbitSampleSeconds),
+    Math.floor(session.thresholds.orbitSampleWork / Math.max(1, session.frameWork)),
+  );
 
 // the k-th orbit sample's frames: many pages turn the camera a fixed step a frame, so each sample
 // runs more frames as the search goes on, up to orbitSampleFrames
 export const tickOrbit = async (session, k) => {
-  await session.tick(session.thresholds.orbitSampleSeconds * 1000, Math.max(session.thresholds.orbitSampleLeastFrames, Math.min(session.thresholds.orbitSampleFirstFrames << k, orbitSampleFrames(session))));
+  await session.tick(
+    session.thresholds.orbitSampleSeconds * 1000,
+    Math.max(
+      session.thresholds.orbitSampleLeastFrames,
+      Math.min(session.thresholds.orbitSampleFirstFrames << k, orbitSampleFrames(session)),
+    ),
+  );
   await readCamera(session);
 };
 
@@ -54,7 +67,12 @@ export async function sampleOrbit(session, afterLadder = false) {
   // a lit view and two samples at least; where the page sends its view matrix, until the camera has
   // turned cameraTurnDegrees over the lit views (a slow orbit: a light that moves with the camera
   // and one that stays in the world look alike over a small turn)
-  for (; k < thresholds.orbitSamples && (!look(session, img) || k < thresholds.orbitLeastSamples || turnedTooLittle(session)); k++) {
+  for (
+    ;
+    k < thresholds.orbitSamples &&
+    (!look(session, img) || k < thresholds.orbitLeastSamples || turnedTooLittle(session));
+    k++
+  ) {
     await tickOrbit(session, k);
     img = await session.page.snap();
   }

@@ -6,7 +6,8 @@ import { nameRole, parameterGroups } from '../controls.js';
 const role = (session, c) => nameRole(c, session.patterns);
 
 /** The first of `controls` not yet given a role whose name says `r` (and `pred` holds). */
-export const free = (session, controls, r, pred = () => true) => controls.find((x) => !session.taken.has(x.index) && pred(x) && role(session, x) === r);
+export const free = (session, controls, r, pred = () => true) =>
+  controls.find((x) => !session.taken.has(x.index) && pred(x) && role(session, x) === r);
 
 /** An <input type=range> without min or max runs from 0 to 100: HTML's defaults. */
 export const RANGE_DEFAULT_MAX = 100;
@@ -16,7 +17,11 @@ export const least = (c) => (c.type === 'color' ? '#000000' : Number(c.min || 0)
 export const greatest = (c) => (c.type === 'color' ? '#ffffff' : Number(c.max === '' || c.max === undefined ? (c.type === 'range' ? RANGE_DEFAULT_MAX : 1) : c.max));
 
 /** The parameters the page's free sliders set (parameterGroups: ks r, g, b as one). */
-export const groupsOf = (session, controls) => parameterGroups(controls.filter((c) => !session.taken.has(c.index)), session.patterns);
+export const groupsOf = (session, controls) =>
+  parameterGroups(
+    controls.filter((c) => !session.taken.has(c.index)),
+    session.patterns,
+  );
 
 /** Sets every slider of a parameter group (`value(c)` each), on `events`; returns the values set. */
 export async function setGroup(session, g, value, events = ['input', 'change']) {
@@ -26,4 +31,7 @@ export async function setGroup(session, g, value, events = ['input', 'change']) 
 }
 
 /** A group's entry in facts: its first control, and the others (and their values) where it has more. */
-export const groupFacts = (g, vs) => ({ control: g.controls[0].index, ...(g.controls.length > 1 ? { controls: g.controls.map((c) => c.index), values: vs, channels: g.channels } : {}) });
+export const groupFacts = (g, vs) => ({
+  control: g.controls[0].index,
+  ...(g.controls.length > 1 ? { controls: g.controls.map((c) => c.index), values: vs, channels: g.channels } : {}),
+});

@@ -31,5 +31,7 @@ function valueOf(rubric, key) {
  */
 export function staleKeys(gatheredWith, rubric) {
   if (!gatheredWith) return null;
-  return Object.keys(gatheredWith).filter((k) => JSON.stringify(valueOf(rubric, k)) !== JSON.stringify(gatheredWith[k])).sort();
+  return Object.keys(gatheredWith)
+    .filter((k) => JSON.stringify(valueOf(rubric, k)) !== JSON.stringify(gatheredWith[k]))
+    .sort();
 }

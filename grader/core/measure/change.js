@@ -6,7 +6,9 @@
  * its roundness, whichever is more (pixel flips along the edge alone do not count).
  */
 export function silhouetteChange(a, b) {
-  if (!a || !b || a.width !== b.width || a.height !== b.height || a.blank || b.blank) return a && b && a.blank && b.blank ? 0 : 1;
+  if (!a || !b || a.width !== b.width || a.height !== b.height || a.blank || b.blank) {
+    return a && b && a.blank && b.blank ? 0 : 1;
+  }
   return Math.max(Math.abs(a.area - b.area) / Math.max(a.area, b.area), Math.abs(a.roundness - b.roundness) / 3);
 }
 
@@ -38,7 +40,8 @@ export function shadingChange(imgA, anA, imgB, anB, thresholds) {
     const x = p % w, y = (p - x) / w;
     if (Math.hypot(x + 0.5 - anB.cx, y + 0.5 - anB.cy) > maxRho * anB.radius) continue;
     const o = 4 * p;
-    const ya = (imgA.data[o] + imgA.data[o + 1] + imgA.data[o + 2]) / 765, yb = (imgB.data[o] + imgB.data[o + 1] + imgB.data[o + 2]) / 765;
+    const ya = (imgA.data[o] + imgA.data[o + 1] + imgA.data[o + 2]) / 765,
+      yb = (imgB.data[o] + imgB.data[o + 1] + imgB.data[o + 2]) / 765;
     sum += (ya - yb) ** 2;
     n++;
   }
@@ -50,7 +53,14 @@ export function pictureChange(a, b, thresholds) {
   if (!a || !b || a.width !== b.width || a.height !== b.height) return 1;
   let diff = 0;
   for (let o = 0; o < a.data.length; o += 4) {
-    if (Math.abs(a.data[o] - b.data[o]) + Math.abs(a.data[o + 1] - b.data[o + 1]) + Math.abs(a.data[o + 2] - b.data[o + 2]) > thresholds.pixelChange) diff++;
+    if (
+      Math.abs(a.data[o] - b.data[o]) +
+        Math.abs(a.data[o + 1] - b.data[o + 1]) +
+        Math.abs(a.data[o + 2] - b.data[o + 2]) >
+      thresholds.pixelChange
+    ) {
+      diff++;
+    }
   }
   return diff / (a.width * a.height);
 }

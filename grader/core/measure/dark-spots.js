@@ -17,7 +17,8 @@ export function darkSpots(img, an, after, fit, thresholds) {
     const o = 4 * (s.y * w + s.x);
     const before = (img.data[o] + img.data[o + 1] + img.data[o + 2]) / 765;
     const now = (after.data[o] + after.data[o + 1] + after.data[o + 2]) / 765;
-    const pred = fit.ambient + fit.diffuse * Math.max(0, s.n[0] * fit.light[0] + s.n[1] * fit.light[1] + s.n[2] * fit.light[2]);
+    const pred =
+      fit.ambient + fit.diffuse * Math.max(0, s.n[0] * fit.light[0] + s.n[1] * fit.light[1] + s.n[2] * fit.light[2]);
     n++;
     if (now < before - margin && now < pred - margin) dark++;
   }

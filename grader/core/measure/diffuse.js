@@ -65,7 +65,11 @@ export function diffuseFit(pts, thresholds) {
   // a pixel clipped at white (a channel at 1) says only "at least this bright": left out of the fit
   // while enough are left (a washed-out material), kept for the highlight above it
   const unclipped = Uint8Array.from(pts, (s) => !s.clipped && Math.max(...s.c) < thresholds.clippedLevel);
-  let use = unclipped.reduce((a, v) => a + v, 0) >= Math.max(thresholds.minFitSamples, thresholds.minUnclippedShare * pts.length) ? unclipped : new Uint8Array(pts.length).fill(1);
+  let use =
+    unclipped.reduce((a, v) => a + v, 0) >=
+    Math.max(thresholds.minFitSamples, thresholds.minUnclippedShare * pts.length)
+      ? unclipped
+      : new Uint8Array(pts.length).fill(1);
   const use0 = use;
   let best = null, sseAll = null, F = null;
   for (let pass = 0; pass < 2; pass++) {
@@ -85,7 +89,13 @@ export function diffuseFit(pts, thresholds) {
     }
     if (pass === 0) {
       sseAll = best.sse;
-      const left = Uint8Array.from(pts, (s, i) => use0[i] && s.y - (best.a + best.b * Math.max(0, s.n[0] * best.l[0] + s.n[1] * best.l[1] + s.n[2] * best.l[2])) < thresholds.highlightFitMargin);
+      const left = Uint8Array.from(
+        pts,
+        (s, i) =>
+          use0[i] &&
+          s.y - (best.a + best.b * Math.max(0, s.n[0] * best.l[0] + s.n[1] * best.l[1] + s.n[2] * best.l[2])) <
+            thresholds.highlightFitMargin,
+      );
       // no pixel above the fit: the second pass would fit the same pixels to the same numbers
       if (sameMask(left, use)) break;
       use = left;
@@ -96,7 +106,11 @@ export function diffuseFit(pts, thresholds) {
   const sstU = pts.reduce((a, s, i) => a + (use[i] ? (s.y - meanU) ** 2 : 0), 0);
   // the highlight: how far above the diffuse fit a pixel is, as a share of the headroom left to
   // white there (a highlight on a bright diffuse patch saturates at 1 and cannot rise far)
-  const hl = highlightOf(pts, (n) => best.a + best.b * Math.max(0, n[0] * best.l[0] + n[1] * best.l[1] + n[2] * best.l[2]), thresholds);
+  const hl = highlightOf(
+    pts,
+    (n) => best.a + best.b * Math.max(0, n[0] * best.l[0] + n[1] * best.l[1] + n[2] * best.l[2]),
+    thresholds,
+  );
   // the same pixels under a two-sided model: a page lit on both sides (|n·w_i|) fits it better
   let twoSided = null, twoSidedAll = null;
   const Fall = flat(pts, null); // (F: the second pass's pixels, the highlight left out)
@@ -107,7 +121,20 @@ export function diffuseFit(pts, thresholds) {
   }
   // ... and both models over all pixels, none left out as a highlight
   const r2All = sst > 1e-9 ? 1 - sseAll / sst : 0, r2TwoSidedAll = sst > 1e-9 ? 1 - twoSidedAll.sse / sst : 0;
-  return { r2: sstU > 1e-9 ? 1 - best.sse / sstU : 0, r2TwoSided: sstU > 1e-9 ? 1 - twoSided.sse / sstU : 0, r2All, r2TwoSidedAll, rms: Math.sqrt(best.sse / Math.max(1, used)), ambient: best.a, diffuse: best.b,
-    light: best.l, spread: Math.sqrt(sst / pts.length), highlightPeak: hl.peak, highlightRise: hl.rise, highlightShare: hl.bright / pts.length, highlightNormal: hl.normal,
-    fitted: used / pts.length };
+  return {
+    r2: sstU > 1e-9 ? 1 - best.sse / sstU : 0,
+    r2TwoSided: sstU > 1e-9 ? 1 - twoSided.sse / sstU : 0,
+    r2All,
+    r2TwoSidedAll,
+    rms: Math.sqrt(best.sse / Math.max(1, used)),
+    ambient: best.a,
+    diffuse: best.b,
+    light: best.l,
+    spread: Math.sqrt(sst / pts.length),
+    highlightPeak: hl.peak,
+    highlightRise: hl.rise,
+    highlightShare: hl.bright / pts.length,
+    highlightNormal: hl.normal,
+    fitted: used / pts.length,
+  };
 }

@@ -108,7 +108,11 @@ export function unnormalisedInputs(sources) {
     const directions = inputs.filter((i) => !NOT_A_DIRECTION.test(i.name));
     const normalised = normalisedIn(code, directions);
     const used = calls(code).filter((c) => USES.test(c.name)).map((c) => withoutNormalisers(c.args));
-    for (const i of directions) if (!normalised.has(i.name) && used.some((a) => i.token.test(a)) && !found.includes(i.name)) found.push(i.name);
+    for (const i of directions) {
+      if (!normalised.has(i.name) && used.some((a) => i.token.test(a)) && !found.includes(i.name)) {
+        found.push(i.name);
+      }
+    }
   }
   return found;
 }

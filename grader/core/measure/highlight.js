@@ -27,7 +27,13 @@ export function highlightOf(pts, predict, thresholds) {
   let normal = null;
   if (rise > 0) {
     const m = [0, 0, 0];
-    for (let i = 0; i < pts.length; i++) if (rises[i] >= thresholds.highlightPlaceRise * rise) for (let k = 0; k < 3; k++) m[k] += pts[i].n[k] * rises[i];
+    for (let i = 0; i < pts.length; i++) {
+      if (rises[i] >= thresholds.highlightPlaceRise * rise) {
+        for (let k = 0; k < 3; k++) {
+          m[k] += pts[i].n[k] * rises[i];
+        }
+      }
+    }
     const len = Math.hypot(...m);
     if (len > 0) normal = m.map((v) => v / len);
   }
@@ -57,5 +63,9 @@ export function highlightOffset(highlightNormal, light, toViewer = 1) {
  */
 export function highlightSeen(fit, thresholds) {
   if (fit.highlightPeak >= thresholds.highlightPeak) return true;
-  return fit.highlightRise >= thresholds.highlightClearRise && fit.highlightRise >= thresholds.highlightNoise * fit.rms && fit.highlightShare > 0;
+  return (
+    fit.highlightRise >= thresholds.highlightClearRise &&
+    fit.highlightRise >= thresholds.highlightNoise * fit.rms &&
+    fit.highlightShare > 0
+  );
 }

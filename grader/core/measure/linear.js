@@ -2,7 +2,9 @@
 // the straight line through n points from their sums.
 
 /** The determinant of a 3×3 matrix (rows). */
-export const det3 = (m) => m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+export const det3 = (m) =>
+  m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) -
+  m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
   m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
 
 /** x with A x = b (A 3×3, rows), by Cramer's rule; [0, 0, 0] where A is singular. */

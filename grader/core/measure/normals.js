@@ -29,10 +29,13 @@ export function normalColours(pts, thresholds) {
   const M = [0, 1, 2].map((row) => solve3(NtN, [0, 1, 2].map((i) => Ntd[i][row])));
   let res = 0;
   for (const s of pts) {
-    for (let row = 0; row < 3; row++) res += (s.d[row] - (M[row][0] * s.n[0] + M[row][1] * s.n[1] + M[row][2] * s.n[2])) ** 2;
+    for (let row = 0; row < 3; row++) {
+      res += (s.d[row] - (M[row][0] * s.n[0] + M[row][1] * s.n[1] + M[row][2] * s.n[2])) ** 2;
+    }
   }
   return { unitError: lenErr / pts.length, spread, residual: Math.sqrt(res / pts.length), det: det3(M) };
 }
 
 /** Do the colours read by normalColours (`nc`) show normals facing the viewer (a rotation, fitted well)? */
-export const facesViewer = (nc, thresholds) => !!nc && nc.det >= thresholds.facingDeterminant && nc.residual <= thresholds.facingResidual;
+export const facesViewer = (nc, thresholds) =>
+  !!nc && nc.det >= thresholds.facingDeterminant && nc.residual <= thresholds.facingResidual;

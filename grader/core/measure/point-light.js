@@ -22,7 +22,9 @@ export function pointLightFit(pts, thresholds, around = null) {
   const F = flat(pts);
   let use = use0;
   let none = null, inv = null;
-  const dirs = DIRS.filter((l) => !around || l[0] * around[0] + l[1] * around[1] + l[2] * around[2] > thresholds.pointLightConeCosine);
+  const dirs = DIRS.filter(
+    (l) => !around || l[0] * around[0] + l[1] * around[1] + l[2] * around[2] > thresholds.pointLightConeCosine,
+  );
   for (let pass = 0; pass < 2; pass++) {
     const coarse = grid(F, use, dirs);
     none = search(F, use, false, coarse.none);
@@ -30,7 +32,9 @@ export function pointLightFit(pts, thresholds, around = null) {
     if (!none || !inv) return null;
     if (pass === 0) {
       const margin = thresholds.highlightFitMargin;
-      const left = pts.map((s, i) => use0[i] && Math.min(s.y - none.a - none.b * none.xs[i], s.y - inv.a - inv.b * inv.xs[i]) < margin);
+      const left = pts.map(
+        (s, i) => use0[i] && Math.min(s.y - none.a - none.b * none.xs[i], s.y - inv.a - inv.b * inv.xs[i]) < margin,
+      );
       // no pixel above both fits: the second pass would fit the same pixels to the same numbers
       if (sameMask(left, use)) break;
       use = left;
@@ -42,8 +46,17 @@ export function pointLightFit(pts, thresholds, around = null) {
   const brief = (f) => {
     const model = { a: f.a, b: f.b, l: f.l, d: f.d, falloff: f.falloff };
     const hl = highlightOf(pts, (n) => pointLightPredict(n, model), thresholds);
-    return { distance: f.d, light: f.l, r2: sst > 1e-12 ? 1 - f.sse / sst : 0, rms: Math.sqrt(f.sse / used), model, highlightPeak: hl.peak, highlightRise: hl.rise,
-      highlightShare: hl.bright / pts.length, highlightNormal: hl.normal };
+    return {
+      distance: f.d,
+      light: f.l,
+      r2: sst > 1e-12 ? 1 - f.sse / sst : 0,
+      rms: Math.sqrt(f.sse / used),
+      model,
+      highlightPeak: hl.peak,
+      highlightRise: hl.rise,
+      highlightShare: hl.bright / pts.length,
+      highlightNormal: hl.normal,
+    };
   };
   return { falloff: brief(inv), none: brief(none), fitted: used / pts.length };
 }
@@ -53,7 +66,11 @@ const DIST = [1.25, 1.5, 1.75, 2, 2.5, 3, 4, 5, 7, 10, 20, 1e4];
 
 /** The samples as flat arrays (their normals and brightness), read by every fit below. */
 function flat(pts) {
-  const m = pts.length, nx = new Float64Array(m), ny = new Float64Array(m), nz = new Float64Array(m), ys = new Float64Array(m);
+  const m = pts.length,
+    nx = new Float64Array(m),
+    ny = new Float64Array(m),
+    nz = new Float64Array(m),
+    ys = new Float64Array(m);
   for (let i = 0; i < m; i++) [nx[i], ny[i], nz[i], ys[i]] = [pts[i].n[0], pts[i].n[1], pts[i].n[2], pts[i].y];
   return { m, nx, ny, nz, ys };
 }
@@ -164,7 +181,11 @@ export function nearPointLight(pl, thresholds) {
 }
 /** Model `a` ('falloff' or 'none') clearly beats model `b`: a near light, R² higher by pointLightGain, RMS lower by pointLightRmsRatio. */
 export function clearlyBetter(pl, a, b, thresholds) {
-  return pl[a].r2 - pl[b].r2 >= thresholds.pointLightGain && pl[a].distance <= thresholds.pointLightNear && pl[b].rms >= thresholds.pointLightRmsRatio * pl[a].rms;
+  return (
+    pl[a].r2 - pl[b].r2 >= thresholds.pointLightGain &&
+    pl[a].distance <= thresholds.pointLightNear &&
+    pl[b].rms >= thresholds.pointLightRmsRatio * pl[a].rms
+  );
 }
 /** A light clearly near and falling off as 1/r²: it fits, and better than without the fall-off. */
 export function clearlyNearFalloff(pl, thresholds) {

@@ -23,7 +23,15 @@ function differing(raw, shown, box, clip, dx, dy, limit, step) {
       if (raw.data[o + 3] !== 255) continue;
       const s = 4 * (v * shown.width + u);
       opaque++;
-      if (Math.max(Math.abs(raw.data[o] - shown.data[s]), Math.abs(raw.data[o + 1] - shown.data[s + 1]), Math.abs(raw.data[o + 2] - shown.data[s + 2])) > limit) differ++;
+      if (
+        Math.max(
+          Math.abs(raw.data[o] - shown.data[s]),
+          Math.abs(raw.data[o + 1] - shown.data[s + 1]),
+          Math.abs(raw.data[o + 2] - shown.data[s + 2]),
+        ) > limit
+      ) {
+        differ++;
+      }
     }
   }
   return { opaque, differ };

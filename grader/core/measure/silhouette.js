@@ -79,7 +79,8 @@ export function analyse(img, thresholds) {
   const touches = radii.some((r, k) => {
     const a = (2 * Math.PI * k) / 72;
     const x = cx + r * Math.cos(a), y = cy + r * Math.sin(a);
-    return x < thresholds.edgeMarginPixels || y < thresholds.edgeMarginPixels || x > w - thresholds.edgeMarginPixels || y > h - thresholds.edgeMarginPixels;
+    const m = thresholds.edgeMarginPixels;
+    return x < m || y < m || x > w - m || y > h - m;
   });
   const circle = fitCircle(img, mask, bg, tol, thresholds);
   return { ...result, blank: false, cx, cy, R, radius: mean, roundness, fill, touches, circle };
@@ -166,7 +167,12 @@ export function fitCircle(img, mask, bg, tol, thresholds) {
       const p = y * w + x;
       if (!mask[p] || (mask[p - 1] && mask[p + 1] && mask[p - w] && mask[p + w])) continue;
       const o = 4 * p;
-      if (Math.abs(data[o] - bg[0]) + Math.abs(data[o + 1] - bg[1]) + Math.abs(data[o + 2] - bg[2]) > thresholds.litEdgeContrast * tol) pts.push([x + 0.5, y + 0.5]);
+      if (
+        Math.abs(data[o] - bg[0]) + Math.abs(data[o + 1] - bg[1]) + Math.abs(data[o + 2] - bg[2]) >
+        thresholds.litEdgeContrast * tol
+      ) {
+        pts.push([x + 0.5, y + 0.5]);
+      }
     }
   }
   if (pts.length < thresholds.minEdgePoints) return null;
@@ -182,7 +188,10 @@ export function fitCircle(img, mask, bg, tol, thresholds) {
   const d = pts.map(([x, y]) => Math.hypot(x - cx, y - cy));
   const sorted = [...d].sort((a, c) => a - c);
   // the spread of the middle of the distances (edgeTrim of them left out at each end: a stray pixel or two)
-  const lo = sorted[Math.floor(thresholds.edgeTrim * sorted.length)], hi = sorted[Math.ceil((1 - thresholds.edgeTrim) * sorted.length) - 1];
-  const bins = new Set(pts.map(([x, y]) => Math.floor(((Math.atan2(y - cy, x - cx) + Math.PI) / (2 * Math.PI)) * 36) % 36));
+  const lo = sorted[Math.floor(thresholds.edgeTrim * sorted.length)],
+    hi = sorted[Math.ceil((1 - thresholds.edgeTrim) * sorted.length) - 1];
+  const bins = new Set(
+    pts.map(([x, y]) => Math.floor(((Math.atan2(y - cy, x - cx) + Math.PI) / (2 * Math.PI)) * 36) % 36),
+  );
   return { cx, cy, r, roundness: (hi - lo) / r, arc: bins.size * 10, points: pts.length };
 }

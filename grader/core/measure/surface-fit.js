@@ -111,7 +111,9 @@ const TINTS = [[null, {}, ''], ['added', { tint: true }, ', the normal colour ad
 
 /** max(n · w_i, 0) for every sample. */
 function diffuseTerm(cols, wi, out = new Float64Array(cols.m)) {
-  for (let i = 0; i < cols.m; i++) out[i] = Math.max(0, cols.n[3 * i] * wi[0] + cols.n[3 * i + 1] * wi[1] + cols.n[3 * i + 2] * wi[2]);
+  for (let i = 0; i < cols.m; i++) {
+    out[i] = Math.max(0, cols.n[3 * i] * wi[0] + cols.n[3 * i + 1] * wi[1] + cols.n[3 * i + 2] * wi[2]);
+  }
   return out;
 }
 
@@ -132,7 +134,15 @@ function bestLight(cols, how) {
   if (!best) return null;
   for (const step of [0.15, 0.05, 0.015, 0.005]) {
     const c = best.wi;
-    for (const a of [-1, 0, 1]) for (const b of [-1, 0, 1]) for (const e of [-1, 0, 1]) if (a || b || e) tryLight(unit([c[0] + a * step, c[1] + b * step, c[2] + e * step]));
+    for (const a of [-1, 0, 1]) {
+      for (const b of [-1, 0, 1]) {
+        for (const e of [-1, 0, 1]) {
+          if (a || b || e) {
+            tryLight(unit([c[0] + a * step, c[1] + b * step, c[2] + e * step]));
+          }
+        }
+      }
+    }
   }
   return best;
 }
@@ -184,7 +194,8 @@ export function surfaceFit(surface, img, thresholds) {
   // nearly); one misreading at a time: the normal colour first, then w_o given that colour
   const slideView = (v) => !v.view || v.view === 'the slide';
   const slide = ranked.find((v) => slideView(v) && !v.tint);
-  const better = (v, than) => rms(than.fit) >= thresholds.surfaceResidual && rms(v.fit) < (1 - thresholds.surfaceVariantMargin) * rms(than.fit);
+  const better = (v, than) =>
+    rms(than.fit) >= thresholds.surfaceResidual && rms(v.fit) < (1 - thresholds.surfaceVariantMargin) * rms(than.fit);
   let top = slide || ranked[0];
   const tinted = slide && ranked.find((v) => slideView(v) && v.tint);
   if (tinted && better(tinted, top)) top = tinted;
@@ -194,8 +205,8 @@ export function surfaceFit(surface, img, thresholds) {
   return {
     samples: use.length,
     diffuse: d ? { wi: d.wi, rms: rms(d.fit), r2: sst > 0 ? 1 - d.fit.sse / sst : 0 } : null,
-    best: { name: top.name, wi: top.wi, form: top.form, view: top.view, s: top.s, tint: top.tint, rms: rms(top.fit), r2: sst > 0 ? 1 - top.fit.sse / sst : 0,
-      coef: top.fit.coef.map((c) => c.map((v) => Math.round(v * 1e4) / 1e4)) },
+    best: { name: top.name, wi: top.wi, form: top.form, view: top.view, s: top.s, tint: top.tint, rms: rms(top.fit),
+      r2: sst > 0 ? 1 - top.fit.sse / sst : 0, coef: top.fit.coef.map((c) => c.map((v) => Math.round(v * 1e4) / 1e4)) },
     slide: slide ? { name: slide.name, form: slide.form, rms: rms(slide.fit), s: slide.s } : null,
     // the lighting is there, beside the normal colour: the colour alone leaves a visible residual that the lighting halves
     normalColourAlone: alone ? { rms: rms(alone) } : null,

@@ -11,7 +11,8 @@ import { leastSquares, symmetricEigenvalues3 } from './linear.js';
 import { dot, cross } from './vectors.js';
 
 const det = (A) => dot(A[0], cross(A[1], A[2]));
-const clipped = (s, thresholds) => Math.min(...s.c) <= thresholds.blackLevel || Math.max(...s.c) >= thresholds.clippedLevel;
+const clipped = (s, thresholds) =>
+  Math.min(...s.c) <= thresholds.blackLevel || Math.max(...s.c) >= thresholds.clippedLevel;
 
 /**
  * The normal colouring's turn R (3×3, rows) and share α from the channels' differences from
@@ -87,12 +88,17 @@ export function addedTintFit(pts, thresholds) {
   const turned = (n) => R.map((r) => dot(r, n));
   let alpha = nt.alpha, fit = null, lit = null, use = null;
   for (let round = 0; round < thresholds.addedRounds; round++) {
-    const rest = pts.map((s) => { const m = turned(s.n); return { ...s, clipped: clipped(s, thresholds), c: s.c.map((v, k) => v - alpha * m[k]) }; });
+    const rest = pts.map((s) => {
+      const m = turned(s.n);
+      return { ...s, clipped: clipped(s, thresholds), c: s.c.map((v, k) => v - alpha * m[k]) };
+    });
     fit = diffuseFit(rest, thresholds);
     if (!fit) return null;
     const l = fit.light, f = fit;
     lit = (n) => Math.max(0, dot(n, l));
-    use = pts.filter((s, i) => !rest[i].clipped && rest[i].y - (f.ambient + f.diffuse * lit(s.n)) < thresholds.highlightFitMargin);
+    use = pts.filter(
+      (s, i) => !rest[i].clipped && rest[i].y - (f.ambient + f.diffuse * lit(s.n)) < thresholds.highlightFitMargin,
+    );
     if (use.length < thresholds.minFitSamples) return null;
     const { x } = channelsR2(use, lit, turned);
     if (!x) return null;
@@ -101,7 +107,17 @@ export function addedTintFit(pts, thresholds) {
   const r2 = channelsR2(use, lit, turned).r2;
   const both = channelsR2(use, lit, turned, { times: true });
   const turn = (180 / Math.PI) * Math.acos(Math.max(-1, Math.min(1, (R[0][0] + R[1][1] + R[2][2] - 1) / 2)));
-  return { ...fit, added: { share: alpha, turn, even: nt.even, r2, r2Without: channelsR2(use, lit, turned, { alpha: 0 }).r2, times: both.x ? both.x[7] / Math.max(1e-6, Math.abs(both.x[6])) : null } };
+  return {
+    ...fit,
+    added: {
+      share: alpha,
+      turn,
+      even: nt.even,
+      r2,
+      r2Without: channelsR2(use, lit, turned, { alpha: 0 }).r2,
+      times: both.x ? both.x[7] / Math.max(1e-6, Math.abs(both.x[6])) : null,
+    },
+  };
 }
 
 /**
@@ -111,5 +127,12 @@ export function addedTintFit(pts, thresholds) {
  * the lighting (`times`) within addedTimesShare of it, and lighting left when it is taken out (the
  * rest shaded by evenSpread at least, as a lit picture must be, fitted to diffuseR2: WP04P1's colours alone leave a flat rest)?
  */
-export const addedClearly = (fit, thresholds) => !!fit && fit.added.share >= thresholds.addedShare && fit.added.even >= thresholds.addedEven && fit.added.r2 >= thresholds.addedR2 &&
-  1 - fit.added.r2Without >= thresholds.addedShrink * (1 - fit.added.r2) && Math.abs(fit.added.times) <= thresholds.addedTimesShare && fit.spread >= thresholds.evenSpread && fit.r2 >= thresholds.diffuseR2;
+export const addedClearly = (fit, thresholds) =>
+  !!fit &&
+  fit.added.share >= thresholds.addedShare &&
+  fit.added.even >= thresholds.addedEven &&
+  fit.added.r2 >= thresholds.addedR2 &&
+  1 - fit.added.r2Without >= thresholds.addedShrink * (1 - fit.added.r2) &&
+  Math.abs(fit.added.times) <= thresholds.addedTimesShare &&
+  fit.spread >= thresholds.evenSpread &&
+  fit.r2 >= thresholds.diffuseR2;

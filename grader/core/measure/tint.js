@@ -12,7 +12,8 @@ import { leastSquares, solveNormal, symmetricEigenvalues3 } from './linear.js';
 import { addedTintFit, addedClearly } from './tint-added.js';
 
 // a pixel clipped at white (a channel at clippedLevel) or nearly black (its channels' sum at darkSum) says little of its hue
-const usable = (s, thresholds) => Math.max(...s.c) < thresholds.clippedLevel && s.c[0] + s.c[1] + s.c[2] > thresholds.darkSum;
+const usable = (s, thresholds) =>
+  Math.max(...s.c) < thresholds.clippedLevel && s.c[0] + s.c[1] + s.c[2] > thresholds.darkSum;
 
 /**
  * Does the hue follow the normal? Each channel's share of the brightness (c_k / Σc) fitted as an
@@ -41,11 +42,16 @@ export function hueByNormal(pts, thresholds) {
   }
   const M = [0, 1, 2].map((i) => [0, 1, 2].map((j) => slopes.reduce((a, r) => a + r[i] * r[j], 0)));
   const ev = symmetricEigenvalues3(M);
-  return { spread: Math.sqrt(sst / (3 * use.length)), r2: sst > 1e-12 ? 1 - sse / sst : 0, turn: Math.sqrt(Math.max(0, ev[1])) };
+  return {
+    spread: Math.sqrt(sst / (3 * use.length)),
+    r2: sst > 1e-12 ? 1 - sse / sst : 0,
+    turn: Math.sqrt(Math.max(0, ev[1])),
+  };
 }
 
 /** Is the picture tinted by the normal (hueByNormal: a hue that turns with the normal by tintTurn, explained by it to tintR2)? */
-export const tintedByNormal = (hue, thresholds) => !!hue && hue.turn >= thresholds.tintTurn && hue.r2 >= thresholds.tintR2;
+export const tintedByNormal = (hue, thresholds) =>
+  !!hue && hue.turn >= thresholds.tintTurn && hue.r2 >= thresholds.tintR2;
 
 /**
  * The albedo's slope q and the lighting (a, b) for a fixed light `l`: brightness ≈ (1 + q·n)·(a +
@@ -96,14 +102,27 @@ export function detintedFit(pts, thresholds, plain = diffuseFit(pts, thresholds)
   const albedo = () => (n) => Math.max(0.05, 1 + q[0] * n[0] + q[1] * n[1] + q[2] * n[2]);
   // (with q = 0, A is 1 and the samples divide out to themselves: the fit is `plain`, diffuseFit's
   // on the samples as they are, to the last bit)
-  const fitWith = (A) => (q.every((v) => v === 0) ? plain : diffuseFit(pts.map((s) => ({ ...s, c: s.c.map((v) => v / A(s.n)) })), thresholds));
+  const fitWith = (A) =>
+    q.every((v) => v === 0)
+      ? plain
+      : diffuseFit(
+          pts.map((s) => ({ ...s, c: s.c.map((v) => v / A(s.n)) })),
+          thresholds,
+        );
   for (let round = 0; round < thresholds.tintRounds; round++) {
     const A = albedo();
     const fit = fitWith(A);
     if (!fit) return null;
-    const L = (n) => fit.ambient + fit.diffuse * Math.max(0, n[0] * fit.light[0] + n[1] * fit.light[1] + n[2] * fit.light[2]);
+    const L = (n) =>
+      fit.ambient + fit.diffuse * Math.max(0, n[0] * fit.light[0] + n[1] * fit.light[1] + n[2] * fit.light[2]);
     // the pixels the lighting fits (no highlight, nothing clipped, not black)
-    const use = pts.filter((s) => usable(s, thresholds) && L(s.n) >= thresholds.tintLitLevel && luminance(s.c) - L(s.n) * A(s.n) <= thresholds.highlightFitMargin)
+    const use = pts
+      .filter(
+        (s) =>
+          usable(s, thresholds) &&
+          L(s.n) >= thresholds.tintLitLevel &&
+          luminance(s.c) - L(s.n) * A(s.n) <= thresholds.highlightFitMargin,
+      )
       .map((s) => ({ n: s.n, y: luminance(s.c) }));
     if (use.length < thresholds.minFitSamples) break;
     q = albedoAndLighting(use, fit.light, q, fit.ambient, fit.diffuse, thresholds.tintIterations);
@@ -112,7 +131,8 @@ export function detintedFit(pts, thresholds, plain = diffuseFit(pts, thresholds)
   return fit && { ...fit, albedoSlope: Math.hypot(...q) };
 }
 
-const angleOf = (a, b) => (180 / Math.PI) * Math.acos(Math.max(-1, Math.min(1, a[0] * b[0] + a[1] * b[1] + a[2] * b[2])));
+const angleOf = (a, b) =>
+  (180 / Math.PI) * Math.acos(Math.max(-1, Math.min(1, a[0] * b[0] + a[1] * b[1] + a[2] * b[2])));
 
 /**
  * The shading fit every reader of a lit picture uses: diffuseFit, and where the hue turns with the
@@ -132,13 +152,21 @@ export function shadeFit(pts, thresholds) {
   if (!tintedByNormal(hue, thresholds)) return plain;
   // a normal colouring added to the lighting: its fit, read as any clean fit is
   const added = addedTintFit(pts, thresholds);
-  if (addedClearly(added, thresholds)) return { ...added, tint: { turn: hue.turn, added: added.added.share, sure: added.r2 >= thresholds.diffuseR2, plain } };
+  if (addedClearly(added, thresholds)) {
+    return {
+      ...added,
+      tint: { turn: hue.turn, added: added.added.share, sure: added.r2 >= thresholds.diffuseR2, plain },
+    };
+  }
   const de = detintedFit(pts, thresholds, plain);
   // the de-tinted fit where it explains the picture better, and does not lose a highlight the plain one sees
-  const fit = de && de.r2 >= plain.r2 && (highlightSeen(de, thresholds) || !highlightSeen(plain, thresholds)) ? de : plain;
+  const fit =
+    de && de.r2 >= plain.r2 && (highlightSeen(de, thresholds) || !highlightSeen(plain, thresholds)) ? de : plain;
   const lightShift = de ? angleOf(de.light, plain.light) : null;
   const slope = de ? de.albedoSlope : null;
   // the plain fit kept (the tint divided out explains no more: a tint added, not multiplied) is read as any fit is
-  const sure = fit.r2 >= thresholds.diffuseR2 && (fit === plain || (slope < thresholds.tintSlope && lightShift <= thresholds.tintLightDegrees));
+  const sure =
+    fit.r2 >= thresholds.diffuseR2 &&
+    (fit === plain || (slope < thresholds.tintSlope && lightShift <= thresholds.tintLightDegrees));
   return { ...fit, tint: { turn: hue.turn, slope, lightShift, sure, plain } };
 }
