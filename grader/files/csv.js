@@ -56,7 +56,12 @@ export const readTable = (text, options) => readRows(text, options).map((r) => r
  */
 export function csvText(rows, { eol = '\n', quoted = () => false } = {}) {
   return stringify(rows, {
-    record_delimiter: eol, quoted_match: /[\r\n]|^\s|\s$/,
-    cast: { boolean: String, string: (value, context) => (quoted(context.records, context.index) ? { value, quoted: true, quoted_empty: true } : value) },
+    record_delimiter: eol,
+    quoted_match: /[\r\n]|^\s|\s$/,
+    cast: {
+      boolean: String,
+      string: (value, context) =>
+        quoted(context.records, context.index) ? { value, quoted: true, quoted_empty: true } : value,
+    },
   });
 }

@@ -9,7 +9,11 @@ import { PARTS, partNumber, partsFound, titleOfPage } from '../core/part-names.j
 
 export { PARTS, partNumber };
 
-const NODE_FS = { readdir: (dir) => readdirSync(dir), isDirectory: (file) => statSync(file, { throwIfNoEntry: false })?.isDirectory() ?? null, head };
+const NODE_FS = {
+  readdir: (dir) => readdirSync(dir),
+  isDirectory: (file) => statSync(file, { throwIfNoEntry: false })?.isDirectory() ?? null,
+  head,
+};
 
 // a page's title and first heading are in its first bytes
 const HEAD_BYTES = 65536;
@@ -72,6 +76,10 @@ export function findPartsWithNotes(root, overrides = {}, { fs = NODE_FS, pathImp
   const pages = htmlPages(root, { fs, pathImpl });
   const join = (segments) => pathImpl.join(...segments);
   const titles = {};
-  if (fs.head) for (const segments of pages) titles[join(segments)] = titleOfPage(fs.head(pathImpl.join(root, ...segments)));
+  if (fs.head) {
+    for (const segments of pages) {
+      titles[join(segments)] = titleOfPage(fs.head(pathImpl.join(root, ...segments)));
+    }
+  }
   return partsFound(pages, join, { overrides, titles });
 }

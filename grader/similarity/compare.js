@@ -30,7 +30,12 @@ export function readSubmission({ name, root }, findParts) {
         for (const st of byKey.get(key)) st.parts.add(part);
         continue;
       }
-      byKey.set(key, tokenStreams(source).filter((st) => st.tokens.length).map((st) => ({ ...st, file: source.file, source, parts: new Set([part]) })));
+      byKey.set(
+        key,
+        tokenStreams(source)
+          .filter((st) => st.tokens.length)
+          .map((st) => ({ ...st, file: source.file, source, parts: new Set([part]) })),
+      );
     }
   }
   const streams = [...byKey.values()].flat();
@@ -62,13 +67,17 @@ function scores(X, Y, covered, minPartTokens) {
   const ratio = (a, b) => (a.own + b.own ? (a.covered + b.covered) / (a.own + b.own) : 0);
   const parts = {};
   for (const p of PARTS) {
-    if (x.perPart[p].own >= minPartTokens && y.perPart[p].own >= minPartTokens) parts[p] = ratio(x.perPart[p], y.perPart[p]);
+    if (x.perPart[p].own >= minPartTokens && y.perPart[p].own >= minPartTokens) {
+      parts[p] = ratio(x.perPart[p], y.perPart[p]);
+    }
   }
   // a part copied into one hand-in's other part: its own share covered, whichever part it sits in
   for (const [s, t] of [[x, X], [y, Y]]) {
     for (const p of PARTS) {
       const own = s.perPart[p];
-      if (own.own >= minPartTokens && !(p in parts) && t.streams.some((st) => st.parts.has(p))) parts[p] = own.covered / own.own;
+      if (own.own >= minPartTokens && !(p in parts) && t.streams.some((st) => st.parts.has(p))) {
+        parts[p] = own.covered / own.own;
+      }
     }
   }
   return { overall: ratio(x.all, y.all), parts, ownTokens: [x.all.own, y.all.own] };
@@ -129,7 +138,11 @@ async function comparePair(X, Y, keysX, keysY, o) {
     }
   }
   fragments.sort((a, b) => b.tokens - a.tokens);
-  return { ...scores(X, Y, covered, o.minPartTokens), fragments: fragments.slice(0, o.maxFragments), fragmentCount: fragments.length };
+  return {
+    ...scores(X, Y, covered, o.minPartTokens),
+    fragments: fragments.slice(0, o.maxFragments),
+    fragmentCount: fragments.length,
+  };
 }
 
 /** The own k-gram keys of a hand-in: runs of minTokens tokens none of which is given. */
@@ -173,7 +186,9 @@ export async function compareClass(submissions, findParts, options = {}, progres
     // the runs both have bound the score from above: a pair far under the bound is not compared further
     const quick = scores(X, Y, sharedRuns(X, Y, keys[i], keys[j]), o.minPartTokens);
     if (best(quick) < o.bound / 2) {
-      if (!highestUnder || best(quick) > highestUnder.score) highestUnder = { a: X.name, b: Y.name, score: best(quick) };
+      if (!highestUnder || best(quick) > highestUnder.score) {
+        highestUnder = { a: X.name, b: Y.name, score: best(quick) };
+      }
     } else {
       const r = await comparePair(X, Y, keys[i], keys[j], o);
       pairs.push({ a: X.name, b: Y.name, score: best(r), listed: best(r) >= o.bound, ...r });
@@ -181,6 +196,14 @@ export async function compareClass(submissions, findParts, options = {}, progres
     progress(n + 1, candidates.length);
   }
   pairs.sort((p, q) => q.score - p.score);
-  return { options: o, classSize: subs.length, given, compared: pairs.length, sharing: candidates.length, highestUnder, pairs,
-    notes: subs.flatMap((s) => s.notes.map((n) => `${s.name}: ${n}`)) };
+  return {
+    options: o,
+    classSize: subs.length,
+    given,
+    compared: pairs.length,
+    sharing: candidates.length,
+    highestUnder,
+    pairs,
+    notes: subs.flatMap((s) => s.notes.map((n) => `${s.name}: ${n}`)),
+  };
 }

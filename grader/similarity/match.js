@@ -93,7 +93,10 @@ export async function clonesOf(X, Y, minTokens) {
       const a = c.duplicationA;
       const b = c.duplicationB;
       if (inX.has(a.sourceId) && !inX.has(b.sourceId)) {
-        found.push({ x: { stream: a.sourceId, from: a.range[0], to: a.range[1] }, y: { stream: b.sourceId, from: b.range[0], to: b.range[1] } });
+        found.push({
+          x: { stream: a.sourceId, from: a.range[0], to: a.range[1] },
+          y: { stream: b.sourceId, from: b.range[0], to: b.range[1] },
+        });
       }
     }
   }

@@ -13,21 +13,52 @@ export const POINTER = 'A pointer for a person to look at, never a verdict: a pa
 /** The listed pairs, as report.json keeps them. */
 export function similarityJson(r) {
   const listed = r.pairs.filter((p) => p.listed);
-  return { note: POINTER, bound: r.options.bound, classSize: r.classSize, givenRuns: r.given, pairsSharingCode: r.sharing,
+  return {
+    note: POINTER,
+    bound: r.options.bound,
+    classSize: r.classSize,
+    givenRuns: r.given,
+    pairsSharingCode: r.sharing,
     highest: r.pairs[0] ? { a: r.pairs[0].a, b: r.pairs[0].b, score: r.pairs[0].score } : r.highestUnder,
-    pairs: listed.map(({ a, b, score, overall, parts, samePictures, fragmentCount, fragments }) => ({ a, b, score, overall, parts,
-      samePictures: samePictures || [], fragmentCount,
-      fragments: fragments.map((f) => ({ tokens: f.tokens, a: { file: f.a.file, parts: f.a.parts, from: f.a.from, to: f.a.to }, b: { file: f.b.file, parts: f.b.parts, from: f.b.from, to: f.b.to } })) })),
-    notes: r.notes };
+    pairs: listed.map(({ a, b, score, overall, parts, samePictures, fragmentCount, fragments }) => ({
+      a,
+      b,
+      score,
+      overall,
+      parts,
+      samePictures: samePictures || [],
+      fragmentCount,
+      fragments: fragments.map((f) => ({
+        tokens: f.tokens,
+        a: { file: f.a.file, parts: f.a.parts, from: f.a.from, to: f.a.to },
+        b: { file: f.b.file, parts: f.b.parts, from: f.b.from, to: f.b.to },
+      })),
+    })),
+    notes: r.notes,
+  };
 }
 
 /** similar.csv: one listed pair a row, its scores per part and overall; the names and the pictures' list always quoted. */
 export function similarCsv(r) {
   const head = ['a', 'b', 'score', 'overall', ...PARTS, 'same_pictures', 'fragments'];
   const named = new Set([0, 1, head.indexOf('same_pictures')]);
-  return csvText([head, ...r.pairs.filter((p) => p.listed).map((p) => [p.a, p.b, p.score.toFixed(3), p.overall.toFixed(3),
-    ...PARTS.map((k) => (k in p.parts ? p.parts[k].toFixed(3) : '')), (p.samePictures || []).join(' '), p.fragmentCount])],
-  { quoted: (row, column) => row > 0 && named.has(column) });
+  return csvText(
+    [
+      head,
+      ...r.pairs
+        .filter((p) => p.listed)
+        .map((p) => [
+          p.a,
+          p.b,
+          p.score.toFixed(3),
+          p.overall.toFixed(3),
+          ...PARTS.map((k) => (k in p.parts ? p.parts[k].toFixed(3) : '')),
+          (p.samePictures || []).join(' '),
+          p.fragmentCount,
+        ]),
+    ],
+    { quoted: (row, column) => row > 0 && named.has(column) },
+  );
 }
 
 /** The badge on a hand-in's row of the class grid: a link to each listed pair it is in. */

@@ -114,7 +114,9 @@ export function partSources(root, page) {
   for (const { text, dir } of scriptTexts) {
     for (const name of namedShaderFiles(text)) {
       const clean = name.replace(/^\.\//, '');
-      const abs = [path.resolve(pageDir, clean), path.resolve(dir, clean)].find((f) => statSync(f, { throwIfNoEntry: false }));
+      const abs = [path.resolve(pageDir, clean), path.resolve(dir, clean)].find((f) =>
+        statSync(f, { throwIfNoEntry: false }),
+      );
       if (abs) addFile(abs, shaderFormat(abs));
     }
   }

@@ -227,7 +227,16 @@ async function gradeParts(o, out, rubric, submissions) {
       const page = parts[part] && existsSync(path.join(s.root, parts[part])) ? parts[part] : null;
       // a page that only links to another part's page is graded once, as that part
       const linksTo = page ? linkedPart(readFileSync(path.join(s.root, page), 'utf8'), page, parts) : null;
-      items.push({ name: s.name, part, root: s.root, page, ...(linksTo ? { linksTo } : {}), ...(notes[part] ? { foundBy: notes[part] } : {}), referenceQuery: cfg.referenceQuery || {}, ...partFiles(out, s.name, part) });
+      items.push({
+        name: s.name,
+        part,
+        root: s.root,
+        page,
+        ...(linksTo ? { linksTo } : {}),
+        ...(notes[part] ? { foundBy: notes[part] } : {}),
+        referenceQuery: cfg.referenceQuery || {},
+        ...partFiles(out, s.name, part),
+      });
     }
   }
   // the parts that try the most first (the sliders, then the orbit's), so that the workers end
@@ -246,7 +255,17 @@ async function runPlan(o, out, rubric, items, planFile) {
   // the browser's own name ("Chromium", "Google Chrome", "Mozilla Firefox"): the report adds the version that ran
   const browserName = nameOfVersionLine(versionOfExecutable(executable), browser === 'firefox' ? 'Firefox' : 'Chromium');
   const submissions = new Set(items.map((x) => x.name));
-  const plan = { repo, out, browser, browserName, browserPath: executable, rubric, timeoutSeconds: rubric.timeoutSeconds, referenceSeconds: REFERENCE_SECONDS, items };
+  const plan = {
+    repo,
+    out,
+    browser,
+    browserName,
+    browserPath: executable,
+    rubric,
+    timeoutSeconds: rubric.timeoutSeconds,
+    referenceSeconds: REFERENCE_SECONDS,
+    items,
+  };
   writeFileSync(planFile, JSON.stringify(plan, null, 1));
   console.log(`grade: ${submissions.size} submission(s), ${items.length} parts in ${browserName} (${executable}${browser === 'chromium' ? `, found by ${CHROMIUM_HOW}` : ''}); ${o.workers || 2} at a time, at most ${rubric.timeoutSeconds} s for each student page, and ${REFERENCE_SECONDS} s more for our reference`);
   if (browser === 'firefox') {
@@ -255,7 +274,10 @@ async function runPlan(o, out, rubric, items, planFile) {
     if (!(n >= 1 && i >= 1 && i <= n)) fail(`--shard takes I/N with 1 ≤ I ≤ N\n\n${HELP}`, 2);
     try {
       const share = items.filter((_, k) => k % n === i - 1);
-      await gradeInFirefox({ ...plan, items: share }, { workers: Number(o.workers || 2), progress: o.verbose ? null : gradingProgress(share) });
+      await gradeInFirefox(
+        { ...plan, items: share },
+        { workers: Number(o.workers || 2), progress: o.verbose ? null : gradingProgress(share) },
+      );
     } catch (err) {
       fail(`could not grade in Firefox: ${err.message.split('\n')[0]}`);
     }

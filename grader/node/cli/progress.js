@@ -58,8 +58,14 @@ export function gradingProgress(items, { stream = process.stdout, now = Date.now
   const state = { parts: 0, handins: 0, opened: 0, toOpen: items.filter(opens).length };
   const text = () => {
     const elapsedMs = now() - started;
-    return progressText({ parts: state.parts, partsAll: items.length, handins: state.handins, handinsAll: partsLeft.size, elapsedMs,
-      leftMs: timeLeft({ opened: state.opened, toOpen: state.toOpen, elapsedMs }) });
+    return progressText({
+      parts: state.parts,
+      partsAll: items.length,
+      handins: state.handins,
+      handinsAll: partsLeft.size,
+      elapsedMs,
+      leftMs: timeLeft({ opened: state.opened, toOpen: state.toOpen, elapsedMs }),
+    });
   };
   const timer = stream.isTTY ? setInterval(() => line(text()), 1000) : null;
   timer?.unref?.();

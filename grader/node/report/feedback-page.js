@@ -48,7 +48,9 @@ function partHtml(r, out, rubric) {
   const problems = findings.filter(asks).map((f) => f.reason);
   const works = findings.filter((f) => !asks(f)).map((f) => f.reason);
   const slides = missedSlides(findings);
-  const pictures = PICTURES.map(([k, caption]) => [dataUrl(out, r.images && r.images[k]), caption]).filter(([src]) => src);
+  const pictures = PICTURES.map(([k, caption]) => [dataUrl(out, r.images && r.images[k]), caption]).filter(
+    ([src]) => src,
+  );
   const controls = Object.entries(r.controls || {});
   const list = (items) => `<ul>${items.map((x) => `<li>${x}</li>`).join('')}</ul>`;
   const step = site !== '/' ? `<a href="${esc(`${site}${r.part}/`)}">our ${esc(r.part)}</a>` : `our ${esc(r.part)} on the course site`;

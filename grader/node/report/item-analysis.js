@@ -44,8 +44,14 @@ export function itemAnalysis(rows, parts) {
       }
     }
     const order = { fail: 0, review: 1, pass: 2 };
-    return { part, students: results.length, passed: results.filter((r) => (r.grader ? r.grader.verdict : r.verdict) === 'pass').length,
-      checks: [...checks.values()].sort((a, b) => order[a.level] - order[b.level] || b.count - a.count || a.key.localeCompare(b.key)) };
+    return {
+      part,
+      students: results.length,
+      passed: results.filter((r) => (r.grader ? r.grader.verdict : r.verdict) === 'pass').length,
+      checks: [...checks.values()].sort(
+        (a, b) => order[a.level] - order[b.level] || b.count - a.count || a.key.localeCompare(b.key),
+      ),
+    };
   });
 }
 

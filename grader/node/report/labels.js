@@ -71,8 +71,18 @@ export function agreement(labels, submissions) {
     }
     const want = VERDICT_OF_LABEL[l.label];
     confusion[l.label][got.verdict]++;
-    rows.push({ submission: l.submission, part: l.part, label: l.label, want, verdict: got.verdict, agree: got.verdict === want,
-      labelReasons: l.reasons, reasons: got.reasons || [], asking: asking(got).map((f) => f.reason), unsure: l.unsure });
+    rows.push({
+      submission: l.submission,
+      part: l.part,
+      label: l.label,
+      want,
+      verdict: got.verdict,
+      agree: got.verdict === want,
+      labelReasons: l.reasons,
+      reasons: got.reasons || [],
+      asking: asking(got).map((f) => f.reason),
+      unsure: l.unsure,
+    });
   }
   const count = (f) => rows.filter(f).length;
   const here = labels.filter((x) => !notGraded.includes(`${x.submission} ${x.part}`));

@@ -41,7 +41,9 @@ export function readOverrides(file) {
 /** Whether overrides.tsv's `student` names submission `s`: its name as the report shows it, its folder's name, the site's name or user id. */
 function names(s, student) {
   const id = s.identity || {};
-  return [s.name, safeName(s.name), id.name, id.userId, id.orgDefinedId, id.username].some((n) => n && String(n).toLowerCase() === student.toLowerCase());
+  return [s.name, safeName(s.name), id.name, id.userId, id.orgDefinedId, id.username].some(
+    (n) => n && String(n).toLowerCase() === student.toLowerCase(),
+  );
 }
 
 /**

@@ -35,9 +35,12 @@ export function writeReport(out, submissions, labels = null, similar = null) {
   // the browsers that graded, with their versions (a class graded on two machines may name two)
   const browsers = [...new Set(rows.flatMap((s) => s.parts.map((p) => p.browserVersion).filter(Boolean)))].sort();
   const items = itemAnalysis(rows, PARTS);
-  writeFileSync(path.join(out, 'report.json'), JSON.stringify({ generated: new Date().toISOString(), browsers, submissions: rows,
-    ...(similar ? { similarity: similarityJson(similar) } : {}), itemAnalysis: items,
-    ...(agreed ? { labels: { ...agreed, rows: agreed.rows.map(({ asking: said, ...r }) => ({ ...r, reasons: said })) } } : {}) }, null, 1));
+  // (the labels' rows with the reasons each part was said to give)
+  const labelled = agreed && agreed.rows.map(({ asking, ...r }) => ({ ...r, reasons: asking }));
+  const said = agreed ? { labels: { ...agreed, rows: labelled } } : {};
+  const report = { generated: new Date().toISOString(), browsers, submissions: rows,
+    ...(similar ? { similarity: similarityJson(similar) } : {}), itemAnalysis: items, ...said };
+  writeFileSync(path.join(out, 'report.json'), JSON.stringify(report, null, 1));
   // (a picture's path is relative to the report: the artifact's files, our reference in parts/)
   const img = (s, r, k) => (r.images && r.images[k] ? `<img src="${esc(r.images[k])}" alt="${esc(`${r.part} ${k}`)}" loading="lazy">` : '');
   const anchor = (s, r) => `${safeName(s.name)}-${r.part}`;

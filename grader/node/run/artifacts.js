@@ -50,7 +50,11 @@ export function readArtifact(dir) {
   for (const [name, file] of Object.entries(files)) {
     if (!read.has(file)) {
       const png = PNG.sync.read(readFileSync(path.join(dir, file)));
-      read.set(file, { width: png.width, height: png.height, data: new Uint8Array(png.data.buffer, png.data.byteOffset, png.data.length) });
+      read.set(file, {
+        width: png.width,
+        height: png.height,
+        data: new Uint8Array(png.data.buffer, png.data.byteOffset, png.data.length),
+      });
     }
     images[name] = read.get(file);
   }

@@ -32,7 +32,11 @@ export async function auditAgain(out, rubric, progress = () => {}) {
       if (result.status !== 'missing') without.push(`${result.name} ${x.part}`);
       continue;
     }
-    applyAudit(result, j, Object.fromEntries(Object.entries(j.files).map(([name, f]) => [name, hrefOf(out, path.join(artifactDir(x), f))])));
+    applyAudit(
+      result,
+      j,
+      Object.fromEntries(Object.entries(j.files).map(([name, f]) => [name, hrefOf(out, path.join(artifactDir(x), f))])),
+    );
     delete result.regather;
     if (j.stale === null) unknown.push(`${result.name} ${x.part}`);
     else if (j.stale.length) {

@@ -18,7 +18,8 @@ const WORKER = fileURLToPath(new URL('./audit-worker.js', import.meta.url));
  * `progress(done, total)` hears each one; `strict`: the audit units run strictly (audits/strict.js: a
  * unit that reads a fact it does not name throws), as the tests run them.
  */
-export async function auditDirs(dirs, rubric, { workers = os.availableParallelism(), progress = () => {}, strict = false } = {}) {
+export async function auditDirs(dirs, rubric, options = {}) {
+  const { workers = os.availableParallelism(), progress = () => {}, strict = false } = options;
   const results = new Map();
   // the largest artifacts (the most pictures to read and fit) first, so that no process is left
   // with a long one at the end

@@ -21,7 +21,8 @@ function background(img) {
   return [...counts.entries()].sort((a, b) => b[1] - a[1])[0][0].split(',').map(Number);
 }
 
-const near = (data, o, c, tol) => Math.abs(data[o] - c[0]) + Math.abs(data[o + 1] - c[1]) + Math.abs(data[o + 2] - c[2]) <= tol;
+const near = (data, o, c, tol) =>
+  Math.abs(data[o] - c[0]) + Math.abs(data[o + 1] - c[1]) + Math.abs(data[o + 2] - c[2]) <= tol;
 
 /**
  * @returns {{mismatch, mismatchFull, mismatchObject, rmse, comparison: 'full'|'object-only', notes: string[],
@@ -61,7 +62,8 @@ export function compareImages(reference, submission) {
   }
   const mismatchObject = unionCount ? objectDiff / unionCount : (mismatchFull > 0 ? 1 : 0);
   const rmse = unionCount ? Math.sqrt(sum / (3 * unionCount)) : 0;
-  const sameBackground = Math.abs(bgRef[0] - bgSub[0]) + Math.abs(bgRef[1] - bgSub[1]) + Math.abs(bgRef[2] - bgSub[2]) <= 12;
+  const sameBackground =
+    Math.abs(bgRef[0] - bgSub[0]) + Math.abs(bgRef[1] - bgSub[1]) + Math.abs(bgRef[2] - bgSub[2]) <= 12;
   if (!sameBackground) notes.push(`backgrounds differ (reference rgb(${bgRef}), submission rgb(${bgSub})): the object alone is compared`);
   if (unionCount === 0) notes.push('no object in either picture: only backgrounds');
   const comparison = sameBackground ? 'full' : 'object-only';

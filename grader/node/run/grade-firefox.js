@@ -48,14 +48,28 @@ export async function gradeInFirefox(plan, { workers = 2, say = console.log, pro
     try {
       for (let item = queue.shift(); item; item = queue.shift()) {
         if (!browser && item.page) {
-          browser = await launchFirefox({ extraPrefsFirefox: NO_NETWORK, protocolTimeout: 1000 * (plan.timeoutSeconds + plan.referenceSeconds + 60) });
+          browser = await launchFirefox({
+            extraPrefsFirefox: NO_NETWORK,
+            protocolTimeout: 1000 * (plan.timeoutSeconds + plan.referenceSeconds + 60),
+          });
           openers = { student: firefoxOpener(browser, 'submission.localhost'), reference: firefoxOpener(browser, 'reference.localhost') };
           browserVersion = browserLabel(plan.browserName || 'Firefox', await browser.version().catch(() => ''));
         }
         const started = Date.now();
         let limit = plan.timeoutSeconds * 1000, over = false;
-        const running = runPart({ item, plan, openers, browserVersion: item.page ? browserVersion : null, more: (seconds) => { limit += seconds * 1000; }, over: () => over })
-          .then(() => 'done', (err) => err);
+        const running = runPart({
+          item,
+          plan,
+          openers,
+          browserVersion: item.page ? browserVersion : null,
+          more: (seconds) => {
+            limit += seconds * 1000;
+          },
+          over: () => over,
+        }).then(
+          () => 'done',
+          (err) => err,
+        );
         let how;
         while (!(how = await Promise.race([running, sleep(250).then(() => null)]))) {
           if (Date.now() - started > limit) {

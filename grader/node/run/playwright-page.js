@@ -121,7 +121,8 @@ async function shownChannels(page) {
   if (!(box.width >= 1 && box.height >= 1)) return { why: 'the canvas has no size on the page' };
   // the box in view, on whole pixels, a pixel more on each side (a canvas at a fractional place)
   const x0 = Math.max(view.x, Math.floor(box.x) - 1), y0 = Math.max(view.y, Math.floor(box.y) - 1);
-  const x1 = Math.min(view.x + view.width, Math.ceil(box.x + box.width) + 1), y1 = Math.min(view.y + view.height, Math.ceil(box.y + box.height) + 1);
+  const x1 = Math.min(view.x + view.width, Math.ceil(box.x + box.width) + 1),
+    y1 = Math.min(view.y + view.height, Math.ceil(box.y + box.height) + 1);
   if (x1 - x0 < box.width / 2 || y1 - y0 < box.height / 2) return { why: 'the canvas is mostly out of view' };
   const clip = { x: x0, y: y0, width: x1 - x0, height: y1 - y0 };
   const png = await page.screenshot({ clip, animations: 'disabled', caret: 'hide', timeout: 10_000 });
@@ -151,7 +152,8 @@ export function pageDriver(page, log) {
     controls: () => page.evaluate(() => window.__grade.controls()),
     /** Clicks a control as a user would (window.__grade.click: the check page clicks the same way); { ok, why }. */
     click: (c) => page.evaluate((i) => window.__grade.click(i), c.index),
-    setValue: (c, value, events) => page.evaluate(([i, v, ev]) => window.__grade.setValue(i, v, ev), [c.index, value, events]),
+    setValue: (c, value, events) =>
+      page.evaluate(([i, v, ev]) => window.__grade.setValue(i, v, ev), [c.index, value, events]),
     /** A key pressed and released, sent where the page listens (the focused element, else the body). */
     press: (key) => page.keyboard.press(key),
     /**
@@ -181,7 +183,9 @@ export function pageDriver(page, log) {
         const s = await window.__geometry.surface(o);
         const base64 = (bytes) => {
           let text = '';
-          for (let i = 0; i < bytes.length; i += 0x8000) text += String.fromCharCode.apply(null, bytes.subarray(i, i + 0x8000));
+          for (let i = 0; i < bytes.length; i += 0x8000) {
+            text += String.fromCharCode.apply(null, bytes.subarray(i, i + 0x8000));
+          }
           return btoa(text);
         };
         return s.why ? s : { ...s, normals: base64(s.normals), points: base64(s.points) };

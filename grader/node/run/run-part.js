@@ -35,7 +35,8 @@ export async function runPart({ item, plan, openers, browserVersion = null, more
     writeFileSync(item.resultFile, JSON.stringify(result, null, 1));
   };
   const result = withFindings({ name: item.name, part: item.part, file: item.page, status: 'timeout', verdict: 'fail', api: null }, [timedOut(rubric)]);
-  Object.assign(result, { actions: [], controls: {}, numbers: {}, mismatch: null, rmse: null, pass: false, comparison: null, notes: [], errors: [], blocked: [], images: null,
+  Object.assign(result, { actions: [], controls: {}, numbers: {}, mismatch: null, rmse: null, pass: false,
+    comparison: null, notes: [], errors: [], blocked: [], images: null,
     ...(plan.browser && plan.browser !== 'chromium' ? { browser: plan.browser } : {}), ...(browserVersion ? { browserVersion } : {}) });
   // how the part's page was found, where its name did not say it plainly (core/part-names.js)
   if (item.foundBy) result.notes.push(item.foundBy);
@@ -57,7 +58,8 @@ export async function runPart({ item, plan, openers, browserVersion = null, more
   const phase = (what, t0) => addTime(timing, what, Date.now() - t0);
   try {
     const t0 = Date.now();
-    const opened = await openers.student.open({ root: item.root, rel: item.page, loadSeconds: rubric.loadSeconds, log: result });
+    const { root, page: rel } = item;
+    const opened = await openers.student.open({ root, rel, loadSeconds: rubric.loadSeconds, log: result });
     phase('open', t0);
     if (opened.why) Object.assign(graded, asFail(notOpened(opened.why)));
     else {
@@ -76,8 +78,13 @@ export async function runPart({ item, plan, openers, browserVersion = null, more
       const t0 = Date.now();
       const { facts, images } = graded.artifact;
       if (over()) return;
-      const saved = writeArtifact(item.artifactDir, { facts: { ...facts, blocked: result.blocked, notes: result.notes }, images });
-      for (const [name, file] of Object.entries(saved)) files[name] = hrefOf(plan.out, path.join(item.artifactDir, file));
+      const saved = writeArtifact(item.artifactDir, {
+        facts: { ...facts, blocked: result.blocked, notes: result.notes },
+        images,
+      });
+      for (const [name, file] of Object.entries(saved)) {
+        files[name] = hrefOf(plan.out, path.join(item.artifactDir, file));
+      }
       phase('write', t0);
     }
     clean = true;
@@ -113,7 +120,9 @@ async function drawReference({ item, plan, openers, result, graded }) {
     if (!r.why) {
       // (our pages publish window.scene after each frame drawn: the picture waits for one)
       const shows = () => r.page.evaluate(() => !!(window.scene && window.scene.frame >= 1)).catch(() => false);
-      const drawn = await referencePicture(r.driver, graded.images.judged, () => untilDrawn(shows, r.driver, plan.rubric.firstFrameSeconds));
+      const drawn = await referencePicture(r.driver, graded.images.judged, () =>
+        untilDrawn(shows, r.driver, plan.rubric.firstFrameSeconds),
+      );
       ref = drawn.img;
       if (drawn.why) result.notes.push(drawn.why);
       const scene = await r.page.evaluate(() => window.scene || null).catch(() => null);
@@ -126,7 +135,8 @@ async function drawReference({ item, plan, openers, result, graded }) {
   }
   if (ref) {
     const cmp = compareImages(PNG.sync.read(pngOf(ref)), PNG.sync.read(pngOf(graded.images.judged)));
-    Object.assign(result, { mismatch: cmp.mismatch, rmse: cmp.rmse, comparison: cmp.comparison, mismatchFull: cmp.mismatchFull, mismatchObject: cmp.mismatchObject });
+    const { mismatch, rmse, comparison, mismatchFull, mismatchObject } = cmp;
+    Object.assign(result, { mismatch, rmse, comparison, mismatchFull, mismatchObject });
     result.notes.push(...cmp.notes, `the reference is our page at the same canvas size${result.referenceState && result.referenceState.light ? ', lit from the fitted light' : ''}; the difference is evidence, the verdict comes from the checks`);
     writeFileSync(path.join(dir, `${stem}-reference.png`), PNG.sync.write(cmp.reference));
     writeFileSync(path.join(dir, `${stem}-diff.png`), PNG.sync.write(cmp.diff));

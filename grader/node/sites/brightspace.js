@@ -38,7 +38,14 @@ export const brightspace = {
   parseTopName(top, isFile) {
     const m = NAME.exec(top);
     if (!m || (isFile && !m[5]) || (!isFile && m[5])) return null;
-    return { submissionId: m[1], userId: m[2], name: m[3], time: brightspaceTime(m[4]), late: null, rest: m[5] || null };
+    return {
+      submissionId: m[1],
+      userId: m[2],
+      name: m[3],
+      time: brightspaceTime(m[4]),
+      late: null,
+      rest: m[5] || null,
+    };
   },
   /** A file the site adds beside the hand-ins: its index.html listing them. */
   /** Why a top-level name that parseTopName refuses is left out. */

@@ -27,7 +27,9 @@ export const canvas = {
   /** What a top-level name says ({ name, late, userId, fileId, rest }), or null: only files, never folders. */
   parseTopName(top, isFile) {
     const m = isFile ? NAME.exec(top) : null;
-    return m ? { name: m[1], late: Boolean(m[2]), userId: m[3], submissionId: null, fileId: m[4], time: null, rest: m[5] } : null;
+    return m
+      ? { name: m[1], late: Boolean(m[2]), userId: m[3], submissionId: null, fileId: m[4], time: null, rest: m[5] }
+      : null;
   },
   /** Why a top-level name that parseTopName refuses is left out. */
   leftOut: 'not named as canvas names a hand-in',

@@ -7,7 +7,8 @@ export const folders = {
   id: 'folders',
   describe: 'a folder a student',
   /** A folder at the top is a student's, named as the teacher likes; a file there is nobody's. */
-  parseTopName: (top, isFile) => (isFile ? null : { name: top, userId: null, submissionId: null, time: null, late: null, rest: null }),
+  parseTopName: (top, isFile) =>
+    (isFile ? null : { name: top, userId: null, submissionId: null, time: null, late: null, rest: null }),
   leftOut: 'a file at the top of the download, not a student\'s folder',
   /** Taken where no site's names fit most of a download. */
   fallback: true,

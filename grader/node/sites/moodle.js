@@ -25,7 +25,15 @@ export const moodle = {
   parseTopName(top, isFile) {
     const m = NAME.exec(top);
     if (!m || (isFile && !m[4])) return null;
-    return { name: m[1], userId: m[2], submissionId: null, time: null, late: null, plugin: m[3], rest: isFile ? m[4] : null };
+    return {
+      name: m[1],
+      userId: m[2],
+      submissionId: null,
+      time: null,
+      late: null,
+      plugin: m[3],
+      rest: isFile ? m[4] : null,
+    };
   },
   /** Why a top-level name that parseTopName refuses is left out. */
   leftOut: 'not named as moodle names a hand-in',

@@ -22,8 +22,12 @@ export function partPoints(r, points) {
 export function studentPoints(s, points) {
   const byPart = Object.fromEntries(PARTS.map((p) => [p, partPoints(s.parts.find((x) => x.part === p), points)]));
   const values = Object.values(byPart);
-  return { byPart, total: values.includes(null) ? null : values.reduce((a, b) => a + b, 0), max: PARTS.reduce((a, p) => a + points.pass * points.weights[p], 0),
-    teacherSet: s.parts.filter((p) => p.teacher).map((p) => p.part) };
+  return {
+    byPart,
+    total: values.includes(null) ? null : values.reduce((a, b) => a + b, 0),
+    max: PARTS.reduce((a, p) => a + points.pass * points.weights[p], 0),
+    teacherSet: s.parts.filter((p) => p.teacher).map((p) => p.part),
+  };
 }
 
 /** A line of words on the verdicts, for a grade's feedback: "WP04P1 pass; WP04P3 review (set by the teacher; the grader said fail)". */

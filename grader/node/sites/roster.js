@@ -21,7 +21,9 @@ const squash = (s) => String(s || '').toLowerCase().normalize('NFC').replace(/[^
 export function parseRoster(text) {
   const [head, ...rows] = readTable(text);
   if (!head) return [];
-  const col = Object.fromEntries(Object.entries(COLUMNS).map(([k, re]) => [k, head.findIndex((h) => re.test(h.trim()))]));
+  const col = Object.fromEntries(
+    Object.entries(COLUMNS).map(([k, re]) => [k, head.findIndex((h) => re.test(h.trim()))]),
+  );
   return rows.map((cells) => {
     // (Brightspace's export writes "#" before an id, so that a spreadsheet keeps it as text)
     const get = (k) => (col[k] >= 0 ? (cells[col[k]] || '').trim().replace(/^#/, '') : '');
@@ -49,7 +51,16 @@ export function matchRoster(submissions, roster) {
     if (!found.length) found = roster.filter((r) => r.names.includes(squash(id.name)));
     if (found.length !== 1) { unmatched.push(`${s.name}${found.length ? ` (${found.length} roster lines match)` : ''}`); continue; }
     const r = found[0];
-    Object.assign(id, { orgDefinedId: r.orgDefinedId, username: r.username, email: r.email, idNumber: r.idNumber, sisUserId: r.sisUserId, sisLoginId: r.sisLoginId, section: r.section, rosterName: r.display });
+    Object.assign(id, {
+      orgDefinedId: r.orgDefinedId,
+      username: r.username,
+      email: r.email,
+      idNumber: r.idNumber,
+      sisUserId: r.sisUserId,
+      sisLoginId: r.sisLoginId,
+      section: r.section,
+      rosterName: r.display,
+    });
   }
   return unmatched;
 }

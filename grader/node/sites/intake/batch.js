@@ -36,7 +36,10 @@ export function takeIn(input, out, rubric, { log = console.log, due = null } = {
   for (const s of failed) log(`grade: ${s.name}: ${s.error}`);
   for (const n of got.notes) log(`grade: ${n}`);
   for (const s of failed) writeNotUnpacked(out, s);
-  return { submissions: got.submissions.filter((s) => !s.error).map((s) => ({ name: s.name, root: s.root })), all: got.submissions };
+  return {
+    submissions: got.submissions.filter((s) => !s.error).map((s) => ({ name: s.name, root: s.root })),
+    all: got.submissions,
+  };
 }
 
 /** Every part of `s` failed with its intake message as the reason (parts/<student>/<part>.json). */

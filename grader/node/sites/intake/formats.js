@@ -14,7 +14,17 @@ export { brightspaceTime } from '../brightspace.js';
  */
 export function dueTime(text) {
   const m = /^(\d{4})-(\d{2})-(\d{2})[ T](\d{1,2}):(\d{2})$/.exec(String(text).trim());
-  if (!m || Number(m[2]) < 1 || Number(m[2]) > 12 || Number(m[3]) < 1 || Number(m[3]) > 31 || Number(m[4]) > 23 || Number(m[5]) > 59) return null;
+  if (
+    !m ||
+    Number(m[2]) < 1 ||
+    Number(m[2]) > 12 ||
+    Number(m[3]) < 1 ||
+    Number(m[3]) > 31 ||
+    Number(m[4]) > 23 ||
+    Number(m[5]) > 59
+  ) {
+    return null;
+  }
   return `${m[1]}-${m[2]}-${m[3]}T${m[4].padStart(2, '0')}:${m[5]}`;
 }
 
@@ -67,7 +77,21 @@ export function groupBySite(files, site = detectSite([...new Map(files.map((f) =
     if (!byUser.has(user)) byUser.set(user, new Map());
     const subs = byUser.get(user);
     const subKey = `${id.submissionId}|${id.time}|${adapter.fallback ? top : ''}`;
-    if (!subs.has(subKey)) subs.set(subKey, { identity: { site, name: id.name, userId: id.userId, submissionId: id.submissionId, time: id.time, late: id.late, source: [], ...(id.fileId ? { fileIds: [] } : {}) }, files: [] });
+    if (!subs.has(subKey)) {
+      subs.set(subKey, {
+        identity: {
+          site,
+          name: id.name,
+          userId: id.userId,
+          submissionId: id.submissionId,
+          time: id.time,
+          late: id.late,
+          source: [],
+          ...(id.fileId ? { fileIds: [] } : {}),
+        },
+        files: [],
+      });
+    }
     const sub = subs.get(subKey);
     const source = isFile ? top : `${top}/`;
     if (!sub.identity.source.includes(source)) sub.identity.source.push(source);
@@ -77,9 +101,22 @@ export function groupBySite(files, site = detectSite([...new Map(files.map((f) =
   const students = [];
   for (const subs of byUser.values()) {
     // the latest first: by time, then by submission id (a later submission has a larger id)
-    const order = [...subs.values()].sort((a, b) => String(b.identity.time).localeCompare(String(a.identity.time)) || Number(b.identity.submissionId) - Number(a.identity.submissionId));
+    const order = [...subs.values()].sort(
+      (a, b) =>
+        String(b.identity.time).localeCompare(String(a.identity.time)) ||
+        Number(b.identity.submissionId) - Number(a.identity.submissionId),
+    );
     const [latest, ...rest] = order;
-    students.push({ ...latest, earlier: rest.map((s) => ({ time: s.identity.time, late: s.identity.late, submissionId: s.identity.submissionId, source: s.identity.source, files: s.files.length })) });
+    students.push({
+      ...latest,
+      earlier: rest.map((s) => ({
+        time: s.identity.time,
+        late: s.identity.late,
+        submissionId: s.identity.submissionId,
+        source: s.identity.source,
+        files: s.files.length,
+      })),
+    });
   }
   return { site, students, notes };
 }

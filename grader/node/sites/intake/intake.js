@@ -104,7 +104,15 @@ export function intake(input, out, bounds, due = null) {
     }
     return sub;
   });
-  const result = { site, found: SITES[site], input: path.resolve(input), due, submissions, notes: [...listing.notes, ...layout.notes, ...notes], seconds: (Date.now() - t0) / 1000 };
+  const result = {
+    site,
+    found: SITES[site],
+    input: path.resolve(input),
+    due,
+    submissions,
+    notes: [...listing.notes, ...layout.notes, ...notes],
+    seconds: (Date.now() - t0) / 1000,
+  };
   writeFileSync(path.join(out, INTAKE_FILE), JSON.stringify(result, null, 1));
   return result;
 }

@@ -35,7 +35,10 @@ function topOf(files) {
 /** What the top of `files` is: a site's name, 'folders' (a folder per student), 'handin' (one student's) or 'unknown'. */
 function kindOf(files) {
   const { folders, loose } = topOf(files);
-  const site = detectSite([...[...folders.keys()].map((top) => ({ top, isFile: false })), ...loose.map((top) => ({ top, isFile: true }))]);
+  const site = detectSite([
+    ...[...folders.keys()].map((top) => ({ top, isFile: false })),
+    ...loose.map((top) => ({ top, isFile: true })),
+  ]);
   if (site !== 'folders') return site;
   // folders and pages at the top named as parts (p1/, WP04P2/, part3.html): one student's, when at least half are
   const named = [...folders.keys(), ...loose.filter((name) => PAGE.test(name))];
@@ -52,7 +55,8 @@ function holdsHandin(files) {
 }
 
 /** The folders of `folders` (a Map of name → its files) that hold a hand-in. */
-const studentFolders = (folders) => [...folders.entries()].filter(([, inside]) => holdsHandin(inside)).map(([name]) => name);
+const studentFolders = (folders) =>
+  [...folders.entries()].filter(([, inside]) => holdsHandin(inside)).map(([name]) => name);
 
 /** Some of `names`, sorted and quoted, for a message. */
 const some = (names, n = 4) => [...names].sort().slice(0, n).map((x) => `"${x}"`).join(', ') + (names.length > n ? `, … (${names.length} in all)` : '');
