@@ -131,7 +131,10 @@ async function run(gather) {
     const passes = results.filter((r) => r.verdict === 'pass').length, unchecked = results.filter((r) => r.verdict === NOT_CHECKED).length;
     $('progress').textContent = `done in ${((performance.now() - started) / 1000).toFixed(0)} s: ${passes} of ${PARTS.length} parts pass` +
       `${unchecked ? `, ${unchecked} not checked here` : ''}`;
-    window.check = { done: true, parts: results.map(({ part, verdict, reasons, findings, api }) => ({ part, verdict, reasons, findings, api })) };
+    window.check = {
+      done: true,
+      parts: results.map(({ part, verdict, reasons, findings, api }) => ({ part, verdict, reasons, findings, api })),
+    };
   } catch (err) {
     $('progress').textContent = '';
     say(err instanceof CheckInputError ? err.message : `The check stopped: ${err.message}. Reload the page and try again; if it happens again, tell your teacher.`);

@@ -75,8 +75,12 @@ export function partsOfHandIn(files, titles = {}) {
 /** A zip's files as { path, blob }, unpacked here in the browser. */
 export async function unzipEntries(file) {
   const bytes = new Uint8Array(await file.arrayBuffer());
-  const out = await new Promise((resolve, reject) => unzip(bytes, (err, data) => (err ? reject(err) : resolve(data)))).catch((err) => {
-    throw new CheckInputError(`${file.name} could not be unpacked (${err.message}). Unzip it yourself and drop the folder.`);
+  const out = await new Promise((resolve, reject) =>
+    unzip(bytes, (err, data) => (err ? reject(err) : resolve(data))),
+  ).catch((err) => {
+    throw new CheckInputError(
+      `${file.name} could not be unpacked (${err.message}). Unzip it yourself and drop the folder.`,
+    );
   });
   return Object.entries(out).filter(([p]) => !p.endsWith('/')).map(([p, data]) => ({ path: p, blob: new Blob([data]) }));
 }

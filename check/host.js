@@ -70,7 +70,15 @@ async function onMessage(e) {
  */
 export function openSession(source, frameScript, loopSeconds) {
   const id = Array.from(crypto.getRandomValues(new Uint8Array(8)), (b) => b.toString(16).padStart(2, '0')).join('');
-  const s = { source, frameScript, loopSeconds, session: id, log: { errors: [], blocked: [], notes: [], webgpu: false }, pending: 0, lastRequest: performance.now() };
+  const s = {
+    source,
+    frameScript,
+    loopSeconds,
+    session: id,
+    log: { errors: [], blocked: [], notes: [], webgpu: false },
+    pending: 0,
+    lastRequest: performance.now(),
+  };
   sessions.set(id, s);
   return {
     id,
@@ -79,7 +87,9 @@ export function openSession(source, frameScript, loopSeconds) {
     /** Resolves once no request has been open for `quiet` ms (at most `max` ms): the grader's networkidle. */
     idle: async (quiet = 500, max = 5000) => {
       const until = performance.now() + max;
-      while (performance.now() < until && (s.pending || performance.now() - s.lastRequest < quiet)) await new Promise((r) => setTimeout(r, 50));
+      while (performance.now() < until && (s.pending || performance.now() - s.lastRequest < quiet)) {
+        await new Promise((r) => setTimeout(r, 50));
+      }
     },
     /** Forgets what the last part's frames did (before the next part). */
     clearLog: () => {

@@ -112,9 +112,19 @@ export async function checkPart({ part, page, session, rubric, stage, progress =
   const seconds = (performance.now() - started) / 1000;
   const errors = fp.errors();
   const result = {
-    part, file: page, api: graded.api ?? null, canvas: graded.canvas, controls: graded.controls || {}, numbers: graded.numbers || {},
+    part,
+    file: page,
+    api: graded.api ?? null,
+    canvas: graded.canvas,
+    controls: graded.controls || {},
+    numbers: graded.numbers || {},
     ...judgement(graded, errors),
-    actions: graded.actions || [], images: graded.images || {}, errors, blocked: fp.blocked(), notes: [...session.log.notes], seconds,
+    actions: graded.actions || [],
+    images: graded.images || {},
+    errors,
+    blocked: fp.blocked(),
+    notes: [...session.log.notes],
+    seconds,
   };
   // what the grader would have said stays below, for the student to read, but is no verdict
   const usedWebGPU = session.log.webgpu || graded.api === 'webgpu' || errors.some((e) => /requestAdapter|navigator\.gpu|\bgpu is (undefined|null)/.test(e));

@@ -73,7 +73,15 @@ function timersOf() {
     delay = Number.isFinite(+delay) ? Math.max(0, +delay) : 0;
     if (delay > 2 ** 31 - 1) delay = 1;
     const id = nextId++;
-    timers.set(id, { id, type, func, args, delay, createdAt: C.ticks, callAt: C.ticks + (delay || (duringTick ? 1 : 0)) });
+    timers.set(id, {
+      id,
+      type,
+      func,
+      args,
+      delay,
+      createdAt: C.ticks,
+      callAt: C.ticks + (delay || (duringTick ? 1 : 0)),
+    });
     return id;
   };
   C.clear = (id) => { if (id) timers.delete(Number(id)); };
@@ -81,7 +89,14 @@ function timersOf() {
     let best = null;
     for (const t of timers.values()) {
       if (t.callAt > before) continue;
-      if (!best || t.callAt < best.callAt || (t.callAt === best.callAt && (t.createdAt < best.createdAt || (t.createdAt === best.createdAt && t.id < best.id)))) best = t;
+      if (
+        !best ||
+        t.callAt < best.callAt ||
+        (t.callAt === best.callAt &&
+          (t.createdAt < best.createdAt || (t.createdAt === best.createdAt && t.id < best.id)))
+      ) {
+        best = t;
+      }
     }
     return best;
   }
@@ -94,7 +109,9 @@ function timersOf() {
       else timers.delete(t.id);
       if (t.type === 'frame') {
         // every callback due at one time is one animation frame: a page with two loops runs two in it
-        if (t.callAt !== C.frameAt) Object.assign(C, { frameAt: t.callAt, frameCount: C.frameCount + 1, frameCalls: 0 });
+        if (t.callAt !== C.frameAt) {
+          Object.assign(C, { frameAt: t.callAt, frameCount: C.frameCount + 1, frameCalls: 0 });
+        }
         C.frameCalls++;
       }
       duringTick = true;

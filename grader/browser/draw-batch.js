@@ -29,8 +29,19 @@ function drawBatch(heldDraws, flushFirst) {
       /** gl.drawArrays(...a) as `send(gl, a)` draws it: held while it continues a run of separate triangles. */
       arrays(gl, a, send) {
         const [mode, first, count] = a;
-        if (!(a.length === 3 && mode === TRIANGLES && Number.isInteger(first) && first >= 0 && Number.isInteger(count) && count > 0 && count % 3 === 0 && first + count <= 2 ** 31 - 1)) {
-          if (B.held) B.flush();
+        if (!(
+          a.length === 3 &&
+          mode === TRIANGLES &&
+          Number.isInteger(first) &&
+          first >= 0 &&
+          Number.isInteger(count) &&
+          count > 0 &&
+          count % 3 === 0 &&
+          first + count <= 2 ** 31 - 1
+        )) {
+          if (B.held) {
+            B.flush();
+          }
           return send(gl, a);
         }
         const h = B.held;

@@ -26,7 +26,16 @@ function geometryScript(analyseMesh, recordWebGPU, recordSent, geometryStore, fr
   const { frameOf, closeFrame, wrap, bytesIn, MAX_DRAWS, FLOAT, TRIANGLES } = G;
   const infoOf = programInfoOf(G, analyseMesh);
   const read = geometryReader(G, analyseMesh, infoOf);
-  recordWebGPU({ frameOf, closeFrame, wrap, bytesIn, vertexInputs: analyseMesh.vertexInputs, MAX_DRAWS, FLOAT, TRIANGLES });
+  recordWebGPU({
+    frameOf,
+    closeFrame,
+    wrap,
+    bytesIn,
+    vertexInputs: analyseMesh.vertexInputs,
+    MAX_DRAWS,
+    FLOAT,
+    TRIANGLES,
+  });
   recordSent({ wrap, bytesIn });
   G.rec.read = read;
   // the surface per pixel (grader/browser/surface.js; a frame drawn with WebGPU: surface-webgpu.js, a promise)
@@ -86,7 +95,23 @@ function geometryStore() {
       return out;
     };
   };
-  return { TRIANGLES, FLOAT, COLOR_BUFFER_BIT, MAX_DRAWS, HISTORY, bytesOf, ctxState, vaoState, programInfo, rec, newVao, stateOf, bytesIn, copy, wrap };
+  return {
+    TRIANGLES,
+    FLOAT,
+    COLOR_BUFFER_BIT,
+    MAX_DRAWS,
+    HISTORY,
+    bytesOf,
+    ctxState,
+    vaoState,
+    programInfo,
+    rec,
+    newVao,
+    stateOf,
+    bytesIn,
+    copy,
+    wrap,
+  };
 }
 
 /** The frames: a draw recorded into the current one (separate triangles one after another: one range), a frame closed, a vertex array bound. */
@@ -115,8 +140,18 @@ function frameRecorder({ rec, HISTORY, MAX_DRAWS, TRIANGLES, stateOf, newVao, va
     if (!vao.snap) vao.snap = vao.attribs.map((a) => a && { ...a });
     const cull = grade && grade.cullOn ? `${grade.faces.cullMode === 'front-and-back' ? 'both' : grade.faces.cullMode || 'back'}/${grade.faces.frontFace || 'ccw'}` : 'off';
     const prev = f.draws[f.draws.length - 1];
-    if (prev && !d.indexed && !prev.indexed && d.mode === TRIANGLES && prev.mode === TRIANGLES && prev.gl === gl && prev.program === st.program
-      && prev.attribs === vao.snap && prev.cull === cull && prev.first + prev.count === d.first) {
+    if (
+      prev &&
+      !d.indexed &&
+      !prev.indexed &&
+      d.mode === TRIANGLES &&
+      prev.mode === TRIANGLES &&
+      prev.gl === gl &&
+      prev.program === st.program &&
+      prev.attribs === vao.snap &&
+      prev.cull === cull &&
+      prev.first + prev.count === d.first
+    ) {
       prev.count += d.count; // separate triangles drawn one after another: one range
       return;
     }
@@ -172,7 +207,10 @@ function recordWebGL({ wrap, stateOf, bytesOf, copy, changed, bindVao, closeFram
     });
     wrap(proto, 'disableVertexAttribArray', (gl, [index]) => {
       const st = stateOf(gl);
-      if (st.vao.attribs[index]) { st.vao.attribs[index] = { ...st.vao.attribs[index], enabled: false }; changed(st.vao); }
+      if (st.vao.attribs[index]) {
+        st.vao.attribs[index] = { ...st.vao.attribs[index], enabled: false };
+        changed(st.vao);
+      }
     });
     wrap(proto, 'bindVertexArray', (gl, [vao]) => bindVao(gl, vao));
     wrap(proto, 'useProgram', (gl, [program]) => { stateOf(gl).program = program; });
@@ -231,10 +269,30 @@ function geometryReader({ rec, bytesOf, FLOAT, TRIANGLES }, analyseMesh, infoOf)
         if (!a || !a.enabled || !a.buffer) return null;
         return { ...a, bytes: bytesOf.get(a.buffer) || null };
       };
-      return { mode: d.mode, first: d.first, count: d.count, indexed: d.indexed, type: d.type, offset: d.offset, cull: d.cull,
+      return {
+        mode: d.mode,
+        first: d.first,
+        count: d.count,
+        indexed: d.indexed,
+        type: d.type,
+        offset: d.offset,
+        cull: d.cull,
         indices: d.indexed && d.elements ? bytesOf.get(d.elements) || null : null,
-        attributes: info ? info.attributes.map((a) => ({ name: a.name, type: a.type, position: a.name === info.position, ...(a.location >= 0 ? { data: attrib(a.location) } : {}) })) : [] };
+        attributes: info
+          ? info.attributes.map((a) => ({
+              name: a.name,
+              type: a.type,
+              position: a.name === info.position,
+              ...(a.location >= 0 ? { data: attrib(a.location) } : {}),
+            }))
+          : [],
+      };
     });
-    return { frames, calls: frame.calls, over: frame.over, ...analyseMesh.summary(draws, { FLOAT, TRIANGLES, ...limits }) };
+    return {
+      frames,
+      calls: frame.calls,
+      over: frame.over,
+      ...analyseMesh.summary(draws, { FLOAT, TRIANGLES, ...limits }),
+    };
   };
 }

@@ -14,7 +14,11 @@ function analysis(vertexShader, vertexInputs, reader, indexer, meshesOf, walker,
   const summary = (draws, { FLOAT, TRIANGLES, maxTriangles = 60000, maxEdgeTriangles = 65536 }) => {
     const tris = draws.filter((d) => d.mode === TRIANGLES && d.count >= 3);
     const triangles = tris.reduce((n, d) => n + Math.floor(d.count / 3), 0);
-    const out = { draws: draws.length, triangles, otherVertices: draws.filter((d) => d.mode !== TRIANGLES).reduce((n, d) => n + d.count, 0) };
+    const out = {
+      draws: draws.length,
+      triangles,
+      otherVertices: draws.filter((d) => d.mode !== TRIANGLES).reduce((n, d) => n + d.count, 0),
+    };
     if (!tris.length) return { ...out, why: 'no separate triangles (gl.TRIANGLES) were drawn' };
     const largest = tris.reduce((a, b) => (b.count > a.count ? b : a));
     out.cull = largest.cull;
@@ -25,7 +29,14 @@ function analysis(vertexShader, vertexInputs, reader, indexer, meshesOf, walker,
     const each = walker(found.meshes, step);
     const lo = [Infinity, Infinity, Infinity], hi = [-Infinity, -Infinity, -Infinity];
     each((m, j, v) => {
-      if (v) for (const q of v) for (let k = 0; k < 3; k++) { lo[k] = Math.min(lo[k], q[k]); hi[k] = Math.max(hi[k], q[k]); }
+      if (v) {
+        for (const q of v) {
+          for (let k = 0; k < 3; k++) {
+            lo[k] = Math.min(lo[k], q[k]);
+            hi[k] = Math.max(hi[k], q[k]);
+          }
+        }
+      }
     });
     const centre = lo.map((x, k) => (x + hi[k]) / 2);
     const diag = Math.hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]);
@@ -46,7 +57,11 @@ function vertexShader(source) {
   const IDENT = /[A-Za-z_]\w*/g;
   const code = String(source).replace(/\/\*[\s\S]*?\*\//g, ' ').replace(/\/\/.*$/gm, ' ');
   const attributes = [];
-  for (const m of code.matchAll(ATTRIBUTE)) if (!attributes.some((a) => a.name === m[2])) attributes.push({ type: m[1], name: m[2] });
+  for (const m of code.matchAll(ATTRIBUTE)) {
+    if (!attributes.some((a) => a.name === m[2])) {
+      attributes.push({ type: m[1], name: m[2] });
+    }
+  }
   const assigned = new Map();
   for (const m of code.matchAll(ASSIGN)) {
     if (!assigned.has(m[1])) assigned.set(m[1], []);
@@ -107,7 +122,10 @@ function indexer(d) {
   return (k) => {
     const at = d.offset + k * bytes;
     if (at + bytes > view.byteLength) return -1;
-    return (d.base || 0) + (bytes === 1 ? view.getUint8(at) : bytes === 2 ? view.getUint16(at, true) : view.getUint32(at, true));
+    return (
+      (d.base || 0) +
+      (bytes === 1 ? view.getUint8(at) : bytes === 2 ? view.getUint16(at, true) : view.getUint32(at, true))
+    );
   };
 }
 
@@ -130,7 +148,14 @@ function meshesOf(tris, FLOAT, reader, indexer) {
     position = pos.name;
     const others = d.attributes.filter((a) => !a.position && /^vec[34]$/.test(a.type) && a.data && a.data.size >= 3 && reader(a.data, FLOAT))
       .map((a) => ({ name: a.name, read: reader(a.data, FLOAT), size: a.data.size }));
-    meshes.push({ d, n: Math.floor(d.count / 3), index: indexer(d), read: reader(pos.data, FLOAT), size: pos.data.size, others });
+    meshes.push({
+      d,
+      n: Math.floor(d.count / 3),
+      index: indexer(d),
+      read: reader(pos.data, FLOAT),
+      size: pos.data.size,
+      others,
+    });
   }
   return { meshes, position };
 }
@@ -200,7 +225,11 @@ function tally(each, centre, diag, edgesWanted) {
       if (!o.read(i0, va) || !o.read(i1, vb) || !o.read(i2, vc)) continue;
       f.all++;
       let same = true;
-      for (let k = 0; k < o.size && k < 4; k++) if (Math.abs(va[k] - vb[k]) > 1e-6 || Math.abs(va[k] - vc[k]) > 1e-6) same = false;
+      for (let k = 0; k < o.size && k < 4; k++) {
+        if (Math.abs(va[k] - vb[k]) > 1e-6 || Math.abs(va[k] - vc[k]) > 1e-6) {
+          same = false;
+        }
+      }
       if (same) f.same++;
       if (f.distinct.size < 64) f.distinct.add(va.slice(0, Math.min(o.size, 3)).map((x) => x.toFixed(4)).join(','));
     }

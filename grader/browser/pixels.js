@@ -5,7 +5,10 @@
 export function pixelsScript() {
   const g = window.__grade;
   if (!g || g.pixels) return;
-  const C = HTMLCanvasElement.prototype, X = CanvasRenderingContext2D.prototype, D = Document.prototype, E = Element.prototype;
+  const C = HTMLCanvasElement.prototype,
+    X = CanvasRenderingContext2D.prototype,
+    D = Document.prototype,
+    E = Element.prototype;
   const property = (proto, name) => Object.getOwnPropertyDescriptor(proto, name);
   const N = {
     querySelectorAll: D.querySelectorAll, createElement: D.createElement, getClientRects: E.getClientRects, getAttribute: E.getAttribute,
@@ -19,7 +22,9 @@ export function pixelsScript() {
   /** The canvas the grader reads: the largest visible one, or null. */
   const target = () => {
     const all = [...N.querySelectorAll.call(document, 'canvas')].filter((c) => size(c).width > 0 && size(c).height > 0 && N.getClientRects.call(c).length);
-    return all.length ? all.reduce((a, b) => (size(b).width * size(b).height > size(a).width * size(a).height ? b : a)) : null;
+    return all.length
+      ? all.reduce((a, b) => (size(b).width * size(b).height > size(a).width * size(a).height ? b : a))
+      : null;
   };
 
   /** A 2D canvas of `canvas`'s size with `canvas` drawn on it, over `background` if one is given: { copy, c2, width, height }. */

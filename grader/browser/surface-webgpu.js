@@ -105,7 +105,10 @@ function webgpuSurfaceOf({ pipelineMaker, encodePasses, readFloats, pictures }) 
     const frame = rec.cur && rec.cur.draws.length ? rec.cur : rec.last;
     const all = frame ? frame.draws.filter((d) => d.gpu) : [];
     if (!all.length) return null;
-    return drawAgain(all.filter((d) => d.mode === TRIANGLES && d.count >= 3 && d.gpu.size && d.gpu.desc.device), fitSamples);
+    return drawAgain(
+      all.filter((d) => d.mode === TRIANGLES && d.count >= 3 && d.gpu.size && d.gpu.desc.device),
+      fitSamples,
+    );
   };
 
   async function drawAgain(draws, fitSamples) {
@@ -113,7 +116,10 @@ function webgpuSurfaceOf({ pipelineMaker, encodePasses, readFloats, pictures }) 
     if (!N || !N.GPUDevice) return { why: 'the browser\'s own WebGPU functions were not kept for the grader' };
     if (!draws.length) return { why: 'no triangle list (triangle-list) was drawn into a texture in the last frame' };
     // the draws into the largest texture: the canvas's
-    const size = draws.reduce((a, d) => (d.gpu.size.width * d.gpu.size.height > a.width * a.height ? d.gpu.size : a), { width: 0, height: 0 });
+    const size = draws.reduce((a, d) => (d.gpu.size.width * d.gpu.size.height > a.width * a.height ? d.gpu.size : a), {
+      width: 0,
+      height: 0,
+    });
     const mine = draws.filter((d) => d.gpu.size.width === size.width && d.gpu.size.height === size.height);
     const device = mine[0].gpu.desc.device;
     const call = (cls, name, self, ...a) => N[cls][name].apply(self, a);
@@ -126,7 +132,9 @@ function webgpuSurfaceOf({ pipelineMaker, encodePasses, readFloats, pictures }) 
       const passes = await encodePasses(mine, size, { call, dev, made, maker });
       const pics = pictures(await readFloats(passes, size, call), size.width, size.height, fitSamples);
       const inputs = maker.inputs();
-      out = pics.why ? pics : { width: size.width, height: size.height, position: inputs.position, normal: inputs.normal, ...pics };
+      out = pics.why
+        ? pics
+        : { width: size.width, height: size.height, position: inputs.position, normal: inputs.normal, ...pics };
     } catch (err) {
       out = { why: `the page's geometry could not be drawn again: ${String(err && err.message).slice(0, 240)}` };
     }
@@ -244,7 +252,9 @@ async function readFloats({ reads, row }, { width, height }, call) {
     await call('GPUBuffer', 'mapAsync', b, 0x0001);
     const src = new Float32Array(call('GPUBuffer', 'getMappedRange', b));
     const px = new Float32Array(width * height * 4);
-    for (let y = 0; y < height; y++) px.set(src.subarray(y * floats, y * floats + 4 * width), 4 * (height - 1 - y) * width);
+    for (let y = 0; y < height; y++) {
+      px.set(src.subarray(y * floats, y * floats + 4 * width), 4 * (height - 1 - y) * width);
+    }
     call('GPUBuffer', 'unmap', b);
     passes.push(px);
   }

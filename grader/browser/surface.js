@@ -22,7 +22,9 @@ function surfaceReaderOf(calls, shaders, copyUniforms, copyAttributes, drawPass,
     const N = window.__glNative;
     if (!N || !N.offscreenGetContext || !N.WebGL2RenderingContext) return { why: 'this browser has no WebGL 2 OffscreenCanvas for the grader to draw the page\'s geometry again' };
     const frame = rec.cur && rec.cur.draws.length ? rec.cur : rec.last;
-    const draws = frame ? frame.draws.filter((d) => !d.resolve && d.mode === TRIANGLES && d.count >= 3 && d.program) : [];
+    const draws = frame
+      ? frame.draws.filter((d) => !d.resolve && d.mode === TRIANGLES && d.count >= 3 && d.program)
+      : [];
     if (!draws.length) return { why: frame && frame.draws.some((d) => d.resolve) ? 'a WebGPU page whose pipelines the grader did not see made' : 'no separate triangles (gl.TRIANGLES) were drawn in the last frame' };
     const pg = draws[0].gl, width = pg.drawingBufferWidth, height = pg.drawingBufferHeight;
     const { gl, page } = calls(N, pg, new OffscreenCanvas(width, height));
@@ -50,8 +52,14 @@ function surfaceReaderOf(calls, shaders, copyUniforms, copyAttributes, drawPass,
         made.normal = made.normal || (p.normal && p.normal.name);
         return p;
       };
-      const passes = [0, 1, 2].map((what) => drawPass(gl, { draws, what, depthTest, ours, TRIANGLES, width, height },
-        (d, prog) => copyUniforms(gl, page, d.program, prog), (d, prog) => copyAttributes(gl, page, d, prog, made.buffers, bytesOf, TRIANGLES)));
+      const passes = [0, 1, 2].map((what) =>
+        drawPass(
+          gl,
+          { draws, what, depthTest, ours, TRIANGLES, width, height },
+          (d, prog) => copyUniforms(gl, page, d.program, prog),
+          (d, prog) => copyAttributes(gl, page, d, prog, made.buffers, bytesOf, TRIANGLES),
+        ),
+      );
       const pics = pictures(passes, width, height, fitSamples);
       return pics.why ? pics : { width, height, position: made.position, normal: made.normal, ...pics };
     } catch (err) {
@@ -217,7 +225,9 @@ function pictures([P, Nn, C], width, height, fitSamples) {
         points[o + c] = byte(hi[c] > lo[c] ? (P[i + c] - lo[c]) / (hi[c] - lo[c]) : 0.5);
       }
       normals[o + 3] = points[o + 3] = P[i + 3] === 1 ? 255 : 128;
-      if (k++ % every === 0 && fit.length < fitSamples) fit.push([P[i], P[i + 1], P[i + 2], C[i], C[i + 1], C[i + 2], C[i + 3]].map((v) => Math.round(v * 1e6) / 1e6));
+      if (k++ % every === 0 && fit.length < fitSamples) {
+        fit.push([P[i], P[i + 1], P[i + 2], C[i], C[i + 1], C[i + 2], C[i + 3]].map((v) => Math.round(v * 1e6) / 1e6));
+      }
     }
   }
   return { box: [lo, hi], covered, fit, normals, points };

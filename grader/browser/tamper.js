@@ -13,10 +13,20 @@ export function tamperScript() {
     const d = Object.getOwnPropertyDescriptor(holder, name);
     if (d) watched.push([label, holder, name, d.value || d.get]);
   };
-  const protos = { HTMLCanvasElement: window.HTMLCanvasElement, CanvasRenderingContext2D: window.CanvasRenderingContext2D, Document: window.Document,
-    WebGLRenderingContext: window.WebGLRenderingContext, WebGL2RenderingContext: window.WebGL2RenderingContext, EventTarget: window.EventTarget,
-    GPUAdapter: window.GPUAdapter, GPUDevice: window.GPUDevice, GPUQueue: window.GPUQueue, GPUBuffer: window.GPUBuffer,
-    GPURenderPassEncoder: window.GPURenderPassEncoder, GPUShaderModule: window.GPUShaderModule };
+  const protos = {
+    HTMLCanvasElement: window.HTMLCanvasElement,
+    CanvasRenderingContext2D: window.CanvasRenderingContext2D,
+    Document: window.Document,
+    WebGLRenderingContext: window.WebGLRenderingContext,
+    WebGL2RenderingContext: window.WebGL2RenderingContext,
+    EventTarget: window.EventTarget,
+    GPUAdapter: window.GPUAdapter,
+    GPUDevice: window.GPUDevice,
+    GPUQueue: window.GPUQueue,
+    GPUBuffer: window.GPUBuffer,
+    GPURenderPassEncoder: window.GPURenderPassEncoder,
+    GPUShaderModule: window.GPUShaderModule,
+  };
   const names = {
     HTMLCanvasElement: ['getContext', 'toDataURL', 'toBlob'], CanvasRenderingContext2D: ['drawImage', 'getImageData'], Document: ['createElement', 'querySelectorAll'],
     WebGLRenderingContext: ['drawArrays', 'drawElements', 'bufferData', 'bufferSubData', 'vertexAttribPointer', 'enable', 'disable', 'cullFace', 'frontFace', 'useProgram', 'uniformMatrix4fv', 'getExtension', 'shaderSource', 'compileShader', 'linkProgram'],

@@ -84,7 +84,12 @@ function copier(state, realSubmit, toRGBA) {
       if (canvas.width === texture.width && canvas.height === texture.height) {
         ctx.ctx2d.putImageData(new ImageData(pixels, texture.width, texture.height), 0, 0);
       }
-      Object.assign(state, { captured: state.captured + 1, width: texture.width, height: texture.height, format: ctx.config.format });
+      Object.assign(state, {
+        captured: state.captured + 1,
+        width: texture.width,
+        height: texture.height,
+        format: ctx.config.format,
+      });
     }, (err) => { state.errors.push(`readback: ${err.message}`); buffer.destroy(); })
       .finally(() => {
         state.pending = null;
@@ -112,8 +117,13 @@ function capturedContextClass(realGetContext, contexts) {
       if (!this.texture || this.texture.width !== width || this.texture.height !== height) {
         if (this.texture) this.texture.destroy();
         this.texture = this.config.device.createTexture({
-          label: 'canvas texture (webgpu-capture)', size: [width, height], format: this.config.format,
-          usage: (this.config.usage ?? GPUTextureUsage.RENDER_ATTACHMENT) | GPUTextureUsage.RENDER_ATTACHMENT | GPUTextureUsage.COPY_SRC,
+          label: 'canvas texture (webgpu-capture)',
+          size: [width, height],
+          format: this.config.format,
+          usage:
+            (this.config.usage ?? GPUTextureUsage.RENDER_ATTACHMENT) |
+            GPUTextureUsage.RENDER_ATTACHMENT |
+            GPUTextureUsage.COPY_SRC,
           viewFormats: this.config.viewFormats || [],
         });
       }
@@ -135,6 +145,13 @@ export async function readWebGPUFrame(page) {
     const s = window.__webgpuCapture;
     if (!s) return null;
     await s.settled();
-    return { frames: s.frames, captured: s.captured, width: s.width, height: s.height, format: s.format, errors: [...s.errors] };
+    return {
+      frames: s.frames,
+      captured: s.captured,
+      width: s.width,
+      height: s.height,
+      format: s.format,
+      errors: [...s.errors],
+    };
   });
 }
