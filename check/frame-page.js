@@ -8,7 +8,8 @@
 /** keydown, keypress (a character), keyup of `key` at the focused element (or the body) of the frame's window `W`. */
 function pressKey(W, key) {
   const doc = W.document;
-  const target = doc.activeElement && doc.activeElement !== doc.documentElement ? doc.activeElement : doc.body || doc.documentElement;
+  const active = doc.activeElement;
+  const target = active && active !== doc.documentElement ? active : doc.body || doc.documentElement;
   const code = /^[a-z]$/i.test(key) ? `Key${key.toUpperCase()}` : /^[0-9]$/.test(key) ? `Digit${key}` : { '+': 'Equal', '-': 'Minus', ' ': 'Space' }[key] || key;
   const keyCode = { ArrowLeft: 37, ArrowUp: 38, ArrowRight: 39, ArrowDown: 40, PageUp: 33, PageDown: 34, '+': 187, '-': 189, ' ': 32, Enter: 13, Escape: 27 }[key] ?? key.toUpperCase().charCodeAt(0);
   const init = { key, code, keyCode, which: keyCode, bubbles: true, cancelable: true, composed: true, view: W };
@@ -27,7 +28,8 @@ export function framePage(frame, log) {
   const g = () => win().__grade;
   // the watch's record outlives the frame (read after it is removed)
   let record = null;
-  const watch = () => (record ??= (frame.contentWindow && frame.contentWindow.__checkWatch) || null) || { errors: [], blocked: [], hung: null };
+  const watch = () => (record ??= (frame.contentWindow && frame.contentWindow.__checkWatch) || null)
+    || { errors: [], blocked: [], hung: null };
   const plain = (x) => JSON.parse(JSON.stringify(x)); // out of the frame's realm
   /** Waits for the last WebGPU frame's copy to the canvas (grader/browser/webgpu-capture.js). */
   const settle = async () => {

@@ -5,8 +5,9 @@
 // A frame ends at a queue's submit. Each draw is resolved into the form grader/browser/mesh.js sums
 // up only when the grader asks; its `gpu` (the pipeline's description, the bound objects, the call)
 // is what grader/browser/surface-webgpu.js draws again.
-export function webgpuGeometry({ frameOf, closeFrame, wrap: after, bytesIn, vertexInputs, MAX_DRAWS, FLOAT, TRIANGLES }, recordBindings) {
+export function webgpuGeometry(recorder, recordBindings, drawResolver) {
   if (!window.GPUDevice || !window.GPURenderPassEncoder) return;
+  const { frameOf, closeFrame, wrap: after, bytesIn, vertexInputs, MAX_DRAWS, FLOAT, TRIANGLES } = recorder;
   const VERTEX = 0x20, INDEX = 0x10;
   const bytesOf = new WeakMap(); // GPUBuffer → Uint8Array
   const mapped = new WeakMap(); // GPUBuffer → its mapped ranges, copied at unmap
@@ -26,7 +27,11 @@ export function webgpuGeometry({ frameOf, closeFrame, wrap: after, bytesIn, vert
   const unmap = B.unmap;
   B.unmap = function (...a) {
     const m = mapped.get(this), bytes = bytesOf.get(this);
-    try { if (m && bytes) for (const { offset, range } of m) if (offset + range.byteLength <= bytes.length) bytes.set(new Uint8Array(range), offset); } catch { /* (a detached range: nothing kept) */ }
+    try {
+      for (const { offset, range } of m && bytes ? m : []) {
+        if (offset + range.byteLength <= bytes.length) bytes.set(new Uint8Array(range), offset);
+      }
+    } catch { /* (a detached range: nothing kept) */ }
     mapped.delete(this);
     return unmap.apply(this, a);
   };
@@ -36,13 +41,16 @@ export function webgpuGeometry({ frameOf, closeFrame, wrap: after, bytesIn, vert
   });
   after(Q, 'submit', () => closeFrame());
   after(D, 'createShaderModule', (device, [desc], module) => codeOf.set(module, String((desc && desc.code) || '')));
-  const stateOf = (pass) => passes.get(pass) || passes.set(pass, { pipeline: null, vertex: [], index: null, groups: [], size: null }).get(pass);
+  const stateOf = (pass) => passes.get(pass)
+    || passes.set(pass, { pipeline: null, vertex: [], index: null, groups: [], size: null }).get(pass);
   const drawnAgainAs = recordBindings(after, stateOf);
   const see = (device, desc, pipeline) => {
     const v = (desc && desc.vertex) || {}, prim = (desc && desc.primitive) || {};
     pipes.set(pipeline, {
       desc: drawnAgainAs(device, desc, codeOf.get(v.module) || ''),
-      buffers: [...(v.buffers || [])].map((b) => b && { stride: b.arrayStride, attributes: [...(b.attributes || [])].map((a) => ({ format: a.format, offset: a.offset || 0, location: a.shaderLocation })) }),
+      buffers: [...(v.buffers || [])].map((b) => b && { stride: b.arrayStride,
+        attributes: [...(b.attributes || [])].map((a) => ({ format: a.format, offset: a.offset || 0,
+          location: a.shaderLocation })) }),
       topology: prim.topology || 'triangle-list',
       cull: prim.cullMode && prim.cullMode !== 'none' ? `${prim.cullMode}/${prim.frontFace || 'ccw'}` : 'off',
       inputs: vertexInputs(codeOf.get(v.module) || '', v.entryPoint),
@@ -53,8 +61,29 @@ export function webgpuGeometry({ frameOf, closeFrame, wrap: after, bytesIn, vert
   after(P, 'setPipeline', (pass, [pipeline]) => { stateOf(pass).pipeline = pipeline; });
   after(P, 'setVertexBuffer', (pass, [slot, buffer, offset = 0]) => { stateOf(pass).vertex[slot] = buffer ? { buffer, offset } : null; });
   after(P, 'setIndexBuffer', (pass, [buffer, format, offset = 0]) => { stateOf(pass).index = { buffer, format, offset }; });
+  const resolver = drawResolver({ pipes, bytesOf, FLOAT, TRIANGLES });
+  const push = (pass, d) => {
+    const f = frameOf(d.count);
+    if (f.draws.length >= MAX_DRAWS) { f.over++; return; }
+    const st = stateOf(pass);
+    const snap = { pipeline: st.pipeline, vertex: [...st.vertex], index: st.index && { ...st.index } };
+    const pipe = pipes.get(st.pipeline);
+    f.draws.push({ mode: pipe && pipe.topology === 'triangle-list' ? TRIANGLES : -1, count: d.count, resolve: resolver(snap, d),
+      gpu: pipe && { desc: pipe.desc, vertex: snap.vertex, index: snap.index, groups: [...st.groups], size: st.size,
+        call: d } });
+  };
+  after(P, 'draw', (pass, [count, instances = 1, first = 0, firstInstance = 0]) => push(pass, { count: count | 0, first: first | 0, indexed: false, instances, firstInstance }));
+  after(P, 'drawIndexed', (pass, [count, instances = 1, firstIndex = 0, baseVertex = 0, firstInstance = 0]) => push(pass, { count: count | 0, first: firstIndex | 0, base: baseVertex | 0, indexed: true, instances, firstInstance }));
+}
+
+/**
+ * A draw resolved, when the grader asks, into the form grader/browser/mesh.js sums up: (the pass's
+ * state as the draw saw it, the draw) → () → { mode, count, indexed, cull, indices, attributes, ... },
+ * from the pipelines seen (`pipes`) and the buffers' bytes (`bytesOf`).
+ */
+export function webgpuDrawResolver({ pipes, bytesOf, FLOAT, TRIANGLES }) {
   const SIZES = { float32x2: 2, float32x3: 3, float32x4: 4 };
-  const resolver = (st, d) => () => {
+  return (st, d) => () => {
     const pipe = pipes.get(st.pipeline);
     if (!pipe) return { mode: 0, count: d.count, attributes: [] };
     const attributes = [];
@@ -63,8 +92,9 @@ export function webgpuGeometry({ frameOf, closeFrame, wrap: after, bytesIn, vert
       for (const a of b ? b.attributes : []) {
         const input = pipe.inputs.byLocation[a.location] || { name: `@location(${a.location})` };
         const size = SIZES[a.format] || 0;
-        attributes.push({ name: input.name, type: size >= 3 ? `vec${size}` : a.format, position: a.location === pipe.inputs.position,
-          data: bound && { bytes: bytesOf.get(bound.buffer) || null, size, type: size ? FLOAT : 0, stride: b.stride, offset: bound.offset + a.offset, enabled: true } });
+        const data = bound && { bytes: bytesOf.get(bound.buffer) || null, size, type: size ? FLOAT : 0,
+          stride: b.stride, offset: bound.offset + a.offset, enabled: true };
+        attributes.push({ name: input.name, type: size >= 3 ? `vec${size}` : a.format, position: a.location === pipe.inputs.position, data });
       }
     });
     const index = d.indexed && st.index;
@@ -73,17 +103,6 @@ export function webgpuGeometry({ frameOf, closeFrame, wrap: after, bytesIn, vert
       type: bytes === 4 ? 0x1405 : 0x1403, offset: index ? index.offset + d.first * bytes : 0, base: d.base || 0,
       indices: index ? bytesOf.get(index.buffer) || null : null, attributes };
   };
-  const push = (pass, d) => {
-    const f = frameOf(d.count);
-    if (f.draws.length >= MAX_DRAWS) { f.over++; return; }
-    const st = stateOf(pass);
-    const snap = { pipeline: st.pipeline, vertex: [...st.vertex], index: st.index && { ...st.index } };
-    const pipe = pipes.get(st.pipeline);
-    f.draws.push({ mode: pipe && pipe.topology === 'triangle-list' ? TRIANGLES : -1, count: d.count, resolve: resolver(snap, d),
-      gpu: pipe && { desc: pipe.desc, vertex: snap.vertex, index: snap.index, groups: [...st.groups], size: st.size, call: d } });
-  };
-  after(P, 'draw', (pass, [count, instances = 1, first = 0, firstInstance = 0]) => push(pass, { count: count | 0, first: first | 0, indexed: false, instances, firstInstance }));
-  after(P, 'drawIndexed', (pass, [count, instances = 1, firstIndex = 0, baseVertex = 0, firstInstance = 0]) => push(pass, { count: count | 0, first: firstIndex | 0, base: baseVertex | 0, indexed: true, instances, firstInstance }));
 }
 
 /**
@@ -104,7 +123,8 @@ export function webgpuBindings(after, stateOf) {
     if (t) stateOf(pass).size = { width: t.width, height: t.height };
   });
   after(GPURenderPassEncoder.prototype, 'setBindGroup', (pass, [index, group, offsets]) => {
-    stateOf(pass).groups[index] = group ? { group, entries: groupsOf.get(group) || null, dynamic: !!(offsets && offsets.length) } : null;
+    const dynamic = !!(offsets && offsets.length);
+    stateOf(pass).groups[index] = group ? { group, entries: groupsOf.get(group) || null, dynamic } : null;
   });
   return (device, desc, code) => {
     const v = desc.vertex || {}, depth = desc.depthStencil;
@@ -113,4 +133,4 @@ export function webgpuBindings(after, stateOf) {
 }
 
 /** The recorder as an expression for a page's script: (G) → the WebGPU record, with its bindings'. */
-export const webgpuRecorderScript = `((g) => (${webgpuGeometry})(g, ${webgpuBindings}))`;
+export const webgpuRecorderScript = `((g) => (${webgpuGeometry})(g, ${webgpuBindings}, ${webgpuDrawResolver}))`;

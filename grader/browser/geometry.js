@@ -17,7 +17,8 @@ import { webgpuSurfaceReaderScript } from './surface-webgpu.js';
 export const recordersInit = `(${geometryScript})(${meshAnalysisScript}, ${webgpuRecorderScript}, ${sentScript}, ${geometryStore}, ${frameRecorder}, ${recordWebGL}, ${geometryReader}, ${programInfoOf}, ${surfaceReaderScript}, ${webgpuSurfaceReaderScript(picturesScript)});`;
 
 /** The init script's body (its parts are passed in as arguments: the script is their text). */
-function geometryScript(analyseMesh, recordWebGPU, recordSent, geometryStore, frameRecorder, recordWebGL, geometryReader, programInfoOf, surfaceReader, webgpuSurfaceReader) {
+function geometryScript(analyseMesh, recordWebGPU, recordSent, geometryStore, frameRecorder, recordWebGL,
+  geometryReader, programInfoOf, surfaceReader, webgpuSurfaceReader) {
   if (window.__geometry || !window.WebGLRenderingContext) return;
   const G = geometryStore();
   Object.defineProperty(window, '__geometry', { value: G.rec, enumerable: false });
@@ -173,7 +174,8 @@ function frameRecorder({ rec, HISTORY, MAX_DRAWS, TRIANGLES, stateOf, newVao, va
 
 /** The WebGL calls recorded: buffers and their bytes, the attribute layout, vertex arrays, the program, clears and draws. */
 function recordWebGL({ wrap, stateOf, bytesOf, copy, changed, bindVao, closeFrame, draw, rec, COLOR_BUFFER_BIT }) {
-  for (const proto of [window.WebGLRenderingContext, window.WebGL2RenderingContext].filter(Boolean).map((c) => c.prototype)) {
+  const protos = [window.WebGLRenderingContext, window.WebGL2RenderingContext].filter(Boolean).map((c) => c.prototype);
+  for (const proto of protos) {
     wrap(proto, 'bindBuffer', (gl, [target, buffer]) => {
       const st = stateOf(gl);
       if (target === gl.ARRAY_BUFFER) st.array = buffer;

@@ -7,14 +7,17 @@
 
 /** window.__grade: what the parts below record, and state(), what the page interface reads of it. */
 function gradeState() {
-  const g = { api: null, apis: [], draws: 0, vertices: 0, pending: 0, shaderErrors: [], gpuErrors: [], adapter: undefined, webgpuMissing: false, wgsl: [], glsl: [], faces: { depthTest: false, culling: false, cullMode: null }, noCull: false, cullOn: false };
+  const g = { api: null, apis: [], draws: 0, vertices: 0, pending: 0, shaderErrors: [], gpuErrors: [],
+    adapter: undefined, webgpuMissing: false, wgsl: [], glsl: [],
+    faces: { depthTest: false, culling: false, cullMode: null }, noCull: false, cullOn: false };
   // (read-only: a page that assigns to it is noted, grader/browser/tamper.js)
   Object.defineProperty(window, '__grade', { get: () => g, set: () => { g.replacedByPage = true; }, enumerable: false });
 
   /** What the page interface's state() gives the grading core (playwright-page.js and the check page's
    * frame driver both read it here, so they cannot drift apart). */
-  g.state = () => ({ api: g.api, frames: window.__webgpuCapture ? window.__webgpuCapture.frames : 0, adapter: g.adapter, webgpuMissing: g.webgpuMissing, draws: g.draws,
-    vertices: g.vertices, pending: g.pending, animation: window.__checkClock && window.__checkClock.frames ? window.__checkClock.frames() : null,
+  g.state = () => ({ api: g.api, frames: window.__webgpuCapture ? window.__webgpuCapture.frames : 0, adapter: g.adapter,
+    webgpuMissing: g.webgpuMissing, draws: g.draws, vertices: g.vertices, pending: g.pending,
+    animation: window.__checkClock && window.__checkClock.frames ? window.__checkClock.frames() : null,
     shaderErrors: [...g.shaderErrors], gpuErrors: [...g.gpuErrors], faces: { ...g.faces } });
 }
 
@@ -60,10 +63,8 @@ function watchWebGL() {
     gl.clearDepth(1);
     gl.clearStencil(0);
     gl.clear(gl.DEPTH_BUFFER_BIT | gl.STENCIL_BUFFER_BIT);
-    gl.clearDepth(depth);
-    gl.clearStencil(stencil);
-    gl.depthMask(depthMask);
-    gl.stencilMask(stencilMask);
+    gl.clearDepth(depth); gl.clearStencil(stencil);
+    gl.depthMask(depthMask); gl.stencilMask(stencilMask);
     if (scissor) gl.enable(gl.SCISSOR_TEST);
     if (fb) gl.bindFramebuffer(gl.FRAMEBUFFER, fb);
   };
@@ -72,7 +73,8 @@ function watchWebGL() {
     presented.set(gl, true);
     queueMicrotask(() => present(gl));
   };
-  for (const proto of [window.WebGLRenderingContext, window.WebGL2RenderingContext].filter(Boolean).map((c) => c.prototype)) {
+  const protos = [window.WebGLRenderingContext, window.WebGL2RenderingContext].filter(Boolean).map((c) => c.prototype);
+  for (const proto of protos) {
     const { compileShader, linkProgram, shaderSource, drawArrays, drawElements } = proto;
     proto.shaderSource = function (shader, source) {
       g.glsl.push(String(source).slice(0, 20000));
@@ -125,8 +127,10 @@ function watchWebGL() {
     // the page's own work, counted (draw calls and vertices): what a page costs, never read off a clock
     // (separate triangles drawn one after another go to the GPU as one draw: grader/browser/draw-batch.js)
     const batch = window.__drawBatch, send = (gl, a) => bare(gl, drawArrays, a);
-    proto.drawArrays = function (...a) { g.draws++; g.vertices += Math.max(0, a[2] | 0); drew(this); return batch ? batch.arrays(this, a, send) : send(this, a); };
-    proto.drawElements = function (...a) { g.draws++; g.vertices += Math.max(0, a[1] | 0); drew(this); return bare(this, drawElements, a); };
+    const counted = (gl, n) => { g.draws++; g.vertices += Math.max(0, n | 0); drew(gl); };
+    const arrays = (gl, a) => (batch ? batch.arrays(gl, a, send) : send(gl, a));
+    proto.drawArrays = function (...a) { counted(this, a[2]); return arrays(this, a); };
+    proto.drawElements = function (...a) { counted(this, a[1]); return bare(this, drawElements, a); };
   }
 }
 
@@ -187,12 +191,13 @@ function watchWaits() {
       }, () => {});
       return module;
     };
-    const createRenderPipeline = GPUDevice.prototype.createRenderPipeline, createRenderPipelineAsync = GPUDevice.prototype.createRenderPipelineAsync;
+    const D = GPUDevice.prototype, P = GPURenderPassEncoder.prototype;
+    const createPipeline = D.createRenderPipeline, createAsync = D.createRenderPipelineAsync;
     const mapAsync = GPUBuffer.prototype.mapAsync, onSubmittedWorkDone = GPUQueue.prototype.onSubmittedWorkDone;
     // a shader's compilation messages and an error scope are answered in real time
-    const getCompilationInfo = GPUShaderModule.prototype.getCompilationInfo, popErrorScope = GPUDevice.prototype.popErrorScope;
-    GPUShaderModule.prototype.getCompilationInfo = function (...a) { return awaited(getCompilationInfo.apply(this, a)); };
-    GPUDevice.prototype.popErrorScope = function (...a) { return awaited(popErrorScope.apply(this, a)); };
+    const M = GPUShaderModule.prototype, getCompilationInfo = M.getCompilationInfo, popErrorScope = D.popErrorScope;
+    M.getCompilationInfo = function (...a) { return awaited(getCompilationInfo.apply(this, a)); };
+    D.popErrorScope = function (...a) { return awaited(popErrorScope.apply(this, a)); };
     GPUBuffer.prototype.mapAsync = function (...a) { return awaited(mapAsync.apply(this, a)); };
     GPUQueue.prototype.onSubmittedWorkDone = function (...a) { return awaited(onSubmittedWorkDone.apply(this, a)); };
     const seePipeline = (desc) => {
@@ -201,12 +206,12 @@ function watchWaits() {
       if (prim.cullMode && prim.cullMode !== 'none') { g.faces.culling = true; g.faces.cullMode = prim.cullMode; }
       if (prim.frontFace === 'cw' || prim.frontFace === 'ccw') g.faces.frontFace = prim.frontFace;
     };
-    GPUDevice.prototype.createRenderPipeline = function (desc) { seePipeline(desc); return createRenderPipeline.call(this, desc); };
-    GPUDevice.prototype.createRenderPipelineAsync = function (desc) { seePipeline(desc); return awaited(createRenderPipelineAsync.call(this, desc)); };
-    const draw = GPURenderPassEncoder.prototype.draw, drawIndexed = GPURenderPassEncoder.prototype.drawIndexed;
+    D.createRenderPipeline = function (desc) { seePipeline(desc); return createPipeline.call(this, desc); };
+    D.createRenderPipelineAsync = function (desc) { seePipeline(desc); return awaited(createAsync.call(this, desc)); };
+    const draw = P.draw, drawIndexed = P.drawIndexed;
     const count = (n, instances) => Math.max(0, n | 0) * (instances === undefined ? 1 : Math.max(0, instances | 0));
-    GPURenderPassEncoder.prototype.draw = function (...a) { g.draws++; g.vertices += count(a[0], a[1]); return draw.apply(this, a); };
-    GPURenderPassEncoder.prototype.drawIndexed = function (...a) { g.draws++; g.vertices += count(a[0], a[1]); return drawIndexed.apply(this, a); };
+    P.draw = function (...a) { g.draws++; g.vertices += count(a[0], a[1]); return draw.apply(this, a); };
+    P.drawIndexed = function (...a) { g.draws++; g.vertices += count(a[0], a[1]); return drawIndexed.apply(this, a); };
   } else {
     g.adapter = null;
     // a browser without WebGPU (Firefox ESR): a page that asks for navigator.gpu gets undefined, as

@@ -11,7 +11,8 @@ export function pixelsScript() {
     E = Element.prototype;
   const property = (proto, name) => Object.getOwnPropertyDescriptor(proto, name);
   const N = {
-    querySelectorAll: D.querySelectorAll, createElement: D.createElement, getClientRects: E.getClientRects, getAttribute: E.getAttribute,
+    querySelectorAll: D.querySelectorAll, createElement: D.createElement,
+    getClientRects: E.getClientRects, getAttribute: E.getAttribute,
     getContext: C.getContext, toDataURL: C.toDataURL, width: property(C, 'width'), height: property(C, 'height'),
     fillStyle: property(X, 'fillStyle'), fillRect: X.fillRect, drawImage: X.drawImage, getImageData: X.getImageData,
     getBoundingClientRect: E.getBoundingClientRect, innerWidth: property(window, 'innerWidth'), innerHeight: property(window, 'innerHeight'),

@@ -37,7 +37,8 @@ export function sentScript({ wrap: after, bytesIn }) {
     return out.join(',');
   };
 
-  for (const proto of [window.WebGLRenderingContext, window.WebGL2RenderingContext].filter(Boolean).map((c) => c.prototype)) {
+  const protos = [window.WebGLRenderingContext, window.WebGL2RenderingContext].filter(Boolean).map((c) => c.prototype);
+  for (const proto of protos) {
     after(proto, 'getUniformLocation', (gl, [, name], loc) => { if (loc) names.set(loc, String(name)); });
     for (const fn of Object.getOwnPropertyNames(proto).filter((n) => /^uniform(Matrix)?[1-4](u?i|f)v?$|^uniformMatrix[234]x[234]fv$/.test(n))) {
       after(proto, fn, (gl, [loc, ...args]) => {
