@@ -4,13 +4,7 @@
 // the same serving rules (serve-submission.js's submissionAnswers: only the submission's files,
 // stand-ins said, other hosts blocked and listed), driven by the same pageDriver. This Firefox has
 // no WebGPU, so there is no WebGPU capture: a WebGPU part is not graded here (audits/first-frame.js).
-import { drawBatchScript } from '../../browser/draw-batch.js';
-import { instrumentScript } from '../../browser/instrument.js';
-import { recordersInit } from '../../browser/geometry.js';
-import { nativesInit } from '../../browser/natives.js';
-import { pixelsScript } from '../../browser/pixels.js';
-import { tamperScript } from '../../browser/tamper.js';
-import { FROZEN, clockScript } from '../../browser/clock.js';
+import { gradedPageScripts } from './graded-page-scripts.js';
 import { submissionAnswers, urlOf } from './serve-submission.js';
 import { pageDriver } from './playwright-page.js';
 
@@ -63,13 +57,7 @@ export function firefoxOpener(browser, host) {
         log.errors.push(`dialog: ${d.message()}`);
         d.dismiss().catch(() => {});
       });
-      await page.evaluateOnNewDocument(nativesInit); // (first: the browser's own WebGL functions)
-      await page.evaluateOnNewDocument(drawBatchScript);
-      await page.evaluateOnNewDocument(instrumentScript);
-      await page.evaluateOnNewDocument(pixelsScript);
-      await page.evaluateOnNewDocument(recordersInit);
-      await page.evaluateOnNewDocument(clockScript(FROZEN));
-      await page.evaluateOnNewDocument(tamperScript);
+      for (const script of gradedPageScripts({ webgpu: false })) await page.evaluateOnNewDocument(script);
       const url = urlOf(site.origin, root, rel, query).href;
       let response;
       try {

@@ -4,14 +4,7 @@
 // firefox-page.js opens in Firefox ESR. The check page has its own implementation of the same
 // interface for a part in an iframe; the core knows none of them.
 import { PNG } from 'pngjs';
-import { webgpuCaptureScript } from '../../browser/webgpu-capture.js';
-import { drawBatchScript } from '../../browser/draw-batch.js';
-import { instrumentScript } from '../../browser/instrument.js';
-import { recordersInit } from '../../browser/geometry.js';
-import { nativesInit } from '../../browser/natives.js';
-import { pixelsScript } from '../../browser/pixels.js';
-import { tamperScript } from '../../browser/tamper.js';
-import { FROZEN, clockScript } from '../../browser/clock.js';
+import { gradedPageScripts } from './graded-page-scripts.js';
 import { serveSubmission, urlOf } from './serve-submission.js';
 
 /**
@@ -33,14 +26,7 @@ export function partOpener(browser, host) {
     const site = { root: null, origin: null, log: { errors: [], blocked: [], notes: [] }, former: new Set() };
     const context = await browser.newContext({ viewport: { width: 1000, height: 1000 }, deviceScaleFactor: 1 });
     await serveSubmission(context, site);
-    await context.addInitScript(nativesInit); // (first: the browser's own WebGL functions)
-    await context.addInitScript(webgpuCaptureScript);
-    await context.addInitScript(drawBatchScript);
-    await context.addInitScript(instrumentScript);
-    await context.addInitScript(pixelsScript);
-    await context.addInitScript(recordersInit);
-    await context.addInitScript(clockScript(FROZEN));
-    await context.addInitScript(tamperScript);
+    for (const script of gradedPageScripts({ webgpu: true })) await context.addInitScript(script);
     const page = await context.newPage();
     page.on('popup', (popup) => {
       site.log.blocked.push(`popup: ${popup.url()}`);
