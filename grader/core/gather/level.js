@@ -208,8 +208,8 @@ export async function climb(session) {
     // a level slider or <select> (which may start at level 0): stepped from its least up, as
     // Subdivide is clicked, until the silhouette settles (at most maxSubdivisions steps)
     const c = session.levelSlider;
-    const values = [];
-    values.push(...(c.type === 'select' ? (c.options || []).slice(0, thresholds.maxSubdivisions + 1) : levelValues(c, thresholds.maxSubdivisions)));
+    const values = c.type === 'select' ? (c.options || []).slice(0, thresholds.maxSubdivisions + 1)
+      : levelValues(c, thresholds.maxSubdivisions);
     ladder.length = 0;
     for (const v of values) {
       await session.page.setValue(c, v, ['input', 'change']);
