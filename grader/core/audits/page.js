@@ -14,6 +14,7 @@ export const META = {
   'linked-page': { title: 'A page of its own, not a link to another part\'s', slide: SLIDE.sphere, failureTitle: 'The page only links to another part\'s page', description: 'A page with no canvas and no script of its own that links to another part\'s page is graded as that part, once.', reads: ['the hand-in'] },
   'not-unpacked': { title: 'The hand-in could be unpacked', slide: null, failureTitle: 'The hand-in could not be unpacked', description: 'Unpacks the course site\'s download within the rubric\'s bounds (files, bytes, depth), zips inside it too.', reads: ['the download'] },
   'not-graded-in-run': { title: 'A part this run did not grade', slide: null, failureTitle: 'Not graded in this run', description: 'A part left out of this run (another shard, or the run stopped before it) is said so, never failed.', reads: [] },
+  'browser-failed': { title: 'The browser kept running the page to the end', slide: null, failureTitle: 'The browser failed while grading this page', description: 'Where the browser itself fails (it runs out of memory, loses its connection to the page or the page\'s frame), the part is not graded here, with the browser\'s message: a grade rests on the page, never on the browser that ran it.', reads: ['the page'] },
   'grader-trouble': { title: 'The grader finished on this page', slide: null, failureTitle: 'The grader could not finish on this page', description: 'Where the grader itself fails on a page, the part is a review for a teacher, never a pass.', reads: ['the page'] },
   'page-errors': { title: 'Errors the page reported (no verdict changes)', slide: null, failureTitle: 'The page reported errors', description: 'The page\'s own errors and alerts, listed for the student; they change no verdict.', reads: ['facts.errors'] },
   tamper: { title: 'The page left what the grader reads through alone', slide: null, failureTitle: 'The page replaced what the grader reads through', description: 'Checks that the browser\'s functions and the grader\'s hooks it reads through are still the ones installed before the page ran.', reads: ['facts.tampered'] },
@@ -49,8 +50,31 @@ export const notOpened = (why) => finding('page-opens', 'fail', `the page could 
 /** A finding that stops a part's judging, as the judging carries it: { fail (the reason), failId }. */
 export const asFail = (f) => ({ fail: f.reason, failId: f.id });
 
+// what a browser says when it fails itself, not the page it runs: out of memory, its connection to
+// the page (puppeteer's protocol and session, a detached frame), a crashed renderer
+const BROWSER_FAILED = /out of memory|Protocol error|detached Frame|frame was detached|Session closed|Connection closed|Target closed|Target crashed|Page crashed/i;
+
+/** Is `err` the browser's own failure (BROWSER_FAILED), not the grader's trouble with the page? */
+export const browserFailed = (err) => BROWSER_FAILED.test(String(err && err.message));
+
+/**
+ * The browser (`browser`: its name and version, or null) failed while grading the page (`err`):
+ * not graded here, with the browser's message and what to do; never a verdict on the page.
+ */
+export const browserFailure = (err, browser) => finding('browser-failed', NOT_GRADED, `${NOT_GRADED}: the browser${browser ? ` (${browser})` : ''} failed while grading this page, not the page ("${String(err.message).split('\n')[0]}"): grade this part again, or in the other browser (--browser)`);
+
 /** The grader's own trouble with a page (`err`): never a pass on it, a teacher looks. A check. */
 export const graderTrouble = (err) => finding('grader-trouble', 'review', `the grader could not finish on this page: ${err.message.split('\n')[0]}`);
+
+/**
+ * What a part gathered with an error `err` is judged by: the browser's own failure (browserFailed)
+ * is { notGraded, notGradedId } (browserFailure), the grader's own trouble { checks: [graderTrouble] }.
+ */
+export function troubleWith(err, browser) {
+  if (!browserFailed(err)) return { checks: [graderTrouble(err)] };
+  const f = browserFailure(err, browser);
+  return { checks: [], notGraded: f.reason, notGradedId: f.id };
+}
 
 /** A page that replaced what the grader reads through may show one thing and hand the grader another. */
 function auditTamper({ facts, sayAs }) {

@@ -67,7 +67,7 @@ export async function gradeInFirefox(plan, { workers = 2, say = console.log, pro
           },
           over: () => over,
         }).then(
-          () => 'done',
+          (r) => (r && r.browserFailed ? 'browser failed' : 'done'),
           (err) => err,
         );
         let how;
@@ -83,7 +83,7 @@ export async function gradeInFirefox(plan, { workers = 2, say = console.log, pro
         if (how === 'timeout') {
           timedOut++;
           await end(); // a page that never lets go takes its Firefox with it
-        } else if (how !== 'done') {
+        } else if (how !== 'done' && how !== 'browser failed') {
           // the grader's own trouble outside the part (the browser went away): the part stays a timeout
           const trouble = `the grader's own trouble: ${how.message.split('\n')[0]}`;
           if (progress) progress.ended(item, { verdict: 'timeout', trouble });
@@ -94,6 +94,8 @@ export async function gradeInFirefox(plan, { workers = 2, say = console.log, pro
         const verdict = verdictOfPart(item);
         if (progress) progress.ended(item, { verdict });
         else say(`  ${how === 'timeout' ? '✘' : '✓'} [${graded}/${total}] ${item.name} ${item.part} (${seconds} s) ${verdict}`);
+        // a Firefox that failed itself (out of memory, a frame lost) is not trusted with the next part
+        if (how === 'browser failed') await end();
       }
     } finally {
       await end();

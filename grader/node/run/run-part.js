@@ -11,7 +11,7 @@ import { compareImages } from './compare.js';
 import { writeArtifact, pngOf } from './artifacts.js';
 import { hrefOf } from '../../files/layout.js';
 import { applyAudit, withFindings } from '../../core/part-result.js';
-import { missingPage, timedOut, stoppedAtFirstFrame, tooSlow, linkedPage, notOpened, asFail, graderTrouble } from '../../core/audits/page.js';
+import { missingPage, timedOut, stoppedAtFirstFrame, tooSlow, linkedPage, notOpened, asFail, troubleWith } from '../../core/audits/page.js';
 import { tooSlowWords } from '../../core/verdict.js';
 import { deadlineOf } from '../../core/deadline.js';
 import { FIRST_FRAME } from '../../core/gather/index.js';
@@ -26,6 +26,7 @@ const CLOSED = /Test ended|Target page, context or browser has been closed/;
  * as a timeout, which stays if the part's time bound stops it) and item.artifactDir. `more(seconds)`
  * asks for more time for our reference; `over()` says the time bound has stopped the part (nothing
  * is written after that). `browserVersion` ("Chromium 156.0.8078.108") names the browser that grades it.
+ * Returns { browserFailed }: the browser failed itself on this part (the next part wants a fresh one).
  */
 export async function runPart({ item, plan, openers, browserVersion = null, more = () => {}, over = () => false }) {
   const rubric = plan.rubric;
@@ -52,7 +53,7 @@ export async function runPart({ item, plan, openers, browserVersion = null, more
   const started = Date.now();
   let graded = { fail: null, checks: [], actions: [], images: {}, shown: {}, busy: 0 };
   const files = {};
-  let clean = false;
+  let clean = false, browserBroke = false;
   // where the part's time goes: opening it, each page-interface call, closing it, writing the pictures
   const timing = result.timing = {};
   const phase = (what, t0) => addTime(timing, what, Date.now() - t0);
@@ -90,8 +91,9 @@ export async function runPart({ item, plan, openers, browserVersion = null, more
     clean = true;
   } catch (err) {
     if (over() || CLOSED.test(err.message)) throw err; // the time bound: stays 'timeout'
-    // the grader's own trouble with this page: never a pass on it, a teacher looks
-    graded.checks = [graderTrouble(err)];
+    // the browser's own failure: not graded here; the grader's own trouble with this page: a review
+    Object.assign(graded, troubleWith(err, browserVersion));
+    browserBroke = !!graded.notGraded;
     if (process.env.GRADE_DEBUG) console.error(err);
   } finally {
     const t0 = Date.now();
@@ -106,6 +108,7 @@ export async function runPart({ item, plan, openers, browserVersion = null, more
     await drawReference({ item, plan, openers, result, graded });
     save(result);
   }
+  return { browserFailed: browserBroke };
 }
 
 /** Our reference at the student's size, beside theirs: evidence, not the verdict. */
