@@ -1,7 +1,6 @@
 // The machine's Chromium (find-browser.js: Debian's on this one) as the grader, the tests and the
 // tools launch it: the flags a machine without a GPU needs, and those for a SwiftShader WebGPU
 // adapter (hand-ins come in both APIs).
-import { chromium } from '@playwright/test';
 import { findHere } from './find-browser.js';
 
 const FOUND = findHere('chromium');
@@ -28,5 +27,7 @@ export const WEBGPU_ARGS = ['--enable-unsafe-webgpu', '--enable-features=Vulkan'
 /** Launches Chromium, or throws an Error saying how to install it. */
 export async function launchChromium(options = {}) {
   if (!CHROMIUM) throw new Error(CHROMIUM_MISSING);
+  // (loaded here, not at the top: a command that launches no browser does not wait for Playwright)
+  const { chromium } = await import('@playwright/test');
   return chromium.launch({ executablePath: CHROMIUM, args: CHROMIUM_ARGS, ...options });
 }

@@ -2,7 +2,6 @@
 // puppeteer-core over WebDriver BiDi (Playwright cannot drive a stock Firefox): how to launch it so
 // that headless WebGL works on a machine without a GPU (Mesa's llvmpipe through EGL, in the content
 // process). Never downloads a browser.
-import puppeteer from 'puppeteer-core';
 import { findHere } from './find-browser.js';
 
 const FOUND = findHere('firefox');
@@ -32,6 +31,8 @@ const FIREFOX_PREFS = {
 export async function launchFirefox(options = {}) {
   if (!FIREFOX) throw new Error(FIREFOX_MISSING);
   const { env, extraPrefsFirefox, ...rest } = options;
+  // (loaded here, not at the top: a command that launches no Firefox does not wait for puppeteer)
+  const { default: puppeteer } = await import('puppeteer-core');
   return puppeteer.launch({
     browser: 'firefox',
     executablePath: FIREFOX,
