@@ -14,6 +14,7 @@ import { NOT_CHECKED, NO_WEBGPU_HERE } from './not-checked.js';
 import { PARTS } from '../grader/core/part-names.js';
 import { withFindings, findingsOfResult } from '../grader/core/part-result.js';
 import { missingPage } from '../grader/core/audits/page.js';
+import { MS_PER_SECOND } from '../grader/core/units.js';
 
 const $ = (id) => document.getElementById(id);
 const el = (tag, { dataset, ...props } = {}, ...children) => {
@@ -129,7 +130,7 @@ async function run(gather) {
       $('stage').replaceChildren();
     }
     const passes = results.filter((r) => r.verdict === 'pass').length, unchecked = results.filter((r) => r.verdict === NOT_CHECKED).length;
-    $('progress').textContent = `done in ${((performance.now() - started) / 1000).toFixed(0)} s: ${passes} of ${PARTS.length} parts pass` +
+    $('progress').textContent = `done in ${((performance.now() - started) / MS_PER_SECOND).toFixed(0)} s: ${passes} of ${PARTS.length} parts pass` +
       `${unchecked ? `, ${unchecked} not checked here` : ''}`;
     window.check = {
       done: true,

@@ -6,14 +6,15 @@
 // CheckInputError whose message says what to do.
 import { unzip } from '../node_modules/fflate/esm/browser.js';
 import { partsFound, titleOfPage } from '../grader/core/part-names.js';
+import { KIB } from '../grader/core/units.js';
 
 /** More than this is not a worksheet (a course folder, videos, node_modules?). */
-export const MAX_BYTES = 100 * 1024 * 1024;
+export const MAX_BYTES = 100 * KIB * KIB;
 export const MAX_FILES = 5000;
 
 export class CheckInputError extends Error {}
 
-const mb = (n) => `${(n / 1024 / 1024).toFixed(n < 10 * 1024 * 1024 ? 1 : 0)} MB`;
+const mb = (n) => `${(n / KIB / KIB).toFixed(n < 10 * KIB * KIB ? 1 : 0)} MB`;
 const skipped = (segments) => segments.some((s) => s.startsWith('.') || s === 'node_modules' || s === '__MACOSX');
 
 /**

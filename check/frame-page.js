@@ -4,6 +4,7 @@
 // check/serve.js: window.__grade (grader/browser/instrument.js), window.__webgpuCapture
 // (grader/browser/webgpu-capture.js), window.__checkClock (grader/browser/clock.js), window.__checkWatch
 // (check/frame-watch.js).
+import { FRAME_MS } from '../grader/core/units.js';
 
 /** keydown, keypress (a character), keyup of `key` at the focused element (or the body) of the frame's window `W`. */
 function pressKey(W, key) {
@@ -67,8 +68,8 @@ export function framePage(frame, log) {
     /** Frozen time advances: a jump to 16·frames before `ms`, then `frames` frames at 60 Hz; returns state() after them. */
     async tick(ms, frames = 2) {
       const clock = win().__checkClock;
-      if (ms > 16 * frames + 8) await clock.fastForward(ms - 16 * frames);
-      await clock.runFor(Math.min(ms, 16 * frames));
+      if (ms > FRAME_MS * frames + FRAME_MS / 2) await clock.fastForward(ms - FRAME_MS * frames);
+      await clock.runFor(Math.min(ms, FRAME_MS * frames));
       await settle();
       return plain(g().state());
     },

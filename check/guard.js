@@ -7,6 +7,7 @@
 // script, a worker), so that the call is never a ReferenceError and a loop is still stopped;
 // frame-watch.js replaces it, and says that the page ran before the self-check's script.
 import { parse } from '../node_modules/acorn/dist/acorn.mjs';
+import { MS_PER_SECOND } from '../grader/core/units.js';
 
 const LOOPS = new Set(['WhileStatement', 'DoWhileStatement', 'ForStatement', 'ForInStatement', 'ForOfStatement']);
 const CALL = '__checkLoop();';
@@ -16,7 +17,7 @@ const CALL = '__checkLoop();';
  */
 export const standIn = (seconds) => 'typeof __checkLoop=="function"||Object.defineProperty(globalThis,"__checkLoop",{configurable:true,value:' +
   'function(n,t,now){return function f(){if(f.hung)throw new Error(f.hung);if(++n&1023)return;var s=now();' +
-  'if(t<0){t=s;setTimeout(function(){t=-1})}else if(s-t>' + 1000 * seconds + ')' +
+  'if(t<0){t=s;setTimeout(function(){t=-1})}else if(s-t>' + MS_PER_SECOND * seconds + ')' +
   'throw new Error(f.hung="a loop ran for "+Math.round((s-t)/1000)+" s without returning (stopped by the self-check)")}}' +
   '(0,-1,performance.now.bind(performance))});';
 

@@ -22,6 +22,7 @@ import { timedOut, notOpened, asFail, graderTrouble } from '../grader/core/audit
 import { referenceQuery, referencePicture, untilDrawn } from '../grader/core/reference-state.js';
 import { deadlineOf } from '../grader/core/deadline.js';
 import { NOT_CHECKED, notCheckedHere } from './not-checked.js';
+import { MS_PER_SECOND } from '../grader/core/units.js';
 
 export const VIEWPORT = 1000;
 
@@ -58,7 +59,7 @@ async function load(stage, src, seconds) {
       if (frame.contentWindow && frame.contentWindow.__checkWatch && frame.contentWindow.__checkWatch.hung) return 'hung';
     }
   })();
-  const how = await Promise.race([loaded, hung, sleep(seconds * 1000).then(() => 'timeout')]);
+  const how = await Promise.race([loaded, hung, sleep(seconds * MS_PER_SECOND).then(() => 'timeout')]);
   return { frame, how };
 }
 
@@ -88,7 +89,7 @@ export async function checkPart({ part, page, session, rubric, stage, progress =
       await session.idle(500, 5000);
       frame.contentWindow.__checkWatch.setLoopSeconds(rubric.timeoutSeconds);
       let timer;
-      const bound = new Promise((resolve) => { timer = setTimeout(() => resolve('timeout'), rubric.timeoutSeconds * 1000); });
+      const bound = new Promise((resolve) => { timer = setTimeout(() => resolve('timeout'), rubric.timeoutSeconds * MS_PER_SECOND); });
       // a loop stopped after loading (in a promise, a frame, a handler) is a page that never returns, as
       // under the grader, whatever was judged meanwhile; the grader's outer bound (core/deadline.js)
       const deadline = deadlineOf(Date.now(), rubric);
@@ -109,7 +110,7 @@ export async function checkPart({ part, page, session, rubric, stage, progress =
   } finally {
     frame.remove();
   }
-  const seconds = (performance.now() - started) / 1000;
+  const seconds = (performance.now() - started) / MS_PER_SECOND;
   const errors = fp.errors();
   const result = {
     part,

@@ -3,6 +3,7 @@
 // report.json says of the state it was drawn at.
 import { nearPointLight } from './measure/point-light.js';
 import { fmt } from './format.js';
+import { FRAME_MS, MS_PER_SECOND } from './units.js';
 
 /**
  * Our reference's light, as the judge fitted the student's (P3–P5): the fitted direction toward the
@@ -47,9 +48,9 @@ const SETTLE = { ms: 500, frames: 30 };
  * not a bound on a student's. Returns whether it shows one.
  */
 export async function untilDrawn(shows, driver, seconds) {
-  for (const until = Date.now() + 1000 * seconds; !(await shows()) && Date.now() < until;) {
+  for (const until = Date.now() + MS_PER_SECOND * seconds; !(await shows()) && Date.now() < until;) {
     await new Promise((resolve) => setTimeout(resolve, 100));
-    await driver.tick(16);
+    await driver.tick(FRAME_MS);
   }
   return shows();
 }

@@ -1,5 +1,6 @@
 // Verdicts and reasons: the checks a part's judging said (each { level, reason }) become one
 // verdict (pass, review, fail) and the reasons a teacher reads, worst first. Plain data.
+import { MILLION } from './units.js';
 
 /**
  * The verdict of a part the browser it was graded in could not run (WebGPU in Firefox ESR), or that
@@ -12,7 +13,7 @@ export const NOT_GRADED = 'not graded here';
 export const tooSlowWords = (rubric, doing) => `too slow on this machine: the rubric's bound of ${rubric.timeoutSeconds} s ran out while ${doing}; nothing was judged (what was done is listed under what the grader did; grade it again on a faster machine, or with a larger timeoutSeconds)`;
 
 /** Why a part whose own work passed the rubric's gatherWork (a count: the same on every machine) is not judged. */
-export const tooHeavyWords = (rubric, doing, work) => `too heavy to grade: the page's own work over the grading (${(work / 1e6).toFixed(0)} million vertices, draw calls at ${rubric.thresholds.drawCallWork} each) passed the rubric's budget of ${(rubric.thresholds.gatherWork / 1e6).toFixed(0)} million (gatherWork) while ${doing}; nothing was judged (what was done is listed under what the grader did; grade it with a larger gatherWork, or at a level the sphere needs)`;
+export const tooHeavyWords = (rubric, doing, work) => `too heavy to grade: the page's own work over the grading (${(work / MILLION).toFixed(0)} million vertices, draw calls at ${rubric.thresholds.drawCallWork} each) passed the rubric's budget of ${(rubric.thresholds.gatherWork / MILLION).toFixed(0)} million (gatherWork) while ${doing}; nothing was judged (what was done is listed under what the grader did; grade it with a larger gatherWork, or at a level the sphere needs)`;
 
 /**
  * A list of checks with the rubric's cost of a mistake: sayAs(id) gives the audit `id`'s

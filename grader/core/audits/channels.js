@@ -2,6 +2,7 @@
 // is read back by the page (the grader's own functions, kept from before the page ran) and taken
 // as the browser shows it (a screenshot from outside the page), and the two must agree.
 import { unit } from './unit.js';
+import { PERCENT } from '../units.js';
 
 /** This module's audits: id → title, the slide's sentence it checks, the artifacts it reads. */
 export const META = {
@@ -19,7 +20,7 @@ export function auditShown({ facts, thresholds, sayAs, imagesShown }) {
   const off = (facts.shown || []).filter((d) => d.compared && d.share > thresholds.shownDifferShare);
   for (const d of off) {
     const when = d.at === 'first' ? 'at the first frame' : 'at the end';
-    say('review', `what the page reads back differs from what the browser shows, ${when}: ${Math.round(100 * d.share)}% of the canvas's opaque pixels in view (another canvas or an element laid over it, or a CSS filter on it?); the browser's picture is shown: a teacher looks`);
+    say('review', `what the page reads back differs from what the browser shows, ${when}: ${Math.round(PERCENT * d.share)}% of the canvas's opaque pixels in view (another canvas or an element laid over it, or a CSS filter on it?); the browser's picture is shown: a teacher looks`);
     if (d.image) imagesShown[`shown${d.at === 'first' ? 'First' : 'Last'}`] = d.image;
   }
   return off.some((d) => d.at === 'first');

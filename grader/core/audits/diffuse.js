@@ -4,6 +4,7 @@ import { nearPointLight, clearlyBetter } from '../measure.js';
 import { fmt } from '../format.js';
 import { SLIDE } from './slides.js';
 import { unit } from './unit.js';
+import { PERCENT } from '../units.js';
 
 /** This module's audits: id → title, the slide's sentence it checks, the artifacts it reads. */
 export const META = {
@@ -76,7 +77,7 @@ export function auditUnclipped({ facts, sayAs, imagesShown }) {
   const u = facts.unclipped;
   if (!u) return;
   imagesShown.unclipped = u.image;
-  say('pass', `note: the picture clips to white over ${fmt(100 * u.before, 0)}% of the sphere, which hides its shading and highlight; they were judged with the page's own slider${u.steps.length > 1 ? 's' : ''} lowered: ${settings(u.steps)} (${fmt(100 * u.after, 0)}% white then)`);
+  say('pass', `note: the picture clips to white over ${fmt(PERCENT * u.before, 0)}% of the sphere, which hides its shading and highlight; they were judged with the page's own slider${u.steps.length > 1 ? 's' : ''} lowered: ${settings(u.steps)} (${fmt(PERCENT * u.after, 0)}% white then)`);
 }
 
 /** Where the picture was too dim to show its shading, the slider the gatherer raised to read it (facts.brightened). */

@@ -8,6 +8,7 @@ import { fmt } from '../format.js';
 import { SLIDE } from './slides.js';
 import { viewFits } from '../computed/evidence.js';
 import { unit } from './unit.js';
+import { PERCENT } from '../units.js';
 
 /** This module's audits: id → title, the slide's sentence it checks, the artifacts it reads. */
 export const META = {
@@ -26,7 +27,7 @@ export function auditHighlight(context, shading, views) {
   const fit = shading.judgedFit;
   const { seen, place } = highlightEvidence(shading, views, facts.raised, images, thresholds);
   numbers.highlightViews = 1 + views.length;
-  if (seen) say('pass', `a specular highlight in ${seen.where} (up to ${fmt(100 * seen.fit.highlightPeak, 0)}% of the way from the diffuse fit to white, ${fmt(seen.fit.highlightRise, 2)} above it)`);
+  if (seen) say('pass', `a specular highlight in ${seen.where} (up to ${fmt(PERCENT * seen.fit.highlightPeak, 0)}% of the way from the diffuse fit to white, ${fmt(seen.fit.highlightRise, 2)} above it)`);
   let later = null;
   if (seen && !shading.nearModel) {
     if (!place) sayAs('highlight-place')('pass', 'note: the highlight\'s place is not judged: it shows only with s lowered to 10 by the page\'s own slider, which makes it too broad to place');
@@ -78,7 +79,7 @@ function unsure(tint, thresholds) {
   const why = [];
   if (tint.slope === null) why.push('no fit that divides the tint out');
   else {
-    if (tint.slope >= thresholds.tintSlope) why.push(`an albedo whose brightness varies by ±${fmt(100 * tint.slope, 0)}% over the sphere`);
+    if (tint.slope >= thresholds.tintSlope) why.push(`an albedo whose brightness varies by ±${fmt(PERCENT * tint.slope, 0)}% over the sphere`);
     if (tint.lightShift > thresholds.tintLightDegrees) why.push(`a light that moves ${fmt(tint.lightShift, 0)}° when the tint is divided out`);
   }
   return why.length ? why.join(' and ') : `a fit of R² under ${thresholds.diffuseR2}`;

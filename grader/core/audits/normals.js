@@ -7,6 +7,7 @@ import { rimAngle } from '../measure/perspective.js';
 import { fmt } from '../format.js';
 import { SLIDE } from './slides.js';
 import { unit } from './unit.js';
+import { RIGHT_ANGLE } from '../units.js';
 
 /** This module's audits: id → title, the slide's sentence it checks, the artifacts it reads. */
 export const META = {
@@ -93,10 +94,10 @@ export function auditPerspective({ thresholds, must, sayAs, numbers }, seen) {
   const rim = rimAngle(samples(img, an, thresholds, { maxRho: thresholds.rimSampleRadius }), far, thresholds);
   if (!rim || rim.rms > thresholds.perspectiveFitDegrees) return;
   numbers.perspective = rim;
-  const short = Math.abs(90 - rim.rimDegrees);
+  const short = Math.abs(RIGHT_ANGLE - rim.rimDegrees);
   const side = far ? 'the inside of the far side, whose normals' : 'the normals';
-  if (short >= 90 - thresholds.orthographicRimDegrees) {
-    say('pass', `in perspective view: ${side} reach ${fmt(rim.rimDegrees, 0)}° from the view direction at the rim, an eye about ${fmt(rim.distance, 1)} sphere radii from the centre (acos(1/d) = ${fmt(90 - short, 0)}°; an orthographic view reaches 90°)`);
+  if (short >= RIGHT_ANGLE - thresholds.orthographicRimDegrees) {
+    say('pass', `in perspective view: ${side} reach ${fmt(rim.rimDegrees, 0)}° from the view direction at the rim, an eye about ${fmt(rim.distance, 1)} sphere radii from the centre (acos(1/d) = ${fmt(RIGHT_ANGLE - short, 0)}°; an orthographic view reaches 90°)`);
   } else {
     say('mistake', `not in perspective view (the slide: "Draw a solid sphere in perspective view"): ${side} reach ${fmt(rim.rimDegrees, 0)}° from the view direction at the rim, as an orthographic view shows them (90°); a perspective view from a distance d shows none past acos(1/d) (71° at d = 3): an orthographic projection, or an eye so far away that it looks the same?`);
   }

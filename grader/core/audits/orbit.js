@@ -6,6 +6,7 @@ import { fmt } from '../format.js';
 import { SLIDE } from './slides.js';
 import { rolesInWords } from '../computed/roles.js';
 import { unit } from './unit.js';
+import { HALF_TURN } from '../units.js';
 
 /** This module's audits: id → title, the slide's sentence it checks, the artifacts it reads. */
 export const META = {
@@ -15,11 +16,12 @@ export const META = {
 };
 
 const signedAngle = (a, b) =>
-  (180 / Math.PI) *
+  (HALF_TURN / Math.PI) *
   Math.acos(
     Math.max(-1, Math.min(1, (a[0] * b[0] + a[1] * b[1] + a[2] * b[2]) / (Math.hypot(...a) * Math.hypot(...b)))),
   );
-const angle = (a, b) => (180 / Math.PI) * Math.acos(Math.min(1, Math.abs(a[0] * b[0] + a[1] * b[1] + a[2] * b[2])));
+const angle = (a, b) =>
+  (HALF_TURN / Math.PI) * Math.acos(Math.min(1, Math.abs(a[0] * b[0] + a[1] * b[1] + a[2] * b[2])));
 
 /** The orbit restarted to look at the shading would not stop again. */
 export function auditOrbitStopsAgain({ facts, sayAs }) {

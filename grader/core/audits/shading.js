@@ -5,6 +5,7 @@ import { analyse, darkSpots, shadingChange, unnormalisedInputs } from '../measur
 import { fmt } from '../format.js';
 import { SLIDE } from './slides.js';
 import { unit } from './unit.js';
+import { PERCENT } from '../units.js';
 
 /** This module's audits: id → title, the slide's sentence it checks, the artifacts it reads. */
 export const META = {
@@ -27,7 +28,7 @@ export function auditLeastShininess({ facts, images, thresholds, sayAs, numbers,
   imagesShown.leastS = least.image;
   // the slides do not ask for s = 0: the spots are worth telling the student, as a note
   if (spots.share >= thresholds.darkSpotShare && spots.count >= thresholds.darkSpotCount) {
-    say('pass', `note: s = ${least.value} gives black spots inside the sphere (${fmt(100 * spots.share, 1)}% of it darker than diffuse + ambient): pow(0, 0) is undefined (black on many GPUs); guard it (e.g. cos φ > 0 ? pow(cos φ, s) : 0)`);
+    say('pass', `note: s = ${least.value} gives black spots inside the sphere (${fmt(PERCENT * spots.share, 1)}% of it darker than diffuse + ambient): pow(0, 0) is undefined (black on many GPUs); guard it (e.g. cos φ > 0 ? pow(cos φ, s) : 0)`);
   } else say('pass', `s = ${least.value} leaves no dark spots inside the sphere (pow(0, 0) guarded)`);
 }
 

@@ -6,6 +6,7 @@ import { rolesInWords } from '../computed/roles.js';
 import { sphereView } from '../computed/evidence.js';
 import { analyse } from '../measure.js';
 import { unit, end } from './unit.js';
+import { PERCENT, THOUSAND } from '../units.js';
 
 /** This module's audits: id → title, the slide's sentence it checks, the artifacts it reads. */
 export const META = {
@@ -31,7 +32,7 @@ export function auditLevelControls({ facts, thresholds, must, sayAs }) {
 export function auditHeavyLevel({ facts, sayAs }) {
   const say = sayAs('heavy-level');
   const last = facts.ladder[facts.ladder.length - 1];
-  if (facts.heavyLevel) say('pass', `note: the last level reached draws ${fmt(facts.heavyLevel / 1000, 0)}k vertices a frame; with the sphere round to ${fmt(100 * last.roundness, 1)}% there, no finer level was tried (each has four times the triangles)`);
+  if (facts.heavyLevel) say('pass', `note: the last level reached draws ${fmt(facts.heavyLevel / THOUSAND, 0)}k vertices a frame; with the sphere round to ${fmt(PERCENT * last.roundness, 1)}% there, no finer level was tried (each has four times the triangles)`);
 }
 
 /**

@@ -3,6 +3,7 @@
 // turned between two views. Pure: the orbit's gathering reads it to sample until the camera has
 // turned enough to tell a light in the world from one that moves with the camera, and the orbit's
 // audit to weigh the lit side's turn against the camera's.
+import { HALF_TURN, MAT4_ENTRIES, MILLIONTHS } from '../units.js';
 
 /** The animated 4×4 matrices in `sent` ({ key: [16 numbers] }), or null where none is. */
 export function cameraOf(sent, animated) {
@@ -10,7 +11,9 @@ export function cameraOf(sent, animated) {
   const out = {};
   for (const k of animated) {
     const v = String(sent[k] || '').split(',').map(Number);
-    if (v.length === 16 && v.every(Number.isFinite)) out[k] = v.map((x) => Math.round(x * 1e6) / 1e6);
+    if (v.length === MAT4_ENTRIES && v.every(Number.isFinite)) {
+      out[k] = v.map((x) => Math.round(x * MILLIONTHS) / MILLIONTHS);
+    }
   }
   return Object.keys(out).length ? out : null;
 }
@@ -40,7 +43,7 @@ function rotationOf(m, tolerance) {
 function turnBetween(a, b) {
   let trace = 0;
   for (let i = 0; i < 3; i++) for (let k = 0; k < 3; k++) trace += a[i][k] * b[i][k]; // trace(a bᵀ)
-  return (180 / Math.PI) * Math.acos(Math.max(-1, Math.min(1, (trace - 1) / 2)));
+  return (HALF_TURN / Math.PI) * Math.acos(Math.max(-1, Math.min(1, (trace - 1) / 2)));
 }
 
 /**

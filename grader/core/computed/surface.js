@@ -5,6 +5,7 @@
 // the samples). No guess from the silhouette: where the page could not be drawn again, `why` says so.
 import { solveNormal } from '../measure/linear.js';
 import { dot, cross, unit } from '../measure/vectors.js';
+import { CHANNEL_MAX, HALF_TURN } from '../units.js';
 
 /** x of A x = b for a small square system (linear.js's elimination); null where singular. */
 export const solve = (A, b) => solveNormal(A.flat(), b, b.length);
@@ -75,17 +76,17 @@ export function surfaceOf(surface, images, thresholds) {
     for (let x = 0; x < width; x += step) {
       const o = 4 * (y * width + x), a = nImg.data[o + 3];
       if (!a) continue;
-      const n = unit([0, 1, 2].map((k) => (2 * nImg.data[o + k]) / 255 - 1));
+      const n = unit([0, 1, 2].map((k) => (2 * nImg.data[o + k]) / CHANNEL_MAX - 1));
       if (!n) continue;
-      const p = [0, 1, 2].map((k) => lo[k] + ((hi[k] - lo[k]) * pImg.data[o + k]) / 255);
+      const p = [0, 1, 2].map((k) => lo[k] + ((hi[k] - lo[k]) * pImg.data[o + k]) / CHANNEL_MAX);
       const w_o = camera.eye
         ? unit([camera.eye[0] - p[0], camera.eye[1] - p[1], camera.eye[2] - p[2]])
         : camera.towards;
-      samples.push({ x, y, p, n, front: a === 255, w_o });
+      samples.push({ x, y, p, n, front: a === CHANNEL_MAX, w_o });
     }
   }
   return { width, height, position: surface.position, normal: surface.normal, clip, camera, samples };
 }
 
 /** The angle in degrees between unit vectors a and b. */
-export const degreesBetween = (a, b) => (Math.acos(Math.max(-1, Math.min(1, dot(a, b)))) * 180) / Math.PI;
+export const degreesBetween = (a, b) => (Math.acos(Math.max(-1, Math.min(1, dot(a, b)))) * HALF_TURN) / Math.PI;

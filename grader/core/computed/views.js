@@ -3,6 +3,7 @@
 // how long to sample the orbit, the audits to judge the views kept.
 import { analyse, samples, shadeFit } from '../measure.js';
 import { memo } from './memo.js';
+import { HALF_TURN } from '../units.js';
 
 /**
  * { an, fit, lit } for a picture: `fit` over a sparse fitSamples samples. A light from the eye's side
@@ -25,4 +26,4 @@ export const fullFit = memo((img, thresholds) => {
 });
 
 /** The light's angle from the viewer (+z), in degrees. */
-export const lightAngle = (f) => (180 / Math.PI) * Math.acos(Math.max(-1, Math.min(1, f.light[2])));
+export const lightAngle = (f) => (HALF_TURN / Math.PI) * Math.acos(Math.max(-1, Math.min(1, f.light[2])));

@@ -8,6 +8,7 @@
 // outline is kept as numbers, the first with a gap as a picture; the audit (auditAllRound) judges them.
 import { cameraTurn } from '../computed/camera.js';
 import { readCamera, orbitSampleFrames } from './orbit.js';
+import { FULL_TURN, MS_PER_SECOND } from '../units.js';
 
 /** Looks at the sphere all round its orbit where its mesh cannot be read: sets facts.allRound. */
 export async function lookAllRound(session) {
@@ -24,8 +25,8 @@ export async function lookAllRound(session) {
   // frames a step: at most an orbit sample's (orbit.js), at least one
   const most = () => Math.max(1, orbitSampleFrames(session));
   let frames = thresholds.roundFirstFrames;
-  for (let k = 0; k < thresholds.roundSamples && !(turned >= 360); k++) {
-    await session.tick((1000 * frames) / thresholds.framesPerSecond, frames);
+  for (let k = 0; k < thresholds.roundSamples && !(turned >= FULL_TURN); k++) {
+    await session.tick((MS_PER_SECOND * frames) / thresholds.framesPerSecond, frames);
     const sh = await session.shot();
     await readCamera(session);
     const step = turned !== null ? cameraTurn([last, session.camera], thresholds.cameraRotationTolerance) : null;

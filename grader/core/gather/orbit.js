@@ -8,6 +8,7 @@ import { litView } from '../computed/views.js';
 import { readGeometry, readSent } from './geometry.js';
 import { cameraOf, cameraTurn } from '../computed/camera.js';
 import { fmt } from '../format.js';
+import { MS_PER_SECOND } from '../units.js';
 
 /** Is `img` a lit view? Lit views are kept (`orbiting`: seen while the camera orbits). */
 export function look(session, img, { orbiting = true, keep = true } = {}) {
@@ -41,7 +42,7 @@ export const orbitSampleFrames = (session) =>
 // runs more frames as the search goes on, up to orbitSampleFrames
 export const tickOrbit = async (session, k) => {
   await session.tick(
-    session.thresholds.orbitSampleSeconds * 1000,
+    session.thresholds.orbitSampleSeconds * MS_PER_SECOND,
     Math.max(
       session.thresholds.orbitSampleLeastFrames,
       Math.min(session.thresholds.orbitSampleFirstFrames << k, orbitSampleFrames(session)),

@@ -8,6 +8,7 @@
 import { recording } from './reads.js';
 import { analyse, pictureChange } from '../measure.js';
 import { describe, effectOf } from '../controls.js';
+import { HUNDREDTHS, MS_PER_SECOND } from '../units.js';
 
 /** The wall clock's outer bound ran out while `doing`. */
 export class TooSlow extends Error {
@@ -78,7 +79,8 @@ export function openSession(page, { part, rubric, progress = () => {}, deadline 
       const w = facts.work;
       session.frameWork = ((s.vertices - w.vertices) + thresholds.drawCallWork * (s.draws - w.draws)) / (frames + 1);
       const a = s.animation, ran = a ? a.count - session.animationFrames : 0;
-      if (ran > 0) session.frameDraws = { loops: a.loops, draws: Math.round((100 * (s.draws - w.draws)) / ran) / 100 };
+      const perFrame = (HUNDREDTHS * (s.draws - w.draws)) / ran;
+      if (ran > 0) session.frameDraws = { loops: a.loops, draws: Math.round(perFrame) / HUNDREDTHS };
       if (a) session.animationFrames = a.count;
       Object.assign(w, { frames: w.frames + frames + 1, draws: s.draws, vertices: s.vertices });
       const spent = w.vertices + thresholds.drawCallWork * w.draws;
@@ -86,7 +88,7 @@ export function openSession(page, { part, rubric, progress = () => {}, deadline 
     },
     /** What the page awaits in real time (fetches, WebGPU requests), waited for within firstFrameSeconds; no frame runs meanwhile. */
     async settle() {
-      const until = Date.now() + rubric.firstFrameSeconds * 1000;
+      const until = Date.now() + rubric.firstFrameSeconds * MS_PER_SECOND;
       for (;;) {
         const s = await page.state();
         if (!s.pending || Date.now() > until) return s;

@@ -8,6 +8,7 @@
 import { samples } from '../measure.js';
 import { luminance } from '../measure/samples.js';
 import { groupsOf, setGroup, least, greatest } from './params.js';
+import { PERCENT, THOUSANDTHS } from '../units.js';
 
 /** The page's free parameter groups for `roles` that are sliders or numbers (not colour pickers), in the order of `roles`. */
 function numericGroups(session, controls, roles) {
@@ -40,7 +41,7 @@ export async function unclip(session, controls, img, an) {
     const g = groups[k % groups.length];
     const vs = await setGroup(session, g, (c) => {
       const lo = least(c), v = Number(session.now(c));
-      return Math.round(1000 * (lo + (v - lo) / 2)) / 1000;
+      return Math.round(THOUSANDTHS * (lo + (v - lo) / 2)) / THOUSANDTHS;
     });
     g.controls.forEach((c, i) => session.values.set(c.index, vs[i]));
     await session.tick(session.thresholds.actionTickMs);
@@ -49,7 +50,7 @@ export async function unclip(session, controls, img, an) {
     shot = sh;
     share = clippedShare(sh.img, an, thresholds);
     steps.push({ role: g.role, control: g.controls[0].index, value: vs[0] });
-    session.act(`set the ${g.role} slider to ${vs[0]} (the picture clipped to white over ${Math.round(100 * before)}% of the sphere; now ${Math.round(100 * share)}%)`);
+    session.act(`set the ${g.role} slider to ${vs[0]} (the picture clipped to white over ${Math.round(PERCENT * before)}% of the sphere; now ${Math.round(PERCENT * share)}%)`);
   }
   if (!shot) return null;
   facts.unclipped = { before, after: share, steps, image: session.keep('unclipped', shot.img) };

@@ -1,5 +1,6 @@
 // What changed between two pictures: the silhouette (a level), the outline's pixels (a level at
 // a fine mesh), the shading inside (a material or light), or anything (the orbit).
+import { RGB_MAX } from '../units.js';
 
 /**
  * How much the silhouette changed between two pictures: the relative change of its area, or of
@@ -40,8 +41,8 @@ export function shadingChange(imgA, anA, imgB, anB, thresholds) {
     const x = p % w, y = (p - x) / w;
     if (Math.hypot(x + 0.5 - anB.cx, y + 0.5 - anB.cy) > maxRho * anB.radius) continue;
     const o = 4 * p;
-    const ya = (imgA.data[o] + imgA.data[o + 1] + imgA.data[o + 2]) / 765,
-      yb = (imgB.data[o] + imgB.data[o + 1] + imgB.data[o + 2]) / 765;
+    const ya = (imgA.data[o] + imgA.data[o + 1] + imgA.data[o + 2]) / RGB_MAX,
+      yb = (imgB.data[o] + imgB.data[o + 1] + imgB.data[o + 2]) / RGB_MAX;
     sum += (ya - yb) ** 2;
     n++;
   }

@@ -1,5 +1,6 @@
 // P4/P5, s lowered to 0: pixels that went dark where the Phong model cannot darken (pow(0, 0) holes).
 import { samples } from './samples.js';
+import { RGB_MAX } from '../units.js';
 
 /**
  * Dark spots: pixels inside the sphere that a change of s made much darker than they were, and
@@ -15,8 +16,8 @@ export function darkSpots(img, an, after, fit, thresholds) {
   let dark = 0, n = 0;
   for (const s of samples(img, an, thresholds)) {
     const o = 4 * (s.y * w + s.x);
-    const before = (img.data[o] + img.data[o + 1] + img.data[o + 2]) / 765;
-    const now = (after.data[o] + after.data[o + 1] + after.data[o + 2]) / 765;
+    const before = (img.data[o] + img.data[o + 1] + img.data[o + 2]) / RGB_MAX;
+    const now = (after.data[o] + after.data[o + 1] + after.data[o + 2]) / RGB_MAX;
     const pred =
       fit.ambient + fit.diffuse * Math.max(0, s.n[0] * fit.light[0] + s.n[1] * fit.light[1] + s.n[2] * fit.light[2]);
     n++;

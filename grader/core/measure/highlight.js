@@ -1,6 +1,7 @@
 // P4/P5: the specular highlight above a model of the diffuse brightness: how far it rises, where
 // it sits against the half vector, and whether it is seen at all.
 import { luminance } from './samples.js';
+import { HALF_TURN } from '../units.js';
 
 /**
  * The highlight above a model of the diffuse brightness (`predict(n)`): the largest rise of a
@@ -52,7 +53,7 @@ export function highlightOffset(highlightNormal, light, toViewer = 1) {
   const len = Math.hypot(...h);
   if (len < 1e-6) return null; // the light straight behind: no half vector
   const c = (highlightNormal[0] * h[0] + highlightNormal[1] * h[1] + highlightNormal[2] * h[2]) / len;
-  return (180 / Math.PI) * Math.acos(Math.max(-1, Math.min(1, c)));
+  return (HALF_TURN / Math.PI) * Math.acos(Math.max(-1, Math.min(1, c)));
 }
 
 /**

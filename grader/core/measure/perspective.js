@@ -3,8 +3,9 @@
 // perspective view from a distance d (in sphere radii) shows none past acos(1/d), and the normals
 // inside are drawn nearer the view direction in proportion. One number, the rim's angle, fitted to
 // every decoded normal, not read off the few pixels at the edge.
+import { HALF_TURN, RIGHT_ANGLE } from '../units.js';
 
-const DEG = 180 / Math.PI;
+const DEG = HALF_TURN / Math.PI;
 
 /**
  * The angle from the view axis of the normal seen at screen radius `rho` (a share of the
@@ -54,7 +55,7 @@ export function rimAngle(pts, far, thresholds) {
     if (!best || e < best.e) best = { deg, e };
   }
   return {
-    rimDegrees: far ? 90 + best.deg : 90 - best.deg,
+    rimDegrees: far ? RIGHT_ANGLE + best.deg : RIGHT_ANGLE - best.deg,
     distance: best.deg > 0 ? 1 / Math.sin(best.deg / DEG) : Infinity,
     rms: DEG * Math.sqrt(best.e / seen.length),
     count: seen.length,

@@ -1,5 +1,6 @@
 // Samples of the sphere inside its silhouette: each pixel's colour (0..1) and the normal a sphere
 // has there, seen by an orthographic or a perspective camera; and a colour's brightness.
+import { CHANNEL_MAX, FULL_TURN } from '../units.js';
 
 /**
  * Interior samples: pixel colour (0..1) and the view-space normal a sphere has there, within
@@ -20,7 +21,8 @@ export function samples(img, an, thresholds, { maxRho = thresholds.sampleRadius,
       const nx = (x + 0.5 - an.cx) / r, ny = -(y + 0.5 - an.cy) / r, rho2 = nx * nx + ny * ny;
       if (rho2 > maxRho * maxRho) continue;
       const o = 4 * p;
-      out.push({ x, y, n: [nx, ny, Math.sqrt(1 - rho2)], c: [data[o] / 255, data[o + 1] / 255, data[o + 2] / 255] });
+      const c = [data[o] / CHANNEL_MAX, data[o + 1] / CHANNEL_MAX, data[o + 2] / CHANNEL_MAX];
+      out.push({ x, y, n: [nx, ny, Math.sqrt(1 - rho2)], c });
     }
   }
   return out;
@@ -32,7 +34,7 @@ export function samples(img, an, thresholds, { maxRho = thresholds.sampleRadius,
  * sphere's radius on screen; each pixel's ray meets the unit sphere at x, and n = x.
  */
 export function perspectiveSamples(img, an, thresholds, opts = {}) {
-  const t = Math.tan((thresholds.pointLightFovy * Math.PI) / 360) / (img.height / 2);
+  const t = Math.tan((thresholds.pointLightFovy * Math.PI) / FULL_TURN) / (img.height / 2);
   const D = 1 / Math.sin(Math.atan(an.radius * t));
   return samples(img, an, thresholds, opts).map((s) => {
     const dx = (s.x + 0.5 - an.cx) * t, dy = -(s.y + 0.5 - an.cy) * t, len = Math.hypot(dx, dy, 1);

@@ -3,6 +3,7 @@
 // is opaque they agree, but for the engine's rounding and the blur of a canvas placed at a fraction
 // of a pixel or shown scaled; a canvas or an element laid over it, or a CSS filter on it, shows
 // something else than what is read back.
+import { CHANNEL_MAX } from '../units.js';
 
 /**
  * Of the shown picture's pixels whose canvas pixel is opaque, how many differ from it by more than
@@ -20,7 +21,7 @@ function differing(raw, shown, box, clip, dx, dy, limit, step) {
       const rx = Math.floor((clip.x + u + 0.5 + dx - box.x) * kx);
       if (rx < 0 || rx >= raw.width) continue;
       const o = 4 * (ry * raw.width + rx);
-      if (raw.data[o + 3] !== 255) continue;
+      if (raw.data[o + 3] !== CHANNEL_MAX) continue;
       const s = 4 * (v * shown.width + u);
       opaque++;
       if (

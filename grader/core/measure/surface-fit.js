@@ -11,6 +11,7 @@
 import { solveNormal } from './linear.js';
 import { DIRS } from './directions.js';
 import { dot, unit } from './vectors.js';
+import { CHANNEL_MAX } from '../units.js';
 
 /**
  * The samples with the picture's colour at each ([0, 1] a channel). Front and back faces alike: a
@@ -20,7 +21,7 @@ export function coloured(samples, img) {
   const out = [];
   for (const s of samples) {
     const o = 4 * (s.y * img.width + s.x);
-    out.push({ ...s, c: [img.data[o] / 255, img.data[o + 1] / 255, img.data[o + 2] / 255] });
+    out.push({ ...s, c: [img.data[o] / CHANNEL_MAX, img.data[o + 1] / CHANNEL_MAX, img.data[o + 2] / CHANNEL_MAX] });
   }
   return out;
 }

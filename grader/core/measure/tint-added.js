@@ -9,6 +9,7 @@
 import { diffuseFit } from './diffuse.js';
 import { leastSquares, symmetricEigenvalues3 } from './linear.js';
 import { dot, cross } from './vectors.js';
+import { HALF_TURN } from '../units.js';
 
 const det = (A) => dot(A[0], cross(A[1], A[2]));
 const clipped = (s, thresholds) =>
@@ -106,7 +107,7 @@ export function addedTintFit(pts, thresholds) {
   }
   const r2 = channelsR2(use, lit, turned).r2;
   const both = channelsR2(use, lit, turned, { times: true });
-  const turn = (180 / Math.PI) * Math.acos(Math.max(-1, Math.min(1, (R[0][0] + R[1][1] + R[2][2] - 1) / 2)));
+  const turn = (HALF_TURN / Math.PI) * Math.acos(Math.max(-1, Math.min(1, (R[0][0] + R[1][1] + R[2][2] - 1) / 2)));
   return {
     ...fit,
     added: {

@@ -10,6 +10,7 @@ import { diffuseFit } from './diffuse.js';
 import { highlightSeen } from './highlight.js';
 import { leastSquares, solveNormal, symmetricEigenvalues3 } from './linear.js';
 import { addedTintFit, addedClearly } from './tint-added.js';
+import { HALF_TURN, MAT4_ENTRIES } from '../units.js';
 
 // a pixel clipped at white (a channel at clippedLevel) or nearly black (its channels' sum at darkSum) says little of its hue
 const usable = (s, thresholds) =>
@@ -63,7 +64,8 @@ function albedoAndLighting(use, l, q0, a0, b0, iterations) {
   const m = use.length;
   const xs = new Float64Array(m);
   for (let i = 0; i < m; i++) { const n = use[i].n; xs[i] = Math.max(0, n[0] * l[0] + n[1] * l[1] + n[2] * l[2]); }
-  const N4 = new Float64Array(16), v4 = new Float64Array(4), N2 = new Float64Array(4), v2 = new Float64Array(2);
+  const N4 = new Float64Array(MAT4_ENTRIES), v4 = new Float64Array(4);
+  const N2 = new Float64Array(4), v2 = new Float64Array(2);
   const r = new Float64Array(4);
   for (let it = 0; it < iterations; it++) {
     // the albedo with the lighting fixed: y ≈ L·(α + α q·n)
@@ -132,7 +134,7 @@ export function detintedFit(pts, thresholds, plain = diffuseFit(pts, thresholds)
 }
 
 const angleOf = (a, b) =>
-  (180 / Math.PI) * Math.acos(Math.max(-1, Math.min(1, a[0] * b[0] + a[1] * b[1] + a[2] * b[2])));
+  (HALF_TURN / Math.PI) * Math.acos(Math.max(-1, Math.min(1, a[0] * b[0] + a[1] * b[1] + a[2] * b[2])));
 
 /**
  * The shading fit every reader of a lit picture uses: diffuseFit, and where the hue turns with the

@@ -6,6 +6,7 @@
 import { PNG } from 'pngjs';
 import { gradedPageScripts } from './graded-page-scripts.js';
 import { serveSubmission, urlOf } from './serve-submission.js';
+import { FRAME_MS } from '../../core/units.js';
 
 /**
  * Opens the parts a worker grades, one after another, in one browser context and page: each part
@@ -152,7 +153,7 @@ export function pageDriver(page, log) {
       await window.__checkClock.runFor(run);
       if (window.__webgpuCapture) await window.__webgpuCapture.settled();
       return window.__grade.state();
-    }, [ms > 16 * frames + 8 ? ms - 16 * frames : 0, Math.min(ms, 16 * frames)]),
+    }, [ms > FRAME_MS * frames + FRAME_MS / 2 ? ms - FRAME_MS * frames : 0, Math.min(ms, FRAME_MS * frames)]),
     /** The grader's experiment: WebGL draws with back-face culling off (true) or as the page set it (false). */
     setNoCull: (on) => page.evaluate((v) => { window.__grade.noCull = v; }, on),
     sources: () => page.evaluate(() => ({ glsl: window.__grade.glsl, wgsl: window.__grade.wgsl })),
