@@ -3,11 +3,11 @@
 // faces clockwise seen from outside, so with back faces culled the near side goes: DESIGN.md, "A
 // trap"), a mesh with holes, a colour or normal per face where the slides ask n = p per vertex
 // (WP04P1/P2), and a page that draws more every frame while nothing is touched.
-
-const pct = (x) => `${Math.round(PERCENT * x)}%`;
 import { SLIDE } from './slides.js';
 import { unit } from './unit.js';
 import { PERCENT } from '../units.js';
+
+const pct = (x) => `${Math.round(PERCENT * x)}%`;
 
 /** This module's audits: id → title, the slide's sentence it checks, the artifacts it reads. */
 export const META = {
