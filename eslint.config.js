@@ -2,6 +2,7 @@
 // Node globals for tools, tests and configs.
 import js from '@eslint/js';
 import globals from 'globals';
+import codeLength from './tools/eslint/code-length.js';
 
 // the grader owns what it runs (its browser launchers included): nothing in grader/ or check/ comes from tools/
 // the grader's core runs in Node and in the browser alike: its own modules only
@@ -78,6 +79,13 @@ export default [
       'max-len': ['error', { code: 120, ignoreStrings: true, ignoreTemplateLiterals: true, ignoreRegExpLiterals: true, ignoreComments: true, ignoreUrls: true }],
       curly: ['error', 'multi-line'],
     },
+  },
+  // in the grader's core, every line of code within 120 characters, however short a string it holds
+  // (max-len's ignoreStrings passes the whole line): tools/eslint/code-length.js
+  {
+    files: ['grader/core/**'],
+    plugins: { local: { rules: { 'code-length': codeLength } } },
+    rules: { 'local/code-length': ['error', { code: 120 }] },
   },
   // a module a maintainer reads in one sitting, a function on one screen; the functions
   // still to split say so where they are (eslint-disable-next-line, with why)

@@ -8,6 +8,11 @@
 //      older names (MUST_RENAMED in core/rubric.js) (today's)
 import { mustIds } from './rubric.js';
 
+// a rubric key that lists a part's musts (parts.WP04P3.must)
+const mustKey = (k) => /^parts\.[^.]+\.must$/.test(k);
+/** An object with each value v at key k replaced by f(v, k), in the same key order. */
+const mapValues = (o, f) => Object.fromEntries(Object.entries(o).map(([k, v]) => [k, f(v, k)]));
+
 /** The shape the grader writes and audits. */
 export const ARTIFACT_SCHEMA = 3;
 
@@ -15,11 +20,13 @@ export const ARTIFACT_SCHEMA = 3;
 const UPGRADES = {
   1: (facts) => ({
     ...facts,
-    ...(facts.roles ? { roles: Object.fromEntries(Object.entries(facts.roles).map(([role, r]) => [role, typeof r === 'string' ? { words: r } : r])) } : {}),
+    ...(facts.roles ? { roles: mapValues(facts.roles, (r) => (typeof r === 'string' ? { words: r } : r)) } : {}),
   }),
   2: (facts) => ({
     ...facts,
-    ...(facts.gatheredWith ? { gatheredWith: Object.fromEntries(Object.entries(facts.gatheredWith).map(([k, v]) => [k, /^parts\.[^.]+\.must$/.test(k) && Array.isArray(v) ? mustIds(v) : v])) } : {}),
+    ...(facts.gatheredWith
+      ? { gatheredWith: mapValues(facts.gatheredWith, (v, k) => (mustKey(k) && Array.isArray(v) ? mustIds(v) : v)) }
+      : {}),
   }),
 };
 

@@ -67,7 +67,14 @@ export function effectOf({ before, after, later, wasMoving }, thresholds) {
   }
   // at a high level: a few outline pixels flip, all of them at the outline, and the area moves with them
   const f = outlineFlips(before.an, after.an, thresholds);
-  if (f && f.flips >= thresholds.outlineFlips && f.atOutline >= thresholds.outlineFlipsAtEdge * f.flips && Math.abs(f.area) >= Math.max(thresholds.outlineAreaLeast, thresholds.outlineAreaPerFlip * f.flips)) return f.area > 0 ? 'finer' : 'coarser';
+  if (
+    f &&
+    f.flips >= thresholds.outlineFlips &&
+    f.atOutline >= thresholds.outlineFlipsAtEdge * f.flips &&
+    Math.abs(f.area) >= Math.max(thresholds.outlineAreaLeast, thresholds.outlineAreaPerFlip * f.flips)
+  ) {
+    return f.area > 0 ? 'finer' : 'coarser';
+  }
   return pictureChange(before.img, after.img, thresholds) > thresholds.pictureChanged ? 'shading' : 'none';
 }
 
@@ -127,7 +134,16 @@ export function parameterGroups(controls, patterns) {
   const settable = controls.filter(isSetting);
   const grouped = new Map(); // control index → group
   // (a handler's channel counts where its stem names the parameter, or the three carry the same words)
-  const sameWords = (xs) => new Set(xs.map((x) => String(x.c.text || '').replace(/[([]?\b([012]|[rgbxyz])\b[)\]]?/gi, '').replace(/[\s\d.:=]+/g, ' ').trim().toLowerCase())).size === 1;
+  const sameWords = (xs) =>
+    new Set(
+      xs.map((x) =>
+        String(x.c.text || '')
+          .replace(/[([]?\b([012]|[rgbxyz])\b[)\]]?/gi, '')
+          .replace(/[\s\d.:=]+/g, ' ')
+          .trim()
+          .toLowerCase(),
+      ),
+    ).size === 1;
   const handlerOk = (stem, xs) => !!nameRole({ index: -1, type: 'range', id: stem, text: stem }, patterns) || sameWords(xs);
   // where a channel is read: the id, the name, the text (each by channelOf), the handler (handlerChannelOf)
   const readers = [
@@ -165,7 +181,10 @@ export function parameterGroups(controls, patterns) {
     if (g && g.controls[0] !== c) continue;
     const group = g || { controls: [c], stem: null, channels: null };
     const asSlider = (x) => ({ ...x, type: 'range' });
-    group.role = (g ? [{ index: -1, type: 'range', id: g.stem, text: g.stem }, ...g.controls] : [c]).map((x) => nameRole(asSlider(x), patterns)).find(Boolean) || null;
+    group.role =
+      (g ? [{ index: -1, type: 'range', id: g.stem, text: g.stem }, ...g.controls] : [c])
+        .map((x) => nameRole(asSlider(x), patterns))
+        .find(Boolean) || null;
     out.push(group);
   }
   return out;
@@ -173,7 +192,9 @@ export function parameterGroups(controls, patterns) {
 
 /** How a group of sliders is named in the report: its one control, or its stem and channels. */
 export function describeGroup(g) {
-  return g.controls.length === 1 ? describe(g.controls[0]) : `the ${g.controls.length} "${g.stem}" sliders (${g.channels}: ${g.controls.map((c) => (c.id ? `#${c.id}` : describe(c))).join(', ')}) together`;
+  return g.controls.length === 1
+    ? describe(g.controls[0])
+    : `the ${g.controls.length} "${g.stem}" sliders (${g.channels}: ${g.controls.map((c) => (c.id ? `#${c.id}` : describe(c))).join(', ')}) together`;
 }
 
 /**

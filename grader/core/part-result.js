@@ -39,7 +39,12 @@ export const asking = (r) => findingsOfResult(r).filter(asks);
 
 /** The verdict and its reasons from a part's judging ({ fail, failId, checks }) and the page's errors. */
 export function judgement(judged, errors = []) {
-  const findings = findingsOf({ fail: judged.fail, failId: judged.failId, checks: judged.checks, pageErrors: errors.filter((e) => /page error/.test(e)) });
+  const findings = findingsOf({
+    fail: judged.fail,
+    failId: judged.failId,
+    checks: judged.checks,
+    pageErrors: errors.filter((e) => /page error/.test(e)),
+  });
   return withFindings({ verdict: verdictOf(judged.checks, judged.fail) }, findings);
 }
 

@@ -16,14 +16,24 @@ export function referenceLight(numbers, thresholds) {
   if (!fit || !fit.light) return {};
   const pl = numbers.pointLight;
   const xyz = (v) => ({ lx: fmt(v[0], 3), ly: fmt(v[1], 3), lz: fmt(v[2], 3) });
-  if (pl && nearPointLight(pl, thresholds) === 'falloff') return { light: 'point', ...xyz(pl.falloff.light.map((v) => v * pl.falloff.distance)) };
+  if (pl && nearPointLight(pl, thresholds) === 'falloff') {
+    return { light: 'point', ...xyz(pl.falloff.light.map((v) => v * pl.falloff.distance)) };
+  }
   return { light: 'directional', ...xyz(fit.light.map((v) => -v)) };
 }
 
 /** The query our part is opened with: the student's canvas size, no orbit, the fitted light, and the rubric's own extras. */
 export function referenceQuery({ width, height }, numbers, thresholds, extra = {}) {
   const fitted = referenceLight(numbers, thresholds);
-  return new URLSearchParams({ api: 'webgl2', size: width, height, orbit: 0, ...(fitted.light ? { angle: 0 } : {}), ...fitted, ...extra });
+  return new URLSearchParams({
+    api: 'webgl2',
+    size: width,
+    height,
+    orbit: 0,
+    ...(fitted.light ? { angle: 0 } : {}),
+    ...fitted,
+    ...extra,
+  });
 }
 
 /** The state our reference was drawn at, for report.json: its light (and where it came from) and level. */

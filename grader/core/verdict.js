@@ -13,7 +13,8 @@ export const NOT_GRADED = 'not graded here';
 export const tooSlowWords = (rubric, doing) => `too slow on this machine: the rubric's bound of ${rubric.timeoutSeconds} s ran out while ${doing}; nothing was judged (what was done is listed under what the grader did; grade it again on a faster machine, or with a larger timeoutSeconds)`;
 
 /** Why a part whose own work passed the rubric's gatherWork (a count: the same on every machine) is not judged. */
-export const tooHeavyWords = (rubric, doing, work) => `too heavy to grade: the page's own work over the grading (${(work / MILLION).toFixed(0)} million vertices, draw calls at ${rubric.thresholds.drawCallWork} each) passed the rubric's budget of ${(rubric.thresholds.gatherWork / MILLION).toFixed(0)} million (gatherWork) while ${doing}; nothing was judged (what was done is listed under what the grader did; grade it with a larger gatherWork, or at a level the sphere needs)`;
+export const tooHeavyWords = (rubric, doing, work) =>
+  `too heavy to grade: the page's own work over the grading (${(work / MILLION).toFixed(0)} million vertices, draw calls at ${rubric.thresholds.drawCallWork} each) passed the rubric's budget of ${(rubric.thresholds.gatherWork / MILLION).toFixed(0)} million (gatherWork) while ${doing}; nothing was judged (what was done is listed under what the grader did; grade it with a larger gatherWork, or at a level the sphere needs)`;
 
 /**
  * A list of checks with the rubric's cost of a mistake: sayAs(id) gives the audit `id`'s
@@ -23,7 +24,8 @@ export const tooHeavyWords = (rubric, doing, work) => `too heavy to grade: the p
  */
 export function checkList(rubric) {
   const checks = [];
-  const sayAs = (id) => (level, reason) => checks.push({ id, level: level === 'mistake' ? rubric.mistakeVerdict || 'review' : level, reason });
+  const sayAs = (id) => (level, reason) =>
+    checks.push({ id, level: level === 'mistake' ? rubric.mistakeVerdict || 'review' : level, reason });
   return { checks, sayAs };
 }
 
@@ -45,7 +47,11 @@ export function findingsOf({ fail, failId, checks = [], pageErrors = [] }) {
   const out = [];
   if (fail) out.push({ id: failId, level: 'fail', reason: fail });
   for (const lvl of ['fail', 'review', 'pass']) {
-    for (const c of checks) if (c.level === lvl) out.push({ id: c.id, level: lvl, reason: lvl === 'pass' ? c.reason : `${lvl.toUpperCase()}: ${c.reason}` });
+    for (const c of checks) {
+      if (c.level === lvl) {
+        out.push({ id: c.id, level: lvl, reason: lvl === 'pass' ? c.reason : `${lvl.toUpperCase()}: ${c.reason}` });
+      }
+    }
   }
   if (!fail && pageErrors.length) out.push({ id: 'page-errors', level: 'note', reason: `the page reported errors: ${pageErrors[0]}` });
   return out;

@@ -93,6 +93,8 @@ export function auditBrightened({ facts, sayAs, imagesShown }) {
 export const UNITS = [
   unit(META, 'unclipped', (context, { shading }) => (shading.shaded ? auditUnclipped(context) : null), { uses: ['shading'] }),
   unit(META, 'brightened', (context, { shading }) => (shading.shaded ? auditBrightened(context) : null), { uses: ['shading'] }),
-  unit(META, 'diffuse', (context, { shading, 'lit-views': lit }) => (shading.shaded ? auditDiffuse(context, shading.shading, lit) : null), { uses: ['shading', 'lit-views'] }),
-  unit(META, 'point-light', (context, { shading }) => (shading.shaded ? auditPointLight(context, shading.shading) : null), { uses: ['shading'] }),
+  unit(META, 'diffuse', (context, { shading, 'lit-views': lit }) => (shading.shaded ? auditDiffuse(context, shading.shading, lit) : null),
+    { uses: ['shading', 'lit-views'] }),
+  unit(META, 'point-light', (context, { shading }) => (shading.shaded ? auditPointLight(context, shading.shading) : null),
+    { uses: ['shading'] }),
 ];

@@ -72,7 +72,9 @@ export function auditPerFace({ facts, thresholds, must, sayAs }) {
   if (!must.has('normal-colours')) return;
   const g = judgedGeometry(facts);
   if (!g || !g.perFace) return;
-  const face = g.perFace.find((a) => /norm|col/i.test(a.name) && a.share >= thresholds.perFaceShare && a.distinct >= thresholds.perFaceDistinct);
+  const face = g.perFace.find(
+    (a) => /norm|col/i.test(a.name) && a.share >= thresholds.perFaceShare && a.distinct >= thresholds.perFaceDistinct,
+  );
   if (face) say('mistake', `a colour per face, not per vertex: the attribute ${face.name} is the same at the three corners of ${pct(face.share)} of the triangles (a face's normal or colour; the slide: "vertex positions p are also vertex normals n: n = p")`);
 }
 

@@ -89,7 +89,11 @@ function unsure(tint, thresholds) {
 export const UNITS = [
   // the highlight read on the judged picture and on the lit views' full fits; its result (the place
   // nearer the viewer) is read again farther along (highlight-place)
-  unit(META, 'highlight', (context, { shading, 'lit-views': lit }) => (shading.shaded ? auditHighlight(context, shading.shading, viewFits(lit.map((v) => ({ img: context.images[v.image] })), context.thresholds)) : null),
+  unit(META, 'highlight', (context, { shading, 'lit-views': lit }) => {
+    if (!shading.shaded) return null;
+    const views = viewFits(lit.map((v) => ({ img: context.images[v.image] })), context.thresholds);
+    return auditHighlight(context, shading.shading, views);
+  },
     { also: ['highlight-place'], uses: ['shading', 'lit-views'] }),
   unit(META, 'highlight-place', (context, { highlight }) => (highlight ? auditPlaceFarther(context, highlight) : null), { uses: ['highlight'] }),
 ];

@@ -39,7 +39,10 @@ export const stoppedAtFirstFrame = (rubric, what) => finding('page-finishes', 'f
  * A page past the rubric's bound (or its gatherWork) once it drew, `why` in words (tooSlowWords,
  * tooHeavyWords): too slow here, not broken, at the rubric's tooSlowVerdict.
  */
-export const tooSlow = (rubric, why) => (rubric.tooSlowVerdict === NOT_GRADED ? finding('too-slow', NOT_GRADED, `${NOT_GRADED}: ${why}`) : finding('too-slow', rubric.tooSlowVerdict, why));
+export const tooSlow = (rubric, why) =>
+  rubric.tooSlowVerdict === NOT_GRADED
+    ? finding('too-slow', NOT_GRADED, `${NOT_GRADED}: ${why}`)
+    : finding('too-slow', rubric.tooSlowVerdict, why);
 
 /** A part's page that only links to another part's page (`to`: { part, page }). */
 export const linkedPage = (part, page, to) => finding('linked-page', 'review', `REVIEW: the page for ${part} (${page}) has no canvas and no script of its own: it links to ${to.part}'s page (${to.page}), graded as ${to.part}; a part is not graded twice (does that page do ${part}'s step too? a teacher looks)`);
@@ -61,7 +64,12 @@ export const browserFailed = (err) => BROWSER_FAILED.test(String(err && err.mess
  * The browser (`browser`: its name and version, or null) failed while grading the page (`err`):
  * not graded here, with the browser's message and what to do; never a verdict on the page.
  */
-export const browserFailure = (err, browser) => finding('browser-failed', NOT_GRADED, `${NOT_GRADED}: the browser${browser ? ` (${browser})` : ''} failed while grading this page, not the page ("${String(err.message).split('\n')[0]}"): grade this part again, or in the other browser (--browser)`);
+export const browserFailure = (err, browser) =>
+  finding(
+    'browser-failed',
+    NOT_GRADED,
+    `${NOT_GRADED}: the browser${browser ? ` (${browser})` : ''} failed while grading this page, not the page ("${String(err.message).split('\n')[0]}"): grade this part again, or in the other browser (--browser)`,
+  );
 
 /** The grader's own trouble with a page (`err`): never a pass on it, a teacher looks. A check. */
 export const graderTrouble = (err) => finding('grader-trouble', 'review', `the grader could not finish on this page: ${err.message.split('\n')[0]}`);

@@ -69,7 +69,8 @@ export function auditPerFragment({ facts, images, thresholds, must, sayAs, numbe
 /** This module's audit units (audits/list.js runs them in its order). */
 export const UNITS = [
   // s at its least, read in the picture the shading was read in (gather/visible.js)
-  unit(META, 'least-s', (context, { 'judged-picture': judged, shading }) => (context.must.has('highlight') ? auditLeastShininess(context, { ...judged, img: shading.shadeImg }, shading.shading) : null),
+  unit(META, 'least-s', (context, { 'judged-picture': judged, shading }) => (context.must.has('highlight')
+    ? auditLeastShininess(context, { ...judged, img: shading.shadeImg }, shading.shading) : null),
     { uses: ['judged-picture', 'shading'] }),
   unit(META, 'per-fragment', (context, results) => auditPerFragment(context, results['judged-picture'], results.shading.shading), { uses: ['judged-picture', 'shading'] }),
 ];

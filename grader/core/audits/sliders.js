@@ -79,5 +79,6 @@ export function auditSliders({ facts, images, thresholds, must, sayAs, rubric, p
 
 /** This module's audit units (audits/list.js runs them in its order). */
 export const UNITS = [
-  unit(META, 'sliders', (context, results) => auditSliders(context, results['judged-picture'], results.shading.shading), { also: ['input-event', 'ks-used'], uses: ['judged-picture', 'shading'] }),
+  unit(META, 'sliders', (context, results) => auditSliders(context, results['judged-picture'], results.shading.shading),
+    { also: ['input-event', 'ks-used'], uses: ['judged-picture', 'shading'] }),
 ];

@@ -80,6 +80,9 @@ export const UNITS = [
   unit(META, 'heavy-level', auditHeavyLevel),
   unit(META, 'level-controls', auditLevelControls),
   unit(META, 'judged-picture', judgedPicture, { says: ['sphere'], reads: ['facts.judged', 'facts.facesImage'] }),
-  unit(META, 'sphere', (context, results) => auditSphere(context, results['judged-picture'], context.facts.ladder.map((l) => l.roundness), analyse(context.images.first, context.thresholds).roundness),
+  unit(META, 'sphere', (context, results) => {
+    const first = analyse(context.images.first, context.thresholds).roundness;
+    return auditSphere(context, results['judged-picture'], context.facts.ladder.map((l) => l.roundness), first);
+  },
     { uses: ['judged-picture'] }),
 ];

@@ -79,7 +79,14 @@ export function placeView(seen, views, thresholds) {
   let place = seen.broad ? null : seen;
   for (const v of views) {
     const f = v.fit;
-    if (f && highlightSeen(f, thresholds) && clean(f) && (!place || !clean(place.fit) || lightAngle(f) > lightAngle(place.fit))) place = { fit: f, where: 'a lit view along the orbit' };
+    if (
+      f &&
+      highlightSeen(f, thresholds) &&
+      clean(f) &&
+      (!place || !clean(place.fit) || lightAngle(f) > lightAngle(place.fit))
+    ) {
+      place = { fit: f, where: 'a lit view along the orbit' };
+    }
   }
   return place;
 }

@@ -41,7 +41,9 @@ export async function lookAllRound(session) {
     views.push(
       an.blank ? { blank: true } : { roundness: an.roundness, fill: an.fill, ...(turned !== null ? { turned } : {}) },
     );
-    if (!gap && !an.blank && an.roundness <= thresholds.roundness && an.fill < thresholds.fill) gap = session.keep('all-round-gap', sh.img);
+    if (!gap && !an.blank && an.roundness <= thresholds.roundness && an.fill < thresholds.fill) {
+      gap = session.keep('all-round-gap', sh.img);
+    }
   }
   facts.allRound = { views, turned, gap, why: g.why };
   session.act(`looked at ${views.length} positions along the orbit${turned !== null ? ` (the camera turned ${Math.round(turned)}°)` : ''}`);

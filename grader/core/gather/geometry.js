@@ -36,5 +36,10 @@ export async function readSurface(session) {
   // where the page's matrices put its positions: P·V·M, solved from the fit's samples (16 numbers kept, not the samples)
   const clip = clipMatrix(fit.map((f) => ({ p: f.slice(0, 3), clip: f.slice(3, 7) })));
   if (!clip) return { why: `where the page's matrices put its positions could not be solved from ${fit.length} of its pixels` };
-  return { ...facts, clip: clip.map((row) => row.map((v) => Math.round(v * MILLIONTHS) / MILLIONTHS)), normals: session.keep('surface-normals', normals), points: session.keep('surface-points', points) };
+  return {
+    ...facts,
+    clip: clip.map((row) => row.map((v) => Math.round(v * MILLIONTHS) / MILLIONTHS)),
+    normals: session.keep('surface-normals', normals),
+    points: session.keep('surface-points', points),
+  };
 }

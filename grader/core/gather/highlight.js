@@ -19,8 +19,11 @@ export async function raiseHighlight(session, controls) {
   const s10 = (c) =>
     Math.max(Number(c.min || 0) + 1, Math.min(thresholds.raisedShininess, Number(c.max || thresholds.raisedShininess)));
   const raised = session.facts.raised = [];
-  const groups = groupsOf(session, controls).filter((g) => g.controls.every((c) => c.type === 'range' || c.type === 'number' || (g.role === 'ks' && c.type === 'color')));
-  for (const [r, to] of [['ks', (c) => (c.type === 'color' ? greatest(c) : Number(c.max === '' || c.max === undefined ? 1 : c.max))], ['s', s10]]) {
+  const groups = groupsOf(session, controls).filter((g) =>
+    g.controls.every((c) => c.type === 'range' || c.type === 'number' || (g.role === 'ks' && c.type === 'color')),
+  );
+  const ksTop = (c) => (c.type === 'color' ? greatest(c) : Number(c.max === '' || c.max === undefined ? 1 : c.max));
+  for (const [r, to] of [['ks', ksTop], ['s', s10]]) {
     const g = groups.find((x) => x.role === r);
     if (!g || raised.some((x) => x.seen)) continue;
     const c = g.controls[0];
@@ -29,7 +32,14 @@ export async function raiseHighlight(session, controls) {
     await session.tick(session.thresholds.actionTickMs);
     const sh = await session.shot();
     const seen = !!sh && highlightIn(sh.img, thresholds);
-    raised.push({ role: r, ...groupFacts(g, vs), value: vs[0], broad: r === 's' && s10(c) < Number(session.now(c)), image: sh ? session.keep(`raised-${r}`, sh.img) : null, seen });
+    raised.push({
+      role: r,
+      ...groupFacts(g, vs),
+      value: vs[0],
+      broad: r === 's' && s10(c) < Number(session.now(c)),
+      image: sh ? session.keep(`raised-${r}`, sh.img) : null,
+      seen,
+    });
     session.act(`set ${describeGroup(g)} to ${vs[0]} to look for a highlight${seen ? ': one shows' : ''}`);
   }
   for (const g of set) await setGroup(session, g, (c) => session.now(c));
@@ -68,6 +78,8 @@ export async function placeFarther(session, controls) {
     await session.tryClick(orbit.stop, 'the orbit control again', { watchMotion: true });
   }
   await each((x, k, c) => session.now(c));
-  session.act(`sampled the orbit at ${far.k} positions for a view with the light ${thresholds.highlightPlaceLightDegrees}° or more from the viewer${raised.length ? `, ${raised.map((x) => `${x.role} at ${x.value}`).join(' and ')}` : ''}: ${far.img ? 'one shows the highlight' : 'none shows the highlight over a clean diffuse fit'}`);
+  session.act(
+    `sampled the orbit at ${far.k} positions for a view with the light ${thresholds.highlightPlaceLightDegrees}° or more from the viewer${raised.length ? `, ${raised.map((x) => `${x.role} at ${x.value}`).join(' and ')}` : ''}: ${far.img ? 'one shows the highlight' : 'none shows the highlight over a clean diffuse fit'}`,
+  );
   facts.placeFarther = { image: far.img ? session.keep('highlight-place', far.img) : null };
 }

@@ -52,7 +52,12 @@ async function gather(session) {
   const judged = await orbitAndLevel(session, controls);
   if (judged) await whatTheStepAsks(session, controls, judged.img);
   // (the last frames the gathering ran: no frame is run for it)
-  if (session.facts.frameDraws) Object.assign(session.facts.frameDraws, { last: session.frameDraws, clicks: session.facts.actions.filter((a) => /^(clicked|pressed) /.test(a)).length });
+  if (session.facts.frameDraws) {
+    Object.assign(session.facts.frameDraws, {
+      last: session.frameDraws,
+      clicks: session.facts.actions.filter((a) => /^(clicked|pressed) /.test(a)).length,
+    });
+  }
 }
 
 /**
@@ -117,7 +122,8 @@ async function orbitAndLevel(session, controls) {
   // sampled, off again; the view it stops at is judged. Only where it buys evidence: the judged view
   // is unlit, or the step asks for the orbit (P3)
   const { orbit } = session;
-  if (orbit.later && must.has('diffuse') && (must.has('orbit-toggle') || !look(session, ladder[ladder.length - 1].img, { orbiting: false, keep: false }))) {
+  const unlit = () => !look(session, ladder[ladder.length - 1].img, { orbiting: false, keep: false });
+  if (orbit.later && must.has('diffuse') && (must.has('orbit-toggle') || unlit())) {
     const at = ladder.length - 1;
     if (!stopped) {
       await sampleOrbit(session, true);

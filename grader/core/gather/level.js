@@ -37,7 +37,8 @@ async function levelButtons(session, clickables, levelBy) {
       effect = await session.tryClick(c, 'a control', { watchMotion: !session.roles.orbit && session.must.has('diffuse') });
       // a page that starts as round as pixels allow shows one level's change nowhere on the
       // outline: a few more clicks of a button that may be a level control, against the picture before
-      for (let k = 0; k < thresholds.levelClicksAgain && (effect === 'shading' || effect === 'none') && [null, 'subdivide', 'coarsen'].includes(nameRole(c, patterns)); k++) {
+      const mayBeLevel = () => [null, 'subdivide', 'coarsen'].includes(nameRole(c, patterns));
+      for (let k = 0; k < thresholds.levelClicksAgain && (effect === 'shading' || effect === 'none') && mayBeLevel(); k++) {
         if (!await session.press(c, 'again')) break;
         const now = await session.shot();
         if (!now) break;
@@ -74,7 +75,14 @@ async function levelSliderByEffect(session, valued) {
     await session.page.setValue(c, values[0], ['input', 'change']);
     await session.tick(session.thresholds.actionTickMs);
     session.cur = await session.shot();
-    const effect = await session.trial(async () => { await session.page.setValue(c, values[1], ['input', 'change']); await session.tick(session.thresholds.actionTickMs); return true; }, { watchMotion: false });
+    const effect = await session.trial(
+      async () => {
+        await session.page.setValue(c, values[1], ['input', 'change']);
+        await session.tick(session.thresholds.actionTickMs);
+        return true;
+      },
+      { watchMotion: false },
+    );
     session.act(`set ${describe(c)} from ${values[0]} to ${values[1]} → ${effectWords[effect]}`);
     if (effect === 'finer') {
       session.assign('levelSlider', c, 'rounder-up');
@@ -90,7 +98,12 @@ async function levelSliderByEffect(session, valued) {
 /** Keys: when nothing on the page changes the level, the arrow keys or + and − may. */
 async function levelKeys(session, levelBy) {
   for (const [up, down] of LEVEL_KEYS) {
-    const key = (k) => async () => { await session.page.press(k); session.act(`pressed ${k}`); await session.tick(session.thresholds.actionTickMs); return true; };
+    const key = (k) => async () => {
+      await session.page.press(k);
+      session.act(`pressed ${k}`);
+      await session.tick(session.thresholds.actionTickMs);
+      return true;
+    };
     const e1 = await session.trial(key(up), { watchMotion: false });
     session.act(`  → ${effectWords[e1]}`);
     const e2 = e1 === 'finer' || e1 === 'none' ? await session.trial(key(down), { watchMotion: false }) : 'none';
@@ -127,7 +140,9 @@ export async function findLevel(session, controls) {
     // shows whether the sphere gets rounder)
     for (const c of clickables) {
       const role = nameRole(c, patterns);
-      if ((role === 'subdivide' || role === 'coarsen') && !levelBy[role] && !session.taken.has(c.index)) levelBy[role] = { c, act: () => session.press(c, 'a control') };
+      if ((role === 'subdivide' || role === 'coarsen') && !levelBy[role] && !session.taken.has(c.index)) {
+        levelBy[role] = { c, act: () => session.press(c, 'a control') };
+      }
     }
     for (const role of ['subdivide', 'coarsen']) if (levelBy[role]) session.assign(role, levelBy[role].c, 'by-name');
     const c = levelBy.subdivide ? null : valued.find((x) => !session.taken.has(x.index) && nameRole(x, patterns) === 'levelSlider');

@@ -13,7 +13,13 @@ import { MS_PER_SECOND } from '../units.js';
 /** Is `img` a lit view? Lit views are kept (`orbiting`: seen while the camera orbits). */
 export function look(session, img, { orbiting = true, keep = true } = {}) {
   const { lit } = litView(img, session.thresholds);
-  if (lit && keep) session.facts.views.push({ image: session.keep(`view-${session.facts.views.length}`, img), orbiting, ...(orbiting && session.camera ? { camera: session.camera } : {}) });
+  if (lit && keep) {
+    session.facts.views.push({
+      image: session.keep(`view-${session.facts.views.length}`, img),
+      orbiting,
+      ...(orbiting && session.camera ? { camera: session.camera } : {}),
+    });
+  }
   return lit;
 }
 
@@ -158,7 +164,8 @@ export async function startOrbitToSee(session) {
   const { thresholds, patterns } = session;
   session.step('starting the orbit to see the lit side');
   const clickables = (await session.page.controls()).filter(isClickable);
-  for (const c of trialOrder(clickables, 'orbit', patterns, session.taken).filter((x) => named(x, 'orbit', patterns)).slice(0, thresholds.maxControlTrials)) {
+  const namedOrbit = trialOrder(clickables, 'orbit', patterns, session.taken).filter((x) => named(x, 'orbit', patterns));
+  for (const c of namedOrbit.slice(0, thresholds.maxControlTrials)) {
     session.trialsMade++;
     if (!await session.press(c, 'a control named for the orbit, to see the lit side,')) continue;
     const seen = await searchOrbit(session, (img) => litView(img, thresholds).lit);

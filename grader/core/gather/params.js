@@ -14,7 +14,10 @@ export const RANGE_DEFAULT_MAX = 100;
 
 /** A slider's least and greatest values (a colour picker's: black and white). */
 export const least = (c) => (c.type === 'color' ? '#000000' : Number(c.min || 0));
-export const greatest = (c) => (c.type === 'color' ? '#ffffff' : Number(c.max === '' || c.max === undefined ? (c.type === 'range' ? RANGE_DEFAULT_MAX : 1) : c.max));
+export const greatest = (c) =>
+  c.type === 'color'
+    ? '#ffffff'
+    : Number(c.max === '' || c.max === undefined ? (c.type === 'range' ? RANGE_DEFAULT_MAX : 1) : c.max);
 
 /** The parameters the page's free sliders set (parameterGroups: ks r, g, b as one). */
 export const groupsOf = (session, controls) =>

@@ -46,8 +46,22 @@ export async function trySliders(session, controls) {
     }
     const r = k && k !== 'levelSlider' ? k : null;
     session.act(`set ${describeGroup(g)} to ${vs[0]} (${how === 'none' ? 'no visible change' : `the picture changed on the ${how} event`})`);
-    if (how !== 'none' && k !== 'levelSlider') facts.roles[r || `slider ${Object.keys(facts.roles).length}`] = { control: g.controls[0].index, what: describeGroup(g), found: 'shading' };
-    facts.sliders.push({ ...groupFacts(g, vs), role: r, levelSlider: k === 'levelSlider', target: vs[0], how, ...seen(), image: session.keep(`slider-${facts.sliders.length}`, after) });
+    if (how !== 'none' && k !== 'levelSlider') {
+      facts.roles[r || `slider ${Object.keys(facts.roles).length}`] = {
+        control: g.controls[0].index,
+        what: describeGroup(g),
+        found: 'shading',
+      };
+    }
+    facts.sliders.push({
+      ...groupFacts(g, vs),
+      role: r,
+      levelSlider: k === 'levelSlider',
+      target: vs[0],
+      how,
+      ...seen(),
+      image: session.keep(`slider-${facts.sliders.length}`, after),
+    });
     // back to where it was (drawn with the next slider's frame, or the last one below)
     await setGroup(session, g, (c) => session.now(c));
   }

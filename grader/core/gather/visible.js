@@ -92,7 +92,12 @@ export async function brighten(session, controls, img, an) {
   }
   g.controls.forEach((c, i) => session.values.set(c.index, vs[i]));
   session.act(`set the ${g.role} slider to ${vs[0]} (the sphere was too dim to show its shading: brightness spread ${before.toFixed(3)}; now ${after.toFixed(3)})`);
-  facts.brightened = { before, after, steps: [{ role: g.role, control: g.controls[0].index, value: vs[0] }], image: session.keep('brightened', sh.img) };
+  facts.brightened = {
+    before,
+    after,
+    steps: [{ role: g.role, control: g.controls[0].index, value: vs[0] }],
+    image: session.keep('brightened', sh.img),
+  };
   facts.shadingImage = facts.brightened.image;
   return sh.img;
 }

@@ -27,7 +27,11 @@ function calls(code) {
 /** `code` with every normalising call blanked: what is left is used as it comes. */
 function withoutNormalisers(code) {
   let out = code;
-  for (const c of calls(code)) if (NORMALISERS.test(c.name)) out = out.slice(0, c.from) + ' '.repeat(c.to - c.from) + out.slice(c.to);
+  for (const c of calls(code)) {
+    if (NORMALISERS.test(c.name)) {
+      out = out.slice(0, c.from) + ' '.repeat(c.to - c.from) + out.slice(c.to);
+    }
+  }
   return out;
 }
 
@@ -58,7 +62,12 @@ function wgslInputs(src) {
     if (!struct) continue;
     for (const f of struct[1].split(',')) {
       const fm = f.match(/@location\s*\(\s*\d+\s*\)[^:]*?([A-Za-z_]\w*)\s*:\s*([\w<>\s]+)$/);
-      if (fm && vec.test(fm[2].replace(/\s/g, ''))) inputs.push({ name: `${name}.${fm[1]}`, token: new RegExp(`\\b${escape(name)}\\s*\\.\\s*${escape(fm[1])}\\b`) });
+      if (fm && vec.test(fm[2].replace(/\s/g, ''))) {
+        inputs.push({
+          name: `${name}.${fm[1]}`,
+          token: new RegExp(`\\b${escape(name)}\\s*\\.\\s*${escape(fm[1])}\\b`),
+        });
+      }
     }
   }
   return { code, inputs };
