@@ -2,8 +2,8 @@
 // section of report.html that the class grid links to (a badge on both hand-ins' rows).
 import { PARTS } from '../files/parts.js';
 import { csvText } from '../files/csv.js';
+import { esc } from '../files/html.js';
 
-const esc = (s) => String(s).replace(/[&<>"']/g, (c) => ({ '&': '&amp;', '<': '&lt;', '>': '&gt;', '"': '&quot;', "'": '&#39;' })[c]);
 const pct = (x) => `${Math.round(100 * x)}%`;
 export const pairId = (p) => `similar-${`${p.a}--${p.b}`.replace(/[^A-Za-z0-9._-]+/g, '_')}`;
 export const POINTER = 'A pointer for a person to look at, never a verdict: a pair listed here may have worked together as ' +

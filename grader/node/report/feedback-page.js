@@ -8,8 +8,7 @@ import { missedSlides } from '../../core/audits/missed-slides.js';
 import { findingsOfResult, asks } from '../../core/part-result.js';
 import { NOT_GRADED } from '../../core/verdict.js';
 import { fileOfHref } from '../../files/layout.js';
-
-const esc = (s) => String(s).replace(/[&<>"']/g, (c) => ({ '&': '&amp;', '<': '&lt;', '>': '&gt;', '"': '&quot;', "'": '&#39;' })[c]);
+import { esc } from '../../files/html.js';
 
 const IN_WORDS = {
   pass: 'Passed: it does what the step asks.',

@@ -4,8 +4,7 @@
 // grader's reasons, never the teacher's overrides.
 
 import { findingsOfResult } from '../../core/part-result.js';
-
-const esc = (s) => String(s).replace(/[&<>"']/g, (c) => ({ '&': '&amp;', '<': '&lt;', '>': '&gt;', '"': '&quot;', "'": '&#39;' })[c]);
+import { esc } from '../../files/html.js';
 
 /**
  * A finding ({ id, level, reason }: findingsOfResult) as a check: { level (pass, review, fail), key

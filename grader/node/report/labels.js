@@ -7,6 +7,7 @@ import { readFileSync } from 'node:fs';
 import { NOT_GRADED } from '../../core/verdict.js';
 import { asking } from '../../core/part-result.js';
 import { readRows } from '../../files/csv.js';
+import { esc } from '../../files/html.js';
 
 /** The verdict a label asks for: correct → pass, partial → review, broken → fail. */
 export const VERDICT_OF_LABEL = { correct: 'pass', partial: 'review', broken: 'fail', pass: 'pass', review: 'review', fail: 'fail' };
@@ -115,8 +116,6 @@ export function agreementText(a) {
   if (a.notGraded && a.notGraded.length) out.push(`labels: not graded here (WebGPU, which this browser does not have), left out of the counts: ${a.notGraded.join(', ')}`);
   return out;
 }
-
-const esc = (s) => String(s).replace(/[&<>"']/g, (c) => ({ '&': '&amp;', '<': '&lt;', '>': '&gt;', '"': '&quot;', "'": '&#39;' })[c]);
 
 /** The agreement as an HTML section for report.html. */
 export function agreementHtml(a, anchor = (r) => `#${r.submission}-${r.part}`) {

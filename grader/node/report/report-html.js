@@ -10,8 +10,7 @@ import { similarityBadges, similarityHtml, SIMILARITY_CSS } from '../../similari
 import { identityHtml, teacherMark, TEACHER_CSS } from './report-teacher.js';
 import { itemAnalysisHtml } from './item-analysis.js';
 import { PERCENT, CHANNEL_MAX } from '../../core/units.js';
-
-const esc = (s) => String(s).replace(/[&<>"']/g, (c) => ({ '&': '&amp;', '<': '&lt;', '>': '&gt;', '"': '&quot;', "'": '&#39;' })[c]);
+import { esc } from '../../files/html.js';
 
 const VERDICTS = ['pass', 'review', 'fail'];
 /** A verdict's class name ("not graded here": not-graded). */
