@@ -5,9 +5,7 @@
 // (WP04P1/P2), and a page that draws more every frame while nothing is touched.
 import { SLIDE } from './slides.js';
 import { unit } from './unit.js';
-import { PERCENT } from '../units.js';
-
-const pct = (x) => `${Math.round(PERCENT * x)}%`;
+import { pct } from '../format.js';
 
 /** This module's audits: id → title, the slide's sentence it checks, the artifacts it reads. */
 export const META = {

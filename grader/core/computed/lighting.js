@@ -4,9 +4,7 @@
 // lights nothing, an older artifact); { why } where it was read but cannot be used for this picture.
 import { surfaceOf } from './surface.js';
 import { surfaceFit } from '../measure/surface-fit.js';
-import { PERCENT } from '../units.js';
-
-const pct = (x) => `${Math.round(PERCENT * x)}%`;
+import { pct } from '../format.js';
 
 /** The fits on the judged picture (`judged`: { img, an }) and its surface, or null / { why }. */
 export function exactLighting(facts, images, judged, thresholds) {
