@@ -53,7 +53,7 @@ export async function runPart({ item, plan, openers, browserVersion = null, more
   const started = Date.now();
   let graded = { fail: null, checks: [], actions: [], images: {}, shown: {}, busy: 0 };
   const files = {};
-  let clean = false, browserBroke = false;
+  let clean = false;
   // where the part's time goes: opening it, each page-interface call, closing it, writing the pictures
   const timing = result.timing = {};
   const phase = (what, t0) => addTime(timing, what, Date.now() - t0);
@@ -93,7 +93,6 @@ export async function runPart({ item, plan, openers, browserVersion = null, more
     if (over() || CLOSED.test(err.message)) throw err; // the time bound: stays 'timeout'
     // the browser's own failure: not graded here; the grader's own trouble with this page: a review
     Object.assign(graded, troubleWith(err, browserVersion));
-    browserBroke = !!graded.notGraded;
     if (process.env.GRADE_DEBUG) console.error(err);
   } finally {
     const t0 = Date.now();
@@ -108,7 +107,7 @@ export async function runPart({ item, plan, openers, browserVersion = null, more
     await drawReference({ item, plan, openers, result, graded });
     save(result);
   }
-  return { browserFailed: browserBroke };
+  return { browserFailed: graded.notGradedId === 'browser-failed' };
 }
 
 /** Our reference at the student's size, beside theirs: evidence, not the verdict. */
