@@ -79,8 +79,10 @@ export function openSession(page, { part, rubric, progress = () => {}, deadline 
       const w = facts.work;
       session.frameWork = ((s.vertices - w.vertices) + thresholds.drawCallWork * (s.draws - w.draws)) / (frames + 1);
       const a = s.animation, ran = a ? a.count - session.animationFrames : 0;
-      const perFrame = (HUNDREDTHS * (s.draws - w.draws)) / ran;
-      if (ran > 0) session.frameDraws = { loops: a.loops, draws: Math.round(perFrame) / HUNDREDTHS };
+      if (ran > 0) {
+        const perFrame = (HUNDREDTHS * (s.draws - w.draws)) / ran;
+        session.frameDraws = { loops: a.loops, draws: Math.round(perFrame) / HUNDREDTHS };
+      }
       if (a) session.animationFrames = a.count;
       Object.assign(w, { frames: w.frames + frames + 1, draws: s.draws, vertices: s.vertices });
       const spent = w.vertices + thresholds.drawCallWork * w.draws;
