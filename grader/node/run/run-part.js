@@ -6,9 +6,8 @@
 // (grade-firefox.js).
 import { writeFileSync, mkdirSync } from 'node:fs';
 import path from 'node:path';
-import { PNG } from 'pngjs';
-import { compareImages } from './compare.js';
-import { writeArtifact, pngOf } from './artifacts.js';
+import { writeArtifact } from './artifacts.js';
+import { drawReference } from './reference.js';
 import { hrefOf } from '../../files/layout.js';
 import { applyAudit, withFindings } from '../../core/part-result.js';
 import { missingPage, timedOut, stoppedAtFirstFrame, tooSlow, linkedPage, notOpened, asFail, troubleWith } from '../../core/audits/page.js';
@@ -16,7 +15,6 @@ import { tooSlowWords } from '../../core/verdict.js';
 import { deadlineOf } from '../../core/deadline.js';
 import { FIRST_FRAME } from '../../core/gather/index.js';
 import { gradePart, addTime } from '../../core/grade-part.js';
-import { referenceQuery, referenceStateOf, referencePicture, untilDrawn } from '../../core/reference-state.js';
 
 // the message of an error thrown because Playwright's time bound closed the part's page (the result stays 'timeout')
 const CLOSED = /Test ended|Target page, context or browser has been closed/;
@@ -108,40 +106,4 @@ export async function runPart({ item, plan, openers, browserVersion = null, more
     save(result);
   }
   return { browserFailed: graded.notGradedId === 'browser-failed' };
-}
-
-/** Our reference at the student's size, beside theirs: evidence, not the verdict. */
-async function drawReference({ item, plan, openers, result, graded }) {
-  const dir = path.dirname(item.resultFile);
-  const stem = path.basename(item.resultFile, '.json');
-  const refLog = { errors: [], blocked: [], notes: [] };
-  const query = referenceQuery(graded.images.judged, result.numbers, plan.rubric.thresholds, item.referenceQuery);
-  let ref = null;
-  try {
-    const r = await openers.reference.open({ root: plan.repo, rel: `${item.part}/index.html`, query: query.toString(), loadSeconds: plan.rubric.loadSeconds, log: refLog });
-    if (!r.why) {
-      // (our pages publish window.scene after each frame drawn: the picture waits for one)
-      const shows = () => r.page.evaluate(() => !!(window.scene && window.scene.frame >= 1)).catch(() => false);
-      const drawn = await referencePicture(r.driver, graded.images.judged, () =>
-        untilDrawn(shows, r.driver, plan.rubric.firstFrameSeconds),
-      );
-      ref = drawn.img;
-      if (drawn.why) result.notes.push(drawn.why);
-      const scene = await r.page.evaluate(() => window.scene || null).catch(() => null);
-      result.referenceState = referenceStateOf(query, scene);
-    }
-    await openers.reference.done(true);
-  } catch (err) {
-    await openers.reference.done(false);
-    result.notes.push(`our reference could not be drawn: ${err.message.split('\n')[0]}`);
-  }
-  if (ref) {
-    const cmp = compareImages(PNG.sync.read(pngOf(ref)), PNG.sync.read(pngOf(graded.images.judged)));
-    const { mismatch, rmse, comparison, mismatchFull, mismatchObject } = cmp;
-    Object.assign(result, { mismatch, rmse, comparison, mismatchFull, mismatchObject });
-    result.notes.push(...cmp.notes, `the reference is our page at the same canvas size${result.referenceState && result.referenceState.light ? ', lit from the fitted light' : ''}; the difference is evidence, the verdict comes from the checks`);
-    writeFileSync(path.join(dir, `${stem}-reference.png`), PNG.sync.write(cmp.reference));
-    writeFileSync(path.join(dir, `${stem}-diff.png`), PNG.sync.write(cmp.diff));
-    Object.assign(result.images, { reference: hrefOf(plan.out, path.join(dir, `${stem}-reference.png`)), diff: hrefOf(plan.out, path.join(dir, `${stem}-diff.png`)) });
-  }
 }
