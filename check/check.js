@@ -44,7 +44,8 @@ async function hasWebGPU() {
 /** An image { width, height, data } as a PNG data URL. */
 function pictureURL(img) {
   const c = el('canvas', { width: img.width, height: img.height });
-  c.getContext('2d').putImageData(new ImageData(new Uint8ClampedArray(img.data.buffer, img.data.byteOffset, img.data.byteLength), img.width, img.height), 0, 0);
+  const pixels = new Uint8ClampedArray(img.data.buffer, img.data.byteOffset, img.data.byteLength);
+  c.getContext('2d').putImageData(new ImageData(pixels, img.width, img.height), 0, 0);
   return c.toDataURL('image/png');
 }
 
@@ -75,7 +76,8 @@ function card(r, index, total, file) {
     ...slides.map((s) => el('p', { className: 'slide', dataset: { audit: s.id } }, el('b', { textContent: 'The slide asks: ' }), `${s.slide} `,
       s.note ? el('i', { textContent: `(${s.note}) ` }) : null, el('a', { href: stepLink(r.part), textContent: `See our ${r.part}` }))),
     images.length ? el('div', { className: 'pictures' }, ...images.map(([k, im]) => el('figure', {},
-      el('img', { src: pictureURL(im), alt: `${r.part}: ${CAPTIONS[k]}`, width: im.width, height: im.height }), el('figcaption', { textContent: CAPTIONS[k] })))) : null,
+        el('img', { src: pictureURL(im), alt: `${r.part}: ${CAPTIONS[k]}`, width: im.width, height: im.height }),
+        el('figcaption', { textContent: CAPTIONS[k] })))) : null,
     el('p', {}, el('a', { href: stepLink(r.part), textContent: `Our ${r.part}, which does it as the slide asks` })),
     list('What the check did', r.actions),
     list('Errors the page printed or caused', r.errors),
@@ -110,7 +112,8 @@ async function run(gather) {
         const file = parts[part];
         const where = `part ${k + 1} of ${PARTS.length}: ${part}${file ? ` (${file})` : ''}`;
         $('progress').textContent = where;
-        const r = file ? await checkPart({ part, page: file, session, rubric, stage: $('stage'), webgpuHere, progress: (what) => { $('progress').textContent = `${where}: ${what}`; } })
+        const progress = (what) => { $('progress').textContent = `${where}: ${what}`; };
+        const r = file ? await checkPart({ part, page: file, session, rubric, stage: $('stage'), webgpuHere, progress })
           : withFindings({ part, verdict: 'fail', api: null }, [missingPage(part)]);
         // said once, at the top: the browser, not the student's work
         if (r.notChecked === 'webgpu' && !results.some((x) => x.notChecked === 'webgpu')) say(NO_WEBGPU_HERE, 'notice');
@@ -129,7 +132,8 @@ async function run(gather) {
       ours.close();
       $('stage').replaceChildren();
     }
-    const passes = results.filter((r) => r.verdict === 'pass').length, unchecked = results.filter((r) => r.verdict === NOT_CHECKED).length;
+    const passes = results.filter((r) => r.verdict === 'pass').length;
+    const unchecked = results.filter((r) => r.verdict === NOT_CHECKED).length;
     $('progress').textContent = `done in ${((performance.now() - started) / MS_PER_SECOND).toFixed(0)} s: ${passes} of ${PARTS.length} parts pass` +
       `${unchecked ? `, ${unchecked} not checked here` : ''}`;
     window.check = {
@@ -152,7 +156,8 @@ $('folder').addEventListener('change', (e) => {
 });
 $('zip').addEventListener('change', (e) => {
   const list = [...e.target.files];
-  if (list.length) run(() => (/\.zip$/i.test(list[0].name) ? entriesFromInput(list) : Promise.reject(new CheckInputError(`${list[0].name} is not a .zip: pick the folder above instead.`))));
+  const notZip = () => Promise.reject(new CheckInputError(`${list[0].name} is not a .zip: pick the folder above instead.`));
+  if (list.length) run(() => (/\.zip$/i.test(list[0].name) ? entriesFromInput(list) : notZip()));
   e.target.value = '';
 });
 const drop = $('drop');

@@ -24,7 +24,9 @@ const skipped = (segments) => segments.some((s) => s.startsWith('.') || s === 'n
  * @returns {Map<string, Blob>}
  */
 export function handInFrom(entries) {
-  const kept = entries.map((e) => ({ ...e, segments: e.path.split('/').filter(Boolean) })).filter((e) => e.segments.length && !skipped(e.segments));
+  const kept = entries
+    .map((e) => ({ ...e, segments: e.path.split('/').filter(Boolean) }))
+    .filter((e) => e.segments.length && !skipped(e.segments));
   const tops = new Set(kept.map((e) => (e.segments.length > 1 ? e.segments[0] : '')));
   const strip = tops.size === 1 && !tops.has('') ? 1 : 0;
   const bytes = kept.reduce((s, e) => s + e.blob.size, 0);
@@ -95,7 +97,10 @@ export async function entriesFromInput(fileList) {
 
 /** A drop: folders walked (FileSystemEntry), files taken, one .zip unpacked. */
 export async function entriesFromDrop(dataTransfer) {
-  const roots = [...dataTransfer.items].filter((i) => i.kind === 'file').map((i) => i.webkitGetAsEntry && i.webkitGetAsEntry()).filter(Boolean);
+  const roots = [...dataTransfer.items]
+    .filter((i) => i.kind === 'file')
+    .map((i) => i.webkitGetAsEntry && i.webkitGetAsEntry())
+    .filter(Boolean);
   if (!roots.length) return entriesFromInput(dataTransfer.files);
   if (roots.length === 1 && roots[0].isFile && /\.zip$/i.test(roots[0].name)) return unzipEntries(dataTransfer.files[0]);
   const out = [];

@@ -12,10 +12,14 @@ function pressKey(W, key) {
   const active = doc.activeElement;
   const target = active && active !== doc.documentElement ? active : doc.body || doc.documentElement;
   const code = /^[a-z]$/i.test(key) ? `Key${key.toUpperCase()}` : /^[0-9]$/.test(key) ? `Digit${key}` : { '+': 'Equal', '-': 'Minus', ' ': 'Space' }[key] || key;
-  const keyCode = { ArrowLeft: 37, ArrowUp: 38, ArrowRight: 39, ArrowDown: 40, PageUp: 33, PageDown: 34, '+': 187, '-': 189, ' ': 32, Enter: 13, Escape: 27 }[key] ?? key.toUpperCase().charCodeAt(0);
+  const keyCodes = { ArrowLeft: 37, ArrowUp: 38, ArrowRight: 39, ArrowDown: 40, PageUp: 33, PageDown: 34,
+    '+': 187, '-': 189, ' ': 32, Enter: 13, Escape: 27 };
+  const keyCode = keyCodes[key] ?? key.toUpperCase().charCodeAt(0);
   const init = { key, code, keyCode, which: keyCode, bubbles: true, cancelable: true, composed: true, view: W };
   target.dispatchEvent(new W.KeyboardEvent('keydown', init));
-  if (key.length === 1) target.dispatchEvent(new W.KeyboardEvent('keypress', { ...init, charCode: key.charCodeAt(0), keyCode: key.charCodeAt(0), which: key.charCodeAt(0) }));
+  const charCode = key.charCodeAt(0);
+  const press = { ...init, charCode, keyCode: charCode, which: charCode };
+  if (key.length === 1) target.dispatchEvent(new W.KeyboardEvent('keypress', press));
   target.dispatchEvent(new W.KeyboardEvent('keyup', init));
 }
 

@@ -19,7 +19,8 @@ export function frameWatchScript(options) {
   if (window.__checkWatch) return;
   const watch = { errors: [], blocked: [], hung: null, broken: [] };
   Object.defineProperty(window, '__checkWatch', { value: watch, enumerable: false });
-  const text = (x) => (x instanceof Error ? x.message : typeof x === 'string' ? x : (() => { try { return JSON.stringify(x); } catch { return String(x); } })());
+  const json = (x) => { try { return JSON.stringify(x); } catch { return String(x); } };
+  const text = (x) => (x instanceof Error ? x.message : typeof x === 'string' ? x : json(x));
   if (typeof window.__checkLoop === 'function') watch.broken.push('a script of the page ran before the self-check\'s own script');
   // the frame script's globals (here, grader/browser/clock.js, grader/browser/instrument.js, grader/browser/webgpu-capture.js)
   const OURS = /\b__(check\w*|grade\w*|webgpuCapture)\b/;
@@ -28,18 +29,26 @@ export function frameWatchScript(options) {
     if (OURS.test(message)) watch.broken.push(message);
   };
 
-  window.addEventListener('error', (e) => { if (e.error !== undefined || e.message) pageError(e.error ? text(e.error) : e.message); });
+  window.addEventListener('error', (e) => {
+    if (e.error !== undefined || e.message) pageError(e.error ? text(e.error) : e.message);
+  });
   window.addEventListener('unhandledrejection', (e) => pageError(text(e.reason)));
   const consoleError = console.error.bind(console);
   console.error = (...args) => {
     watch.errors.push(`console: ${args.map(text).join(' ')}`);
     consoleError(...args);
   };
-  const dialog = (answer) => (message) => { watch.errors.push(`dialog: ${message === undefined ? '' : String(message)}`); return answer; };
+  const dialog = (answer) => (message) => {
+    watch.errors.push(`dialog: ${message === undefined ? '' : String(message)}`);
+    return answer;
+  };
   window.alert = dialog(undefined);
   window.confirm = dialog(false);
   window.prompt = dialog(null);
-  window.open = (url) => { watch.blocked.push(`popup: ${url === undefined ? '' : new URL(String(url), location.href).href}`); return null; };
+  window.open = (url) => {
+    watch.blocked.push(`popup: ${url === undefined ? '' : new URL(String(url), location.href).href}`);
+    return null;
+  };
   // the grader's pages have devicePixelRatio 1: a canvas sized from clientWidth × devicePixelRatio
   // is as big here as there, on any screen
   Object.defineProperty(window, 'devicePixelRatio', { get: () => 1, configurable: true });

@@ -89,7 +89,9 @@ export async function checkPart({ part, page, session, rubric, stage, progress =
       await session.idle(500, 5000);
       frame.contentWindow.__checkWatch.setLoopSeconds(rubric.timeoutSeconds);
       let timer;
-      const bound = new Promise((resolve) => { timer = setTimeout(() => resolve('timeout'), rubric.timeoutSeconds * MS_PER_SECOND); });
+      const bound = new Promise((resolve) => {
+        timer = setTimeout(() => resolve('timeout'), rubric.timeoutSeconds * MS_PER_SECOND);
+      });
       // a loop stopped after loading (in a promise, a frame, a handler) is a page that never returns, as
       // under the grader, whatever was judged meanwhile; the grader's outer bound (core/deadline.js)
       const deadline = deadlineOf(Date.now(), rubric);

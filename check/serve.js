@@ -94,11 +94,13 @@ export async function answer(source, rel, { frameScript, session, loopSeconds, m
   const type = typeOf(file);
   if (type === 'text/html') {
     const html = await blob.text();
-    return { status: 200, type: 'text/html', note, webgpu: usesWebGPU(html), body: injectFrameScript(guardInlineScripts(html, loopSeconds), `${BASE}${session}/${FRAME_SCRIPT}`) };
+    const body = injectFrameScript(guardInlineScripts(html, loopSeconds), `${BASE}${session}/${FRAME_SCRIPT}`);
+    return { status: 200, type: 'text/html', note, webgpu: usesWebGPU(html), body };
   }
   if (type === 'text/javascript') {
     const js = await blob.text();
-    return { status: 200, type, note, webgpu: usesWebGPU(js), body: guardLoops(js, { module: module || /\.mjs$/i.test(file), seconds: loopSeconds }) };
+    const body = guardLoops(js, { module: module || /\.mjs$/i.test(file), seconds: loopSeconds });
+    return { status: 200, type, note, webgpu: usesWebGPU(js), body };
   }
   return { status: 200, type, note, body: blob };
 }
