@@ -14,7 +14,8 @@ function fastHash(text) {
     a = Math.imul(a ^ c, 0x01000193);
     b = Math.imul(b ^ c, 0x5bd1e995) ^ (b >>> 15);
   }
-  return ((a >>> 0).toString(16).padStart(8, '0') + (b >>> 0).toString(16).padStart(8, '0') + ((a ^ b) >>> 0).toString(16).padStart(8, '0')).slice(0, 20);
+  const hex = (x) => (x >>> 0).toString(16).padStart(8, '0');
+  return (hex(a) + hex(b) + hex(a ^ b)).slice(0, 20);
 }
 
 // jscpd's MemoryStore, without an Error (and its stack) made for every token not found

@@ -35,6 +35,7 @@ export async function runSimilarity(submissions, out, options = {}) {
 /** --similarity-only with nothing graded: report.html and report.json of the similarity alone. */
 export function writeSimilarityReport(out, r, names) {
   writeFileSync(path.join(out, 'report.html'), similarityPage(r, names));
-  writeFileSync(path.join(out, 'report.json'), JSON.stringify({ generated: new Date().toISOString(), similarity: similarityJson(r) }, null, 1));
+  const report = { generated: new Date().toISOString(), similarity: similarityJson(r) };
+  writeFileSync(path.join(out, 'report.json'), JSON.stringify(report, null, 1));
 }
 export { similarityJson };

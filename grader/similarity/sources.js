@@ -103,7 +103,8 @@ export function partSources(root, page) {
       const text = addFile(abs, formatOfFile(abs) || 'javascript');
       if (text !== null) scriptTexts.push({ text, dir: path.dirname(abs) });
     } else if (/shader|glsl|wgsl/i.test(type) || /shader/i.test(attr(s.attrs, 'id') || '')) {
-      sources.push({ file: rel(pageAbs), line: s.line, format: shaderFormat(type + (attr(s.attrs, 'id') || ''), s.body), text: s.body });
+      const format = shaderFormat(type + (attr(s.attrs, 'id') || ''), s.body);
+      sources.push({ file: rel(pageAbs), line: s.line, format, text: s.body });
     } else if (!type || /javascript|module|ecmascript/i.test(type)) {
       sources.push({ file: rel(pageAbs), line: s.line, format: 'javascript', text: s.body });
       scriptTexts.push({ text: s.body, dir: pageDir });

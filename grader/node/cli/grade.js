@@ -176,7 +176,8 @@ async function main() {
     }
   }
   let submissions;
-  const out = o.auditOnly ? path.resolve(o.auditOnly) : path.resolve(o.out || path.join(repo, 'out/grade', o.batch ? path.basename(path.resolve(o.batch), '.zip') : path.basename(path.resolve(o.positional[0] || 'report'))));
+  const named = o.batch ? path.basename(path.resolve(o.batch), '.zip') : path.basename(path.resolve(o.positional[0] || 'report'));
+  const out = o.auditOnly ? path.resolve(o.auditOnly) : path.resolve(o.out || path.join(repo, 'out/grade', named));
   mkdirSync(out, { recursive: true });
   if (o.batch) {
     // a course site's download (its .zip or its folder), or a folder a student (intake/)
@@ -228,10 +229,7 @@ async function gradeParts(o, out, rubric, submissions) {
       // a page that only links to another part's page is graded once, as that part
       const linksTo = page ? linkedPart(readFileSync(path.join(s.root, page), 'utf8'), page, parts) : null;
       items.push({
-        name: s.name,
-        part,
-        root: s.root,
-        page,
+        name: s.name, part, root: s.root, page,
         ...(linksTo ? { linksTo } : {}),
         ...(notes[part] ? { foundBy: notes[part] } : {}),
         referenceQuery: cfg.referenceQuery || {},
@@ -267,7 +265,8 @@ async function runPlan(o, out, rubric, items, planFile) {
     items,
   };
   writeFileSync(planFile, JSON.stringify(plan, null, 1));
-  console.log(`grade: ${submissions.size} submission(s), ${items.length} parts in ${browserName} (${executable}${browser === 'chromium' ? `, found by ${CHROMIUM_HOW}` : ''}); ${o.workers || 2} at a time, at most ${rubric.timeoutSeconds} s for each student page, and ${REFERENCE_SECONDS} s more for our reference`);
+  const how = browser === 'chromium' ? `, found by ${CHROMIUM_HOW}` : '';
+  console.log(`grade: ${submissions.size} submission(s), ${items.length} parts in ${browserName} (${executable}${how}); ${o.workers || 2} at a time, at most ${rubric.timeoutSeconds} s for each student page, and ${REFERENCE_SECONDS} s more for our reference`);
   if (browser === 'firefox') {
     // (--shard I/N: every N-th part from the I-th, as a class is split over machines)
     const [i, n] = (o.shard || '1/1').split('/').map(Number);
@@ -287,7 +286,8 @@ async function runPlan(o, out, rubric, items, planFile) {
     rmSync(path.join(out, 'blob-report'), { recursive: true, force: true });
     const run = spawnSync(process.execPath, [path.join(repo, 'node_modules/@playwright/test/cli.js'), ...args], {
       cwd: RUN, stdio: 'inherit',
-      env: { ...process.env, GRADE_PLAN: planFile, GRADE_WORKERS: o.workers || '2', ...(o.verbose ? { GRADE_VERBOSE: '1' } : { GRADE_REPORTER: path.join(here, 'progress-reporter.js') }) },
+      env: { ...process.env, GRADE_PLAN: planFile, GRADE_WORKERS: o.workers || '2',
+        ...(o.verbose ? { GRADE_VERBOSE: '1' } : { GRADE_REPORTER: path.join(here, 'progress-reporter.js') }) },
     });
     if (run.error) fail(`could not start Playwright: ${run.error.message}`);
   }

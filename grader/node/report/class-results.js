@@ -20,7 +20,11 @@ export function readClass(partsDir) {
   }
   for (const s of byName.values()) {
     for (const part of PARTS) {
-      if (!s.parts.some((p) => p.part === part)) s.parts.push({ ...withFindings({ name: s.name, part, status: 'not graded here', verdict: 'fail' }, [{ id: 'not-graded-in-run', level: 'fail', reason: 'not graded in this run' }]), api: null, actions: [], mismatch: null, rmse: null, pass: false, errors: [], blocked: [] });
+      if (!s.parts.some((p) => p.part === part)) {
+        const notGraded = { id: 'not-graded-in-run', level: 'fail', reason: 'not graded in this run' };
+        s.parts.push({ ...withFindings({ name: s.name, part, status: 'not graded here', verdict: 'fail' }, [notGraded]),
+          api: null, actions: [], mismatch: null, rmse: null, pass: false, errors: [], blocked: [] });
+      }
     }
     s.parts.sort((a, b) => a.part.localeCompare(b.part));
   }

@@ -10,7 +10,8 @@ export function gradesCsv(rows, parts) {
   const head = ['name', 'passes', ...parts, ...parts.map((p) => `${p}_reasons`), ...parts.map((p) => `${p}_audits`)];
   const body = rows.map((s) => {
     const of = (p) => s.parts.find((x) => x.part === p);
-    return [s.name, s.passes, ...parts.map((p) => of(p).verdict), ...parts.map((p) => asking(of(p)).map((f) => f.reason).join('; ')),
+    return [s.name, s.passes, ...parts.map((p) => of(p).verdict),
+      ...parts.map((p) => asking(of(p)).map((f) => f.reason).join('; ')),
       ...parts.map((p) => [...new Set(asking(of(p)).map((f) => f.id).filter(Boolean))].join(' '))];
   });
   return csvText([head, ...body]);

@@ -34,7 +34,8 @@ export function parseLabels(text, file = 'labels') {
     if (!VERDICT_OF_LABEL[label]) throw new Error(`${file}, line ${line}: label "${get('label')}" is none of correct, partial, broken`);
     if (!/^WP04P[1-5]$/.test(part)) throw new Error(`${file}, line ${line}: part "${get('part')}" is none of WP04P1 … WP04P5`);
     const reasons = get('reasons');
-    return { submission: get('submission'), part, label: LABELS.includes(label) ? label : LABELS[VERDICTS.indexOf(label)], reasons, unsure: /\(unsure\)/i.test(reasons) };
+    const known = LABELS.includes(label) ? label : LABELS[VERDICTS.indexOf(label)];
+    return { submission: get('submission'), part, label: known, reasons, unsure: /\(unsure\)/i.test(reasons) };
   });
 }
 
@@ -107,7 +108,8 @@ export function agreementText(a) {
   out.push('labels: label × verdict    pass  review  fail  not graded');
   for (const l of LABELS) {
     const c = a.confusion[l];
-    out.push(`labels: ${l.padEnd(18)}${String(c.pass).padStart(6)}${String(c.review).padStart(8)}${String(c.fail).padStart(6)}${String(c['not graded']).padStart(12)}`);
+    const cells = [[c.pass, 6], [c.review, 8], [c.fail, 6], [c['not graded'], 12]].map(([n, w]) => String(n).padStart(w));
+    out.push(`labels: ${l.padEnd(18)}${cells.join('')}`);
   }
   for (const r of a.rows.filter((x) => !x.agree)) {
     out.push(`labels: ${r.submission} ${r.part}: labelled ${r.label}${r.unsure ? ' (unsure)' : ''}, graded ${r.verdict}: ${r.asking.join(' | ') || r.reasons[0] || ''}`);
@@ -120,8 +122,11 @@ export function agreementText(a) {
 /** The agreement as an HTML section for report.html. */
 export function agreementHtml(a, anchor = (r) => `#${r.submission}-${r.part}`) {
   const head = `<th>label \\ verdict</th>${VERDICTS.map((v) => `<th>${v}</th>`).join('')}<th>not graded</th>`;
-  const body = LABELS.map((l) => `<tr><th scope="row">${l} (→ ${VERDICT_OF_LABEL[l]})</th>${[...VERDICTS, 'not graded'].map((v) => `<td class="num${VERDICT_OF_LABEL[l] === v ? ' agree' : ''}">${a.confusion[l][v]}</td>`).join('')}</tr>`).join('');
-  const rows = a.rows.filter((r) => !r.agree).map((r) => `<tr><td><a href="${esc(anchor(r))}">${esc(r.submission)} ${r.part}</a></td><td>${esc(r.label)}${r.unsure ? ' (unsure)' : ''}: ${esc(r.labelReasons)}</td>` +
+  const cell = (l, v) => `<td class="num${VERDICT_OF_LABEL[l] === v ? ' agree' : ''}">${a.confusion[l][v]}</td>`;
+  const body = LABELS.map((l) => `<tr><th scope="row">${l} (→ ${VERDICT_OF_LABEL[l]})</th>`
+    + `${[...VERDICTS, 'not graded'].map((v) => cell(l, v)).join('')}</tr>`).join('');
+  const rows = a.rows.filter((r) => !r.agree).map((r) => `<tr><td><a href="${esc(anchor(r))}">${esc(r.submission)} ${r.part}</a></td>`
+    + `<td>${esc(r.label)}${r.unsure ? ' (unsure)' : ''}: ${esc(r.labelReasons)}</td>` +
     `<td>${esc(r.verdict)}: ${esc(r.asking.join(' | ') || r.reasons[0] || '')}</td></tr>`).join('');
   return `<section id="labels"><h2>Against the teacher's labels</h2><p>${a.agree} of ${a.total} labelled parts get their label's verdict (${pct(a.agree, a.total)}): ` +
     `correct → pass ${a.correctPassed} of ${a.correct}, partial → review (passed: ${a.partialPassed} of ${a.partial}), broken → fail (passed: ${a.brokenPassed} of ${a.broken}).` +

@@ -14,7 +14,12 @@ export function identityHtml(s) {
     id.userId && `user id ${esc(id.userId)}`, id.submissionId && `submission ${esc(id.submissionId)}`, id.orgDefinedId && `OrgDefinedId ${esc(id.orgDefinedId)}`,
     id.time && `handed in ${esc(id.time.replace('T', ' '))}`, id.late === true ? '<strong>late</strong>' : id.late === false ? 'on time' : '',
   ].filter(Boolean);
-  const earlier = (s.earlier || []).map((e) => `<li>${esc(e.time ? e.time.replace('T', ' ') : 'no time')}${e.late ? ' (late)' : ''}${e.submissionId ? `, submission ${esc(e.submissionId)}` : ''}: ${esc((e.source || []).join(', '))} (${e.files} file${e.files === 1 ? '' : 's'}; not graded)</li>`);
+  const earlier = (s.earlier || []).map((e) => {
+    const when = esc(e.time ? e.time.replace('T', ' ') : 'no time');
+    const id = e.submissionId ? `, submission ${esc(e.submissionId)}` : '';
+    const files = `${e.files} file${e.files === 1 ? '' : 's'}`;
+    return `<li>${when}${e.late ? ' (late)' : ''}${id}: ${esc((e.source || []).join(', '))} (${files}; not graded)</li>`;
+  });
   return `<p class="identity">${facts.join(' · ')}</p>` +
     (earlier.length ? `<p>Handed in earlier (the latest is graded):</p><ul class="earlier">${earlier.join('')}</ul>` : '') +
     (s.intakeNotes && s.intakeNotes.length ? `<p>Unpacking:</p><ul class="notes">${s.intakeNotes.map((n) => `<li>${esc(n)}</li>`).join('')}</ul>` : '');

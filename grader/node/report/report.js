@@ -20,7 +20,8 @@ function passes(parts) {
  * grid shows them (with their passes and reviews) and the agreement.
  */
 export function writeReport(out, submissions, labels = null, similar = null) {
-  const rows = submissions.map((s) => ({ ...s, passes: passes(s.parts), reviews: s.parts.filter((p) => p.verdict === 'review').length }))
+  const rows = submissions
+    .map((s) => ({ ...s, passes: passes(s.parts), reviews: s.parts.filter((p) => p.verdict === 'review').length }))
     .sort((a, b) => b.passes - a.passes || b.reviews - a.reviews || a.name.localeCompare(b.name));
   const agreed = labels ? agreement(labels, rows) : null;
   // the browsers that graded, with their versions (a class graded on two machines may name two)

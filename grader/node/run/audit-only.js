@@ -19,7 +19,8 @@ import { hrefOf } from '../../files/layout.js';
  */
 export async function auditAgain(out, rubric, progress = () => {}) {
   const partsDir = path.join(out, 'parts');
-  const files = existsSync(partsDir) ? readdirSync(partsDir).sort().flatMap((dir) => PARTS.map((part) => ({ dir, part, file: path.join(partsDir, dir, `${part}.json`) })))
+  const partFiles = (dir) => PARTS.map((part) => ({ dir, part, file: path.join(partsDir, dir, `${part}.json`) }));
+  const files = existsSync(partsDir) ? readdirSync(partsDir).sort().flatMap(partFiles)
     .filter((x) => existsSync(x.file)) : [];
   const artifactDir = ({ dir, part }) => path.join(out, 'artifacts', dir, part);
   const judged = await auditDirs(files.map(artifactDir), rubric, { progress });

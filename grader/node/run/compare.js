@@ -67,6 +67,7 @@ export function compareImages(reference, submission) {
   if (!sameBackground) notes.push(`backgrounds differ (reference rgb(${bgRef}), submission rgb(${bgSub})): the object alone is compared`);
   if (unionCount === 0) notes.push('no object in either picture: only backgrounds');
   const comparison = sameBackground ? 'full' : 'object-only';
-  return { mismatch: comparison === 'full' ? mismatchFull : mismatchObject, mismatchFull, mismatchObject, rmse, comparison, notes,
+  const mismatch = comparison === 'full' ? mismatchFull : mismatchObject;
+  return { mismatch, mismatchFull, mismatchObject, rmse, comparison, notes,
     reference, submission, diff };
 }

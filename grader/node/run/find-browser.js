@@ -104,7 +104,10 @@ export function candidates(kind, { platform, env = {}, list = () => [], home = '
   const out = [];
   const add = (file, how) => { if (file && !out.some((c) => c.file === file)) out.push({ file, how }); };
   const fixed = (file) => (root ? p.join(root, file) : file);
-  const pathDirs = (envGet(env, 'PATH', platform) || '').split(p.delimiter).map((d) => d.replace(/^"(.*)"$/, '$1')).filter((d) => d && p.isAbsolute(d));
+  const pathDirs = (envGet(env, 'PATH', platform) || '')
+    .split(p.delimiter)
+    .map((d) => d.replace(/^"(.*)"$/, '$1'))
+    .filter((d) => d && p.isAbsolute(d));
   if (platform === 'win32') {
     const prefixes = ['LOCALAPPDATA', 'ProgramFiles', 'ProgramFiles(x86)'].map((k) => envGet(env, k, platform));
     const drive = envGet(env, 'HOMEDRIVE', platform) || envGet(env, 'SystemDrive', platform);

@@ -25,6 +25,8 @@ for (const item of plan.items) {
     // (a worker's first part would otherwise pay for the page the worker's parts open in; where it
     // cannot be made, the part's own opening tries again and says why)
     await openers.student.warm().catch(() => {});
-    await runPart({ item, plan, openers, browserVersion: browserLabel(plan.browserName || 'Chromium', browser.version()), more: (seconds) => testInfo.setTimeout(testInfo.timeout + seconds * 1000) });
+    const browserVersion = browserLabel(plan.browserName || 'Chromium', browser.version());
+    const more = (seconds) => testInfo.setTimeout(testInfo.timeout + seconds * 1000);
+    await runPart({ item, plan, openers, browserVersion, more });
   });
 }

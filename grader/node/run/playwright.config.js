@@ -7,7 +7,9 @@
 import { defineConfig } from '@playwright/test';
 import { CHROMIUM, CHROMIUM_ARGS, WEBGPU_ARGS } from './chromium.js';
 
-const plan = process.env.GRADE_PLAN ? JSON.parse(await import('node:fs').then((fs) => fs.readFileSync(process.env.GRADE_PLAN, 'utf8'))) : { timeoutSeconds: 30, out: 'out/grade' };
+const plan = process.env.GRADE_PLAN
+  ? JSON.parse(await import('node:fs').then((fs) => fs.readFileSync(process.env.GRADE_PLAN, 'utf8')))
+  : { timeoutSeconds: 30, out: 'out/grade' };
 
 export default defineConfig({
   testDir: '.',
@@ -17,7 +19,12 @@ export default defineConfig({
   fullyParallel: true,
   retries: 0,
   outputDir: `${plan.out}/test-results`,
-  reporter: [process.env.GRADE_REPORTER && !process.env.GRADE_VERBOSE ? [process.env.GRADE_REPORTER, { plan: process.env.GRADE_PLAN }] : ['list'], ['blob', { outputDir: `${plan.out}/blob-report` }]],
+  reporter: [
+    process.env.GRADE_REPORTER && !process.env.GRADE_VERBOSE
+      ? [process.env.GRADE_REPORTER, { plan: process.env.GRADE_PLAN }]
+      : ['list'],
+    ['blob', { outputDir: `${plan.out}/blob-report` }],
+  ],
   use: {
     deviceScaleFactor: 1,
     viewport: { width: 900, height: 900 },

@@ -72,5 +72,6 @@ export async function drawReference({ item, plan, openers, result, graded }) {
   const stem = path.basename(item.resultFile, '.json');
   writeFileSync(path.join(dir, `${stem}-reference.png`), PNG.sync.write(cmp.reference));
   writeFileSync(path.join(dir, `${stem}-diff.png`), PNG.sync.write(cmp.diff));
-  Object.assign(result.images, { reference: hrefOf(plan.out, path.join(dir, `${stem}-reference.png`)), diff: hrefOf(plan.out, path.join(dir, `${stem}-diff.png`)) });
+  const reference = path.join(dir, `${stem}-reference.png`), diff = path.join(dir, `${stem}-diff.png`);
+  Object.assign(result.images, { reference: hrefOf(plan.out, reference), diff: hrefOf(plan.out, diff) });
 }

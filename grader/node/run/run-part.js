@@ -33,10 +33,12 @@ export async function runPart({ item, plan, openers, browserVersion = null, more
     mkdirSync(path.dirname(item.resultFile), { recursive: true });
     writeFileSync(item.resultFile, JSON.stringify(result, null, 1));
   };
-  const result = withFindings({ name: item.name, part: item.part, file: item.page, status: 'timeout', verdict: 'fail', api: null }, [timedOut(rubric)]);
+  const timedOutPart = { name: item.name, part: item.part, file: item.page, status: 'timeout', verdict: 'fail', api: null };
+  const result = withFindings(timedOutPart, [timedOut(rubric)]);
   Object.assign(result, { actions: [], controls: {}, numbers: {}, mismatch: null, rmse: null, pass: false,
     comparison: null, notes: [], errors: [], blocked: [], images: null,
-    ...(plan.browser && plan.browser !== 'chromium' ? { browser: plan.browser } : {}), ...(browserVersion ? { browserVersion } : {}) });
+    ...(plan.browser && plan.browser !== 'chromium' ? { browser: plan.browser } : {}),
+    ...(browserVersion ? { browserVersion } : {}) });
   // how the part's page was found, where its name did not say it plainly (core/part-names.js)
   if (item.foundBy) result.notes.push(item.foundBy);
   save(result); // what stays if the page never lets go: a timeout

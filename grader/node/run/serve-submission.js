@@ -34,7 +34,8 @@ export function urlOf(origin, root, rel, query = '', pathImpl = path) {
 export function fileOf(root, href, pathImpl = path) {
   let file;
   try {
-    file = fileURLToPath(new URL(`.${new URL(href).pathname}`, rootUrl(root, pathImpl)), { windows: pathImpl === path.win32 });
+    const asked = new URL(`.${new URL(href).pathname}`, rootUrl(root, pathImpl));
+    file = fileURLToPath(asked, { windows: pathImpl === path.win32 });
   } catch {
     return null;
   }
@@ -83,7 +84,9 @@ export function submissionAnswers(site) {
       if (site.former && site.former.has(url.origin)) return { abort: true }; // a part graded before, left behind
       const kind = navigation ? 'navigation or popup' : 'request';
       const entry = `${kind}: ${url.href}`;
-      if (!url.protocol.startsWith('data') && !url.protocol.startsWith('blob') && !log.blocked.includes(entry)) log.blocked.push(entry); // (once: Firefox asks again)
+      // (once: Firefox asks again)
+      const own = url.protocol.startsWith('data') || url.protocol.startsWith('blob');
+      if (!own && !log.blocked.includes(entry)) log.blocked.push(entry);
       return { abort: true };
     }
     let rel;

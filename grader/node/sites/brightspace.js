@@ -25,7 +25,8 @@ export function brightspaceTime(text) {
 
 /** The import: rows keyed on OrgDefinedId (or Username when every student has one and not every OrgDefinedId is known). */
 export function brightspaceCsv(rows, points) {
-  const key = rows.every((s) => (s.identity || {}).orgDefinedId) || !rows.every((s) => (s.identity || {}).username) ? 'orgDefinedId' : 'username';
+  const every = (key) => rows.every((s) => (s.identity || {})[key]);
+  const key = every('orgDefinedId') || !every('username') ? 'orgDefinedId' : 'username';
   const column = key === 'orgDefinedId' ? 'OrgDefinedId' : 'Username';
   return importFile(rows, points, [column, `${points.item} Points Grade`, 'End-of-Line Indicator'],
     (id, total) => (id[key] ? [`#${id[key]}`, total, '#'] : `no ${column} (give --roster)`));

@@ -18,7 +18,9 @@ const NAME = /^([^_/]+?)(_late)?_(\d+)_(\d+)_(.+)$/i;
 /** The gradebook import: Student, ID, SIS User ID, SIS Login ID, Section, the assignment. */
 export function canvasCsv(rows, points) {
   return importFile(rows, points, ['Student', 'ID', 'SIS User ID', 'SIS Login ID', 'Section', points.item],
-    (id, total) => (id.userId ? [id.rosterName || id.name, id.userId, id.sisUserId, id.sisLoginId, id.section, total] : 'no Canvas user id'));
+    (id, total) => (id.userId
+      ? [id.rosterName || id.name, id.userId, id.sisUserId, id.sisLoginId, id.section, total]
+      : 'no Canvas user id'));
 }
 
 export const canvas = {

@@ -14,8 +14,10 @@ export function pointsCsv(rows, points) {
   for (const s of rows) {
     const id = s.identity || {};
     const p = studentPoints(s, points);
-    lines.push([s.name, id.site, id.userId, id.submissionId, id.time, id.late === null || id.late === undefined ? '' : id.late ? 'late' : 'on time',
-      ...PARTS.map((k) => (p.byPart[k] === null ? '' : num(p.byPart[k]))), p.total === null ? '' : num(p.total), num(p.max), p.teacherSet.join(' ')]);
+    const late = id.late === null || id.late === undefined ? '' : id.late ? 'late' : 'on time';
+    lines.push([s.name, id.site, id.userId, id.submissionId, id.time, late,
+      ...PARTS.map((k) => (p.byPart[k] === null ? '' : num(p.byPart[k]))),
+      p.total === null ? '' : num(p.total), num(p.max), p.teacherSet.join(' ')]);
   }
   return importText(lines);
 }

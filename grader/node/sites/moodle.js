@@ -15,7 +15,9 @@ const NAME = /^(.+)_(\d+)_assignsubmission_([a-z]+)(?:_(.*))?$/;
 /** The CSV grade import: map the user on ID number or Email address; Feedback to the item's feedback. */
 export function moodleCsv(rows, points) {
   return importFile(rows, points, ['Full name', 'ID number', 'Email address', points.item, 'Feedback'],
-    (id, total, s) => (id.idNumber || id.email ? [id.rosterName || id.name, id.idNumber, id.email, total, verdictWords(s)] : 'no ID number or email (give --roster)'));
+    (id, total, s) => (id.idNumber || id.email
+      ? [id.rosterName || id.name, id.idNumber, id.email, total, verdictWords(s)]
+      : 'no ID number or email (give --roster)'));
 }
 
 export const moodle = {

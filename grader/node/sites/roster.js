@@ -31,7 +31,8 @@ export function parseRoster(text) {
     const s = Object.fromEntries(Object.keys(COLUMNS).map((k) => [k, get(k) || null]));
     // "Last, First" (Canvas), "First Last", and Canvas's download form "lastfirst"
     const commaed = /^(.*),\s*(.*)$/.exec(full);
-    s.names = [full, `${first} ${last}`, commaed ? `${commaed[2]} ${commaed[1]}` : '', commaed ? `${commaed[1]}${commaed[2]}` : '', `${last}${first}`].map(squash).filter(Boolean);
+    const swapped = commaed ? [`${commaed[2]} ${commaed[1]}`, `${commaed[1]}${commaed[2]}`] : ['', ''];
+    s.names = [full, `${first} ${last}`, ...swapped, `${last}${first}`].map(squash).filter(Boolean);
     s.display = full ? (commaed ? `${commaed[2]} ${commaed[1]}` : full) : `${first} ${last}`.trim();
     return s;
   }).filter((s) => s.names.length || s.canvasId);

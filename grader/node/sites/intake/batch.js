@@ -47,6 +47,10 @@ function writeNotUnpacked(out, s) {
   const dir = path.join(out, 'parts', safeName(s.name));
   mkdirSync(dir, { recursive: true });
   for (const part of PARTS) {
-    writeFileSync(path.join(dir, `${part}.json`), JSON.stringify({ ...withFindings({ name: s.name, part, status: NOT_UNPACKED, verdict: 'fail', pass: false }, [{ id: 'not-unpacked', level: 'fail', reason: s.error }]), api: null, actions: [], mismatch: null, rmse: null, errors: [], blocked: [] }, null, 1));
+    const notUnpacked = { id: 'not-unpacked', level: 'fail', reason: s.error };
+    const failed = { name: s.name, part, status: NOT_UNPACKED, verdict: 'fail', pass: false };
+    const result = { ...withFindings(failed, [notUnpacked]),
+      api: null, actions: [], mismatch: null, rmse: null, errors: [], blocked: [] };
+    writeFileSync(path.join(dir, `${part}.json`), JSON.stringify(result, null, 1));
   }
 }

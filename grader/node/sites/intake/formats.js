@@ -60,7 +60,9 @@ export function detectSite(tops) {
  * A student with several hand-ins (Brightspace keeps each one) is graded on the latest; the
  * earlier ones are listed with their times.
  */
-export function groupBySite(files, site = detectSite([...new Map(files.map((f) => [f.segments[0], { top: f.segments[0], isFile: f.segments.length === 1 }])).values()].filter((t) => !t.top.startsWith('.')))) {
+const topsOf = (files) =>
+  [...new Map(files.map((f) => [f.segments[0], { top: f.segments[0], isFile: f.segments.length === 1 }])).values()];
+export function groupBySite(files, site = detectSite(topsOf(files).filter((t) => !t.top.startsWith('.')))) {
   const notes = [];
   const byUser = new Map();
   const adapter = siteAdapter(site);

@@ -117,6 +117,7 @@ function write(state, segments, data, shown) {
     writeFileSync(target, data, { flag: 'wx' });
   } catch (err) {
     // a path too long or too deep for this file system, a name it refuses: this hand-in's message
-    throw new IntakeError(`"${shown.length > 120 ? `${shown.slice(0, 60)}…${shown.slice(-60)}` : shown}" could not be written here (${err.code || err.message}); nothing of it was graded`, { cause: err });
+    const short = shown.length > 120 ? `${shown.slice(0, 60)}…${shown.slice(-60)}` : shown;
+    throw new IntakeError(`"${short}" could not be written here (${err.code || err.message}); nothing of it was graded`, { cause: err });
   }
 }

@@ -59,7 +59,8 @@ const studentFolders = (folders) =>
   [...folders.entries()].filter(([, inside]) => holdsHandin(inside)).map(([name]) => name);
 
 /** Some of `names`, sorted and quoted, for a message. */
-const some = (names, n = 4) => [...names].sort().slice(0, n).map((x) => `"${x}"`).join(', ') + (names.length > n ? `, … (${names.length} in all)` : '');
+const some = (names, n = 4) =>
+  [...names].sort().slice(0, n).map((x) => `"${x}"`).join(', ') + (names.length > n ? `, … (${names.length} in all)` : '');
 
 /** What each site's download looks like, for a message. */
 const LOOKS = `${SITES.brightspace}; ${SITES.canvas}; ${SITES.moodle}; or ${SITES.folders}, each holding the student's zip or pages named as parts`;
@@ -67,7 +68,10 @@ const LOOKS = `${SITES.brightspace}; ${SITES.canvas}; ${SITES.moodle}; or ${SITE
 /** The teacher's message for a top of `files` that is no class's download. */
 function refusal(kind, files, where) {
   const { folders, loose } = topOf(files);
-  const found = [folders.size ? `${folders.size} folder(s) (${some([...folders.keys()])})` : '', loose.length ? `${loose.length} file(s) (${some(loose)})` : ''].filter(Boolean).join(' and ') || 'nothing but junk (__MACOSX/, .DS_Store, hidden files)';
+  const found = [
+    folders.size ? `${folders.size} folder(s) (${some([...folders.keys()])})` : '',
+    loose.length ? `${loose.length} file(s) (${some(loose)})` : '',
+  ].filter(Boolean).join(' and ') || 'nothing but junk (__MACOSX/, .DS_Store, hidden files)';
   const why = kind === 'handin'
     ? 'folders or pages named as parts at the top: one student\'s hand-in, not a class (grade it with npm run grade -- <its folder>)'
     : 'no folder holding a zip or a page named as a part of the worksheet, and no course site\'s names: not a download the grader knows';

@@ -71,7 +71,8 @@ export function zipEntries(bytes) {
     const name = decodeName(b.subarray(o + 46, o + 46 + nameLength), (flags & 0x800) !== 0);
     // a symbolic link: a Unix mode of S_IFLNK in the high half of the external attributes
     const symlink = madeBy === 3 && ((external >>> 16) & 0o170000) === 0o120000;
-    entries.push({ name, dir: /[/\\]$/.test(name), symlink, method, size, compressedSize, encrypted: (flags & 1) !== 0, offset });
+    const encrypted = (flags & 1) !== 0;
+    entries.push({ name, dir: /[/\\]$/.test(name), symlink, method, size, compressedSize, encrypted, offset });
     o += 46 + nameLength + extraLength + commentLength;
   }
   return entries;
