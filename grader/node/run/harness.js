@@ -22,9 +22,6 @@ for (const item of plan.items) {
   }
   test(`${item.name} ${item.part}`, async ({ browser }, testInfo) => {
     openers ??= { student: partOpener(browser, 'submission.localhost'), reference: partOpener(browser, 'reference.localhost') };
-    // (a worker's first part would otherwise pay for the page the worker's parts open in; where it
-    // cannot be made, the part's own opening tries again and says why)
-    await openers.student.warm().catch(() => {});
     const browserVersion = browserLabel(plan.browserName || 'Chromium', browser.version());
     const more = (seconds) => testInfo.setTimeout(testInfo.timeout + seconds * 1000);
     await runPart({ item, plan, openers, browserVersion, more });

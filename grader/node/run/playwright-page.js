@@ -21,7 +21,7 @@ import { FRAME_MS } from '../../core/units.js';
  * not finish loading) takes the context with it, and the next part gets a new one.
  */
 export function partOpener(browser, host) {
-  let kept = null; // { context, page, site, opened: a part was opened in it }
+  let kept = null; // { context, page, site }
   let n = 0;
   const keep = async () => {
     const site = { root: null, origin: null, log: { errors: [], blocked: [], notes: [] }, former: new Set() };
@@ -58,16 +58,11 @@ export function partOpener(browser, host) {
     await context.close().catch(() => {});
   };
   return {
-    /** Makes the context and its page now (the renderer's start, about a second): a part's time is then its own. */
-    async warm() {
-      kept ??= await keep();
-    },
     async open({ root, rel, query = '', loadSeconds, log }) {
       // the part before is left for an empty page first (its frames would run once as time is frozen
       // anew); a page that crashed, was closed or will not let go takes the context with it (its goto fails)
-      if (kept && kept.opened && !await leave(kept)) await drop();
+      if (kept && !await leave(kept)) await drop();
       kept ??= await keep();
-      kept.opened = true;
       const { page, site } = kept;
       serve(site, root, log);
       const url = urlOf(site.origin, root, rel, query).href;
