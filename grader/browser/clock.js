@@ -31,7 +31,8 @@ function frameClock(start, timersOf, frozenDate) {
     clearInterval: clear,
     requestAnimationFrame: (f) => add('frame', f, 16 - (C.ticks % 16), []),
     cancelAnimationFrame: clear,
-    requestIdleCallback: (f, opts) => add('idle', f, Math.min(opts && opts.timeout ? opts.timeout : Infinity, timers.size ? 50 : 0), []),
+    requestIdleCallback: (f, opts) =>
+      add('idle', f, Math.min(opts && opts.timeout ? opts.timeout : Infinity, timers.size ? 50 : 0), []),
     cancelIdleCallback: clear,
   };
   for (const [name, fn] of Object.entries(api)) window[name] = fn;

@@ -128,7 +128,9 @@ function flushFirst(B) {
   // whatever reads a canvas's pixels sees the held draw
   const readers = [[window.HTMLCanvasElement, ['toDataURL', 'toBlob', 'captureStream']], [window.CanvasRenderingContext2D, ['drawImage', 'createPattern']],
     [window.GPUQueue, ['copyExternalImageToTexture']]];
-  for (const [c, names] of readers) for (const k of names) if (c && typeof c.prototype[k] === 'function') c.prototype[k] = flushing(c.prototype[k]);
+  for (const [c, names] of readers) {
+    for (const k of names) if (c && typeof c.prototype[k] === 'function') c.prototype[k] = flushing(c.prototype[k]);
+  }
   if (window.createImageBitmap) window.createImageBitmap = flushing(window.createImageBitmap);
   // ... and a canvas given a size anew (its drawing buffer cleared) gets the draws made before
   for (const k of ['width', 'height']) {

@@ -59,7 +59,9 @@ export function webgpuGeometry(recorder, recordBindings, drawResolver) {
   after(D, 'createRenderPipeline', (device, [desc], pipeline) => see(device, desc, pipeline));
   after(D, 'createRenderPipelineAsync', (device, [desc], promise) => promise.then((pipeline) => see(device, desc, pipeline), () => {}));
   after(P, 'setPipeline', (pass, [pipeline]) => { stateOf(pass).pipeline = pipeline; });
-  after(P, 'setVertexBuffer', (pass, [slot, buffer, offset = 0]) => { stateOf(pass).vertex[slot] = buffer ? { buffer, offset } : null; });
+  after(P, 'setVertexBuffer', (pass, [slot, buffer, offset = 0]) => {
+    stateOf(pass).vertex[slot] = buffer ? { buffer, offset } : null;
+  });
   after(P, 'setIndexBuffer', (pass, [buffer, format, offset = 0]) => { stateOf(pass).index = { buffer, format, offset }; });
   const resolver = drawResolver({ pipes, bytesOf, FLOAT, TRIANGLES });
   const push = (pass, d) => {
@@ -72,8 +74,11 @@ export function webgpuGeometry(recorder, recordBindings, drawResolver) {
       gpu: pipe && { desc: pipe.desc, vertex: snap.vertex, index: snap.index, groups: [...st.groups], size: st.size,
         call: d } });
   };
-  after(P, 'draw', (pass, [count, instances = 1, first = 0, firstInstance = 0]) => push(pass, { count: count | 0, first: first | 0, indexed: false, instances, firstInstance }));
-  after(P, 'drawIndexed', (pass, [count, instances = 1, firstIndex = 0, baseVertex = 0, firstInstance = 0]) => push(pass, { count: count | 0, first: firstIndex | 0, base: baseVertex | 0, indexed: true, instances, firstInstance }));
+  after(P, 'draw', (pass, [count, instances = 1, first = 0, firstInstance = 0]) =>
+    push(pass, { count: count | 0, first: first | 0, indexed: false, instances, firstInstance }));
+  after(P, 'drawIndexed', (pass, [count, instances = 1, firstIndex = 0, baseVertex = 0, firstInstance = 0]) =>
+    push(pass, { count: count | 0, first: firstIndex | 0, base: baseVertex | 0, indexed: true, instances,
+      firstInstance }));
 }
 
 /**
@@ -94,12 +99,14 @@ export function webgpuDrawResolver({ pipes, bytesOf, FLOAT, TRIANGLES }) {
         const size = SIZES[a.format] || 0;
         const data = bound && { bytes: bytesOf.get(bound.buffer) || null, size, type: size ? FLOAT : 0,
           stride: b.stride, offset: bound.offset + a.offset, enabled: true };
-        attributes.push({ name: input.name, type: size >= 3 ? `vec${size}` : a.format, position: a.location === pipe.inputs.position, data });
+        const type = size >= 3 ? `vec${size}` : a.format;
+        attributes.push({ name: input.name, type, position: a.location === pipe.inputs.position, data });
       }
     });
     const index = d.indexed && st.index;
     const bytes = index && index.format === 'uint32' ? 4 : 2;
-    return { mode: pipe.topology === 'triangle-list' ? TRIANGLES : -1, first: d.first, count: d.count, indexed: d.indexed, cull: pipe.cull,
+    return { mode: pipe.topology === 'triangle-list' ? TRIANGLES : -1, first: d.first, count: d.count, indexed: d.indexed,
+      cull: pipe.cull,
       type: bytes === 4 ? 0x1405 : 0x1403, offset: index ? index.offset + d.first * bytes : 0, base: d.base || 0,
       indices: index ? bytesOf.get(index.buffer) || null : null, attributes };
   };
@@ -114,7 +121,9 @@ export function webgpuDrawResolver({ pipes, bytesOf, FLOAT, TRIANGLES }) {
 export function webgpuBindings(after, stateOf) {
   const groupsOf = new WeakMap(); // GPUBindGroup → its entries ({ binding, resource })
   const textureOf = new WeakMap(); // GPUTextureView → its GPUTexture
-  after(GPUDevice.prototype, 'createBindGroup', (device, [desc], group) => groupsOf.set(group, [...((desc && desc.entries) || [])].map((e) => ({ binding: e.binding, resource: e.resource }))));
+  after(GPUDevice.prototype, 'createBindGroup', (device, [desc], group) =>
+    groupsOf.set(group, [...((desc && desc.entries) || [])]
+      .map((e) => ({ binding: e.binding, resource: e.resource }))));
   after(GPUTexture.prototype, 'createView', (texture, args, view) => textureOf.set(view, texture));
   // the size of the texture a pass draws into (its first colour attachment's)
   after(GPUCommandEncoder.prototype, 'beginRenderPass', (encoder, [desc], pass) => {
@@ -128,7 +137,8 @@ export function webgpuBindings(after, stateOf) {
   });
   return (device, desc, code) => {
     const v = desc.vertex || {}, depth = desc.depthStencil;
-    return { device, code, entryPoint: v.entryPoint, constants: v.constants, buffers: v.buffers, primitive: desc.primitive || {}, depth: depth ? { compare: depth.depthCompare || 'less' } : null };
+    return { device, code, entryPoint: v.entryPoint, constants: v.constants, buffers: v.buffers,
+      primitive: desc.primitive || {}, depth: depth ? { compare: depth.depthCompare || 'less' } : null };
   };
 }
 

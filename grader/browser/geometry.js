@@ -14,7 +14,9 @@ import { surfaceReaderScript, picturesScript } from './surface.js';
 import { webgpuSurfaceReaderScript } from './surface-webgpu.js';
 
 /** The init script as text: the recorders of what a page sends (its geometry, WebGL and WebGPU, and its uniforms) with the analysis in it. */
-export const recordersInit = `(${geometryScript})(${meshAnalysisScript}, ${webgpuRecorderScript}, ${sentScript}, ${geometryStore}, ${frameRecorder}, ${recordWebGL}, ${geometryReader}, ${programInfoOf}, ${surfaceReaderScript}, ${webgpuSurfaceReaderScript(picturesScript)});`;
+const recorders = [meshAnalysisScript, webgpuRecorderScript, sentScript, geometryStore, frameRecorder, recordWebGL,
+  geometryReader, programInfoOf, surfaceReaderScript, webgpuSurfaceReaderScript(picturesScript)];
+export const recordersInit = `(${geometryScript})(${recorders.join(', ')});`;
 
 /** The init script's body (its parts are passed in as arguments: the script is their text). */
 function geometryScript(analyseMesh, recordWebGPU, recordSent, geometryStore, frameRecorder, recordWebGL,
@@ -139,7 +141,9 @@ function frameRecorder({ rec, HISTORY, MAX_DRAWS, TRIANGLES, stateOf, newVao, va
     const f = frameOf(d.count);
     const st = stateOf(gl), vao = st.vao;
     if (!vao.snap) vao.snap = vao.attribs.map((a) => a && { ...a });
-    const cull = grade && grade.cullOn ? `${grade.faces.cullMode === 'front-and-back' ? 'both' : grade.faces.cullMode || 'back'}/${grade.faces.frontFace || 'ccw'}` : 'off';
+    const faces = grade && grade.faces;
+    const cullMode = grade && grade.cullOn ? (faces.cullMode === 'front-and-back' ? 'both' : faces.cullMode || 'back') : null;
+    const cull = cullMode ? `${cullMode}/${faces.frontFace || 'ccw'}` : 'off';
     const prev = f.draws[f.draws.length - 1];
     if (
       prev &&
@@ -221,8 +225,10 @@ function recordWebGL({ wrap, stateOf, bytesOf, copy, changed, bindVao, closeFram
       rec.clears++;
       closeFrame();
     });
-    wrap(proto, 'drawArrays', (gl, [mode, first, count]) => draw(gl, { mode, first: first | 0, count: Math.max(0, count | 0), indexed: false }));
-    wrap(proto, 'drawElements', (gl, [mode, count, type, offset]) => draw(gl, { mode, count: Math.max(0, count | 0), type, offset: offset | 0, indexed: true }));
+    wrap(proto, 'drawArrays', (gl, [mode, first, count]) =>
+      draw(gl, { mode, first: first | 0, count: Math.max(0, count | 0), indexed: false }));
+    wrap(proto, 'drawElements', (gl, [mode, count, type, offset]) =>
+      draw(gl, { mode, count: Math.max(0, count | 0), type, offset: offset | 0, indexed: true }));
     // (WebGL 1's vertex array objects come from an extension)
     const getExtension = proto.getExtension;
     proto.getExtension = function (name) {

@@ -217,7 +217,9 @@ function watchWaits() {
     // a browser without WebGPU (Firefox ESR): a page that asks for navigator.gpu gets undefined, as
     // it would, and the grader knows it asked (a WebGPU part is then not graded here, never failed)
     if (!('gpu' in navigator)) {
-      Object.defineProperty(Navigator.prototype, 'gpu', { configurable: true, enumerable: false, get() { g.webgpuMissing = true; return undefined; } });
+      Object.defineProperty(Navigator.prototype, 'gpu', {
+        configurable: true, enumerable: false, get() { g.webgpuMissing = true; return undefined; },
+      });
     }
   }
 }
@@ -230,7 +232,9 @@ function watchListeners() {
     if (this instanceof Element) {
       const set = this.__gradeEvents || (this.__gradeEvents = new Set());
       set.add(type);
-      if ((type === 'input' || type === 'change') && typeof rest[0] === 'function') (this.__gradeHandlers ||= []).push(String(rest[0]).slice(0, 200));
+      if ((type === 'input' || type === 'change') && typeof rest[0] === 'function') {
+        (this.__gradeHandlers ||= []).push(String(rest[0]).slice(0, 200));
+      }
     }
     return add.call(this, type, ...rest);
   };
@@ -252,7 +256,9 @@ function controlsInterface() {
     if (!r.width || !r.height) return { ok: false, why: 'it is not visible' };
     const x = r.left + r.width / 2, y = r.top + r.height / 2;
     const hit = document.elementFromPoint(x, y);
-    if (!hit || !(hit === el || el.contains(hit) || hit.control === el)) return { ok: false, why: `another element (${hit ? hit.tagName.toLowerCase() : 'none'}) covers it` };
+    if (!hit || !(hit === el || el.contains(hit) || hit.control === el)) {
+      return { ok: false, why: `another element (${hit ? hit.tagName.toLowerCase() : 'none'}) covers it` };
+    }
     const opts = { bubbles: true, cancelable: true, composed: true, clientX: x, clientY: y, button: 0, view: window };
     el.dispatchEvent(new PointerEvent('pointerdown', { ...opts, buttons: 1, pointerType: 'mouse', isPrimary: true }));
     el.dispatchEvent(new MouseEvent('mousedown', { ...opts, buttons: 1 }));
@@ -280,7 +286,8 @@ function controlsInterface() {
     let text = words('previousSibling');
     if (after) text += ' ' + words('nextSibling');
     const cell = el.parentElement;
-    if (!text.trim() && cell && /^T[DH]$/.test(cell.tagName) && cell.querySelectorAll(CONTROL).length === 1 && cell.previousElementSibling) {
+    const aloneInCell = cell && /^T[DH]$/.test(cell.tagName) && cell.querySelectorAll(CONTROL).length === 1;
+    if (!text.trim() && aloneInCell && cell.previousElementSibling) {
       text = cell.previousElementSibling.textContent;
     }
     return text.trim();
@@ -292,21 +299,26 @@ function controlsInterface() {
     return els.map((el, index) => {
       el.setAttribute('data-grade-control', String(index));
       const labels = el.labels ? [...el.labels].map((l) => l.textContent) : [];
-      const prev = el.previousElementSibling && /^(LABEL|SPAN|B|P)$/.test(el.previousElementSibling.tagName) ? el.previousElementSibling.textContent : '';
+      const before = el.previousElementSibling;
+      const prev = before && /^(LABEL|SPAN|B|P)$/.test(before.tagName) ? before.textContent : '';
       const parentText = el.parentElement && el.parentElement.tagName === 'LABEL' ? el.parentElement.textContent : '';
       const type = el.tagName === 'INPUT' ? (el.type || 'text') : el.tagName.toLowerCase();
       // an input or select without a label is named by the words beside it: "Diffuse k<sub>d</sub>: <input>",
       // "<input type=checkbox> Orbit", or the table cell before its own
       const nearby = el.tagName === 'INPUT' || el.tagName === 'SELECT' ? nearbyText(el, type === 'checkbox' || type === 'radio') : '';
-      const text = [el.textContent, el.value && el.tagName !== 'INPUT' ? '' : '', el.getAttribute('aria-label'), el.title, ...labels, parentText, prev, nearby]
+      const own = [el.textContent, el.value && el.tagName !== 'INPUT' ? '' : '', el.getAttribute('aria-label'), el.title];
+      const text = [...own, ...labels, parentText, prev, nearby]
         .filter(Boolean).join(' ').replace(/\s+/g, ' ').trim();
       const events = [...(el.__gradeEvents || [])];
       for (const ev of ['click', 'input', 'change']) if (el['on' + ev] && !events.includes(ev)) events.push(ev);
       // a slider's handlers, as text: changeKs(0, v), changeKs(1, v), changeKs(2, v) set one parameter's channels
-      const handler = /^(range|number|color)$/.test(type) ? [el.oninput, el.onchange, ...(el.__gradeHandlers || [])].filter(Boolean).map((f) => String(f).slice(0, 200)).join(' ') : '';
-      return { index, type, id: el.id || '', name: el.name || '', text: type === 'submit' || type === 'button' ? (el.value + ' ' + text).trim() : text,
+      const handlers = () => [el.oninput, el.onchange, ...(el.__gradeHandlers || [])].filter(Boolean);
+      const handler = /^(range|number|color)$/.test(type) ? handlers().map((f) => String(f).slice(0, 200)).join(' ') : '';
+      return { index, type, id: el.id || '', name: el.name || '',
+        text: type === 'submit' || type === 'button' ? (el.value + ' ' + text).trim() : text,
         value: el.value, min: el.min, max: el.max, step: el.step, checked: el.checked, disabled: el.disabled, events,
-        visible: el.getClientRects().length > 0, options: el.tagName === 'SELECT' ? [...el.options].map((o) => o.value) : undefined, ...(handler ? { handler } : {}) };
+        visible: el.getClientRects().length > 0,
+        options: el.tagName === 'SELECT' ? [...el.options].map((o) => o.value) : undefined, ...(handler ? { handler } : {}) };
     }).filter((c) => c.visible && !['hidden', 'text', 'number', 'file'].includes(c.type) || c.type === 'number');
   };
 

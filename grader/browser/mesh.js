@@ -146,7 +146,8 @@ function meshesOf(tris, FLOAT, reader, indexer) {
           : pos.data.type !== FLOAT ? `${pos.name} is not made of floats` : !indexer(d) ? 'the index buffer\'s data was not seen' : null;
     if (why) return { why, position };
     position = pos.name;
-    const others = d.attributes.filter((a) => !a.position && /^vec[34]$/.test(a.type) && a.data && a.data.size >= 3 && reader(a.data, FLOAT))
+    const others = d.attributes
+      .filter((a) => !a.position && /^vec[34]$/.test(a.type) && a.data && a.data.size >= 3 && reader(a.data, FLOAT))
       .map((a) => ({ name: a.name, read: reader(a.data, FLOAT), size: a.data.size }));
     meshes.push({
       d,

@@ -24,7 +24,8 @@ export function nativesScript() {
     }
     out.gpu = Object.freeze(gpu);
   }
-  Object.defineProperty(window, '__glNative', { value: Object.freeze(out), enumerable: false, writable: false, configurable: false });
+  const frozen = { value: Object.freeze(out), enumerable: false, writable: false, configurable: false };
+  Object.defineProperty(window, '__glNative', frozen);
 }
 
 /** The init script as text. */

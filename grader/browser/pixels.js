@@ -22,7 +22,8 @@ export function pixelsScript() {
 
   /** The canvas the grader reads: the largest visible one, or null. */
   const target = () => {
-    const all = [...N.querySelectorAll.call(document, 'canvas')].filter((c) => size(c).width > 0 && size(c).height > 0 && N.getClientRects.call(c).length);
+    const shown = (c) => size(c).width > 0 && size(c).height > 0 && N.getClientRects.call(c).length;
+    const all = [...N.querySelectorAll.call(document, 'canvas')].filter(shown);
     return all.length
       ? all.reduce((a, b) => (size(b).width * size(b).height > size(a).width * size(a).height ? b : a))
       : null;

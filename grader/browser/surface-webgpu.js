@@ -27,7 +27,8 @@ export function wgslForSurface(code, entryPoint) {
   if (params.some((p) => !p)) return { why: 'the vertex entry point\'s parameters could not be read' };
   const size = (t) => { const m = /^vec([234])/.exec(t); return m ? Number(m[1]) : 0; };
   const vector = (i) => size(i.type) >= 3;
-  const position = inputs.find((i) => vector(i) && /pos|vert/i.test(i.name)) || inputs.find((i) => i.at === 0 && size(i.type) >= 2);
+  const position = inputs.find((i) => vector(i) && /pos|vert/i.test(i.name))
+    || inputs.find((i) => i.at === 0 && size(i.type) >= 2);
   if (!position) return { why: 'the vertex entry point\'s position input was not found' };
   const normal = inputs.find((i) => i !== position && vector(i) && /norm/i.test(i.name)) || null;
   const n = size(position.type);
@@ -71,7 +72,9 @@ export function layoutEntries(code, group, entries) {
   const declared = new Map();
   for (const m of src.matchAll(DECL)) {
     const g = /@group\s*\(\s*(\d+)/.exec(m[1]), b = /@binding\s*\(\s*(\d+)/.exec(m[1]);
-    if (g && b && Number(g[1]) === group) declared.set(Number(b[1]), { space: (m[2] || '').replace(/[<>\s]/g, ''), type: m[3].trim() });
+    if (g && b && Number(g[1]) === group) {
+      declared.set(Number(b[1]), { space: (m[2] || '').replace(/[<>\s]/g, ''), type: m[3].trim() });
+    }
   }
   const VERTEX = 1, FRAGMENT = 2;
   const out = [];
@@ -86,10 +89,14 @@ export function layoutEntries(code, group, entries) {
     } else if (/^sampler_comparison/.test(d.type)) out.push({ binding: e.binding, visibility: VERTEX | FRAGMENT, sampler: { type: 'comparison' } });
     else if (/^sampler/.test(d.type)) out.push({ binding: e.binding, visibility: VERTEX | FRAGMENT, sampler: { type: 'filtering' } });
     else if (/^texture_external/.test(d.type)) out.push({ binding: e.binding, visibility: VERTEX | FRAGMENT, externalTexture: {} });
-    else if (/^texture_depth/.test(d.type)) out.push({ binding: e.binding, visibility: VERTEX | FRAGMENT, texture: { sampleType: 'depth', viewDimension: view(d.type), multisampled: /multisampled/.test(d.type) } });
+    else if (/^texture_depth/.test(d.type)) {
+      const texture = { sampleType: 'depth', viewDimension: view(d.type), multisampled: /multisampled/.test(d.type) };
+      out.push({ binding: e.binding, visibility: VERTEX | FRAGMENT, texture });
+    }
     else if (/^texture_(1d|2d|3d|cube|multisampled)/.test(d.type)) {
       const sampleType = /<\s*u32/.test(d.type) ? 'uint' : /<\s*i32/.test(d.type) ? 'sint' : 'unfilterable-float'; // (the most a float texture's format allows)
-      out.push({ binding: e.binding, visibility: VERTEX | FRAGMENT, texture: { sampleType, viewDimension: view(d.type), multisampled: /multisampled/.test(d.type) } });
+      const texture = { sampleType, viewDimension: view(d.type), multisampled: /multisampled/.test(d.type) };
+      out.push({ binding: e.binding, visibility: VERTEX | FRAGMENT, texture });
     } else return { why: `binding ${e.binding} of group ${group} (${d.type}) is of a kind the grader does not bind again` };
   }
   return out;
@@ -189,7 +196,8 @@ function pipelineMaker(dev, call) {
       const prim = desc.primitive || {};
       byDesc.set(key, dev('createRenderPipeline', {
         layout: dev('createPipelineLayout', { bindGroupLayouts: layouts.map((entries) => dev('createBindGroupLayout', { entries })) }),
-        vertex: { module, entryPoint: '_grVs', buffers: desc.buffers, ...(desc.constants ? { constants: desc.constants } : {}) },
+        vertex: { module, entryPoint: '_grVs', buffers: desc.buffers,
+          ...(desc.constants ? { constants: desc.constants } : {}) },
         fragment: { module, entryPoint: '_grFs', targets: [{ format: 'rgba32float' }], constants: { _grWhat: what } },
         primitive: { topology: 'triangle-list', cullMode: prim.cullMode || 'none', frontFace: prim.frontFace || 'ccw' },
         depthStencil: { format: 'depth32float', depthWriteEnabled: !!desc.depth, depthCompare: desc.depth ? desc.depth.compare : 'always' },
@@ -217,7 +225,8 @@ async function encodePasses(mine, { width, height }, { call, dev, made, maker })
     const layouts = maker.layoutsOf(desc, groups);
     return { layouts, groups: layouts.map((entries, i) => {
       const used = new Set(entries.map((e) => e.binding));
-      return dev('createBindGroup', { layout: dev('createBindGroupLayout', { entries }), entries: groups[i] ? groups[i].entries.filter((e) => used.has(e.binding)) : [] });
+      const kept = groups[i] ? groups[i].entries.filter((e) => used.has(e.binding)) : [];
+      return dev('createBindGroup', { layout: dev('createBindGroupLayout', { entries }), entries: kept });
     }) };
   });
   const encoder = dev('createCommandEncoder');

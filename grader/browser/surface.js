@@ -103,14 +103,18 @@ function shaders(gl, page, info, program) {
     const s = gl.createShader(type);
     gl.shaderSource(s, source);
     gl.compileShader(s);
-    if (!gl.getShaderParameter(s, gl.COMPILE_STATUS)) throw new Error(`${type === VERTEX ? 'vertex' : 'fragment'} shader: ${(gl.getShaderInfoLog(s) || '').trim().slice(0, 200)}`);
+    if (!gl.getShaderParameter(s, gl.COMPILE_STATUS)) {
+      throw new Error(`${type === VERTEX ? 'vertex' : 'fragment'} shader: ${(gl.getShaderInfoLog(s) || '').trim().slice(0, 200)}`);
+    }
     return s;
   };
   const prog = gl.createProgram();
   gl.attachShader(prog, compile(VERTEX, vsrc));
   gl.attachShader(prog, compile(FRAGMENT, fsrc));
   gl.linkProgram(prog);
-  if (!gl.getProgramParameter(prog, gl.LINK_STATUS)) throw new Error(`link: ${(gl.getProgramInfoLog(prog) || '').trim().slice(0, 200)}`);
+  if (!gl.getProgramParameter(prog, gl.LINK_STATUS)) {
+    throw new Error(`link: ${(gl.getProgramInfoLog(prog) || '').trim().slice(0, 200)}`);
+  }
   return { prog, info, normal };
 }
 

@@ -37,24 +37,31 @@ export function tamperScript() {
     GPURenderPassEncoder: ['setPipeline', 'setVertexBuffer', 'setIndexBuffer', 'draw', 'drawIndexed'], GPUShaderModule: ['getCompilationInfo'],
   };
   names.WebGL2RenderingContext = [...names.WebGLRenderingContext, 'bindVertexArray'];
-  for (const [cls, list] of Object.entries(names)) for (const n of list) watch(`${cls}.prototype.${n}`, protos[cls] && protos[cls].prototype, n);
+  for (const [cls, list] of Object.entries(names)) {
+    for (const n of list) watch(`${cls}.prototype.${n}`, protos[cls] && protos[cls].prototype, n);
+  }
   for (const n of ['Date', 'setTimeout', 'setInterval', 'requestAnimationFrame', 'fetch']) watch(n, window, n);
   watch('Date.now', window.Date, 'now');
   // the grader's own methods and the frozen clock's now(): read-only, and a page that assigns to one is noted
   const tried = new Set();
   const now = performance.now;
-  try { Object.defineProperty(performance, 'now', { get: () => now, set: () => { tried.add('performance.now'); }, configurable: true, enumerable: true }); } catch { /* kept as it is */ }
+  const nowGuard = { get: () => now, set: () => { tried.add('performance.now'); }, configurable: true, enumerable: true };
+  try { Object.defineProperty(performance, 'now', nowGuard); } catch { /* kept as it is */ }
   watch('performance.now', performance, 'now');
   const g = window.__grade;
   if (g) {
     for (const n of ['state', 'pixels', 'readBack', 'click', 'controls', 'setValue']) {
       const f = g[n];
       if (typeof f !== 'function') continue;
-      try { Object.defineProperty(g, n, { get: () => f, set: () => { tried.add(`window.__grade.${n}`); }, configurable: false, enumerable: true }); } catch { /* (already fixed) */ }
+      const guard = { get: () => f, set: () => { tried.add(`window.__grade.${n}`); }, configurable: false, enumerable: true };
+      try { Object.defineProperty(g, n, guard); } catch { /* (already fixed) */ }
     }
   }
   // a page that asks whether a driver runs it is told no, as a student's own browser would, and noted
-  try { Object.defineProperty(Navigator.prototype, 'webdriver', { configurable: true, enumerable: true, get: () => { tried.add('navigator.webdriver (it asked whether a driver runs it)'); return false; } }); } catch { /* kept as it is */ }
+  const asked = () => { tried.add('navigator.webdriver (it asked whether a driver runs it)'); return false; };
+  try {
+    Object.defineProperty(Navigator.prototype, 'webdriver', { configurable: true, enumerable: true, get: asked });
+  } catch { /* kept as it is */ }
 
   const rec = {};
   /** The hooks the page has replaced (or tried to) since it started, by name. */

@@ -102,7 +102,9 @@ function copier(state, realSubmit, toRGBA) {
 /** The stand-in for a canvas's 'webgpu' context: an ordinary texture handed out, the configured ones kept in `contexts`. */
 function capturedContextClass(realGetContext, contexts) {
   return class CapturedCanvasContext {
-    constructor(canvas) { this.canvas = canvas; this.config = null; this.texture = null; this.ctx2d = realGetContext.call(canvas, '2d'); }
+    constructor(canvas) {
+      this.canvas = canvas; this.config = null; this.texture = null; this.ctx2d = realGetContext.call(canvas, '2d');
+    }
     configure(config) {
       if (!config || !config.device) throw new TypeError("GPUCanvasContext.configure: 'device' is required");
       this.config = { ...config };

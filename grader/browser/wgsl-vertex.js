@@ -48,7 +48,12 @@ export function wgslVertexEntry(code, entryPoint) {
   const inputs = [];
   for (const p of params.filter(Boolean)) {
     if (location(p.attrs) !== null) inputs.push({ at: location(p.attrs), name: p.name, path: p.name, type: p.type });
-    else for (const m of structOf(p.type) || []) if (location(m.attrs) !== null) inputs.push({ at: location(m.attrs), name: m.name, path: `${p.name}.${m.name}`, type: m.type });
+    else {
+      for (const m of structOf(p.type) || []) {
+        const at = location(m.attrs);
+        if (at !== null) inputs.push({ at, name: m.name, path: `${p.name}.${m.name}`, type: m.type });
+      }
+    }
   }
   const resultType = body < 0 ? '' : src.slice(k, body).replace(/^\s*->/, '').replace(new RegExp(`^\\s*${ATTRS.source}`), '').trim();
   return { src, at: entry.index, paramsText, params, resultType, body, inputs, structOf };
