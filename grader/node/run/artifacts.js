@@ -10,7 +10,7 @@ import { PNG } from 'pngjs';
 import { ARTIFACT_SCHEMA, currentFacts } from '../../core/artifact-schema.js';
 
 /** A picture ({ width, height, data }) as PNG bytes: RGB where every pixel is opaque (the same pixels read back), else RGBA. */
-export function pngOf(img) {
+function pngOf(img) {
   const p = new PNG({ width: img.width, height: img.height });
   p.data.set(img.data);
   let opaque = true;

@@ -22,8 +22,8 @@ export function forgetDrawings() {
 
 /**
  * Our page for `query` drawn in a page that openers.reference opens: { opened, img, why, scene,
- * complete } (complete: nothing failed),
- * img null where it drew nothing; a failure after the picture was taken keeps the picture.
+ * complete }. img is null where it drew nothing; complete says nothing failed (a failure after the
+ * picture was taken keeps the picture, but the drawing is not kept for other parts).
  */
 async function drawOurs({ item, plan, openers, query, judged, notes }) {
   const refLog = { errors: [], blocked: [], notes: [] };
@@ -70,8 +70,8 @@ export async function drawReference({ item, plan, openers, result, graded }) {
   result.notes.push(...cmp.notes, `the reference is our page at the same canvas size${result.referenceState && result.referenceState.light ? ', lit from the fitted light' : ''}; the difference is evidence, the verdict comes from the checks`);
   const dir = path.dirname(item.resultFile);
   const stem = path.basename(item.resultFile, '.json');
-  writeFileSync(path.join(dir, `${stem}-reference.png`), PNG.sync.write(cmp.reference));
-  writeFileSync(path.join(dir, `${stem}-diff.png`), PNG.sync.write(cmp.diff));
   const reference = path.join(dir, `${stem}-reference.png`), diff = path.join(dir, `${stem}-diff.png`);
+  writeFileSync(reference, PNG.sync.write(cmp.reference));
+  writeFileSync(diff, PNG.sync.write(cmp.diff));
   Object.assign(result.images, { reference: hrefOf(plan.out, reference), diff: hrefOf(plan.out, diff) });
 }
