@@ -123,10 +123,10 @@ export function agreementText(a) {
 export function agreementHtml(a, anchor = (r) => `#${r.submission}-${r.part}`) {
   const head = `<th>label \\ verdict</th>${VERDICTS.map((v) => `<th>${v}</th>`).join('')}<th>not graded</th>`;
   const cell = (l, v) => `<td class="num${VERDICT_OF_LABEL[l] === v ? ' agree' : ''}">${a.confusion[l][v]}</td>`;
-  const body = LABELS.map((l) => `<tr><th scope="row">${l} (→ ${VERDICT_OF_LABEL[l]})</th>`
-    + `${[...VERDICTS, 'not graded'].map((v) => cell(l, v)).join('')}</tr>`).join('');
-  const rows = a.rows.filter((r) => !r.agree).map((r) => `<tr><td><a href="${esc(anchor(r))}">${esc(r.submission)} ${r.part}</a></td>`
-    + `<td>${esc(r.label)}${r.unsure ? ' (unsure)' : ''}: ${esc(r.labelReasons)}</td>` +
+  const body = LABELS.map((l) => `<tr><th scope="row">${l} (→ ${VERDICT_OF_LABEL[l]})</th>` +
+    `${[...VERDICTS, 'not graded'].map((v) => cell(l, v)).join('')}</tr>`).join('');
+  const rows = a.rows.filter((r) => !r.agree).map((r) => `<tr><td><a href="${esc(anchor(r))}">${esc(r.submission)} ${r.part}</a></td>` +
+    `<td>${esc(r.label)}${r.unsure ? ' (unsure)' : ''}: ${esc(r.labelReasons)}</td>` +
     `<td>${esc(r.verdict)}: ${esc(r.asking.join(' | ') || r.reasons[0] || '')}</td></tr>`).join('');
   return `<section id="labels"><h2>Against the teacher's labels</h2><p>${a.agree} of ${a.total} labelled parts get their label's verdict (${pct(a.agree, a.total)}): ` +
     `correct → pass ${a.correctPassed} of ${a.correct}, partial → review (passed: ${a.partialPassed} of ${a.partial}), broken → fail (passed: ${a.brokenPassed} of ${a.broken}).` +

@@ -16,9 +16,9 @@ export function identityHtml(s) {
   ].filter(Boolean);
   const earlier = (s.earlier || []).map((e) => {
     const when = esc(e.time ? e.time.replace('T', ' ') : 'no time');
-    const id = e.submissionId ? `, submission ${esc(e.submissionId)}` : '';
+    const submission = e.submissionId ? `, submission ${esc(e.submissionId)}` : '';
     const files = `${e.files} file${e.files === 1 ? '' : 's'}`;
-    return `<li>${when}${e.late ? ' (late)' : ''}${id}: ${esc((e.source || []).join(', '))} (${files}; not graded)</li>`;
+    return `<li>${when}${e.late ? ' (late)' : ''}${submission}: ${esc((e.source || []).join(', '))} (${files}; not graded)</li>`;
   });
   return `<p class="identity">${facts.join(' · ')}</p>` +
     (earlier.length ? `<p>Handed in earlier (the latest is graded):</p><ul class="earlier">${earlier.join('')}</ul>` : '') +

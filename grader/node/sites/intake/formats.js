@@ -53,6 +53,10 @@ export function detectSite(tops) {
   return best;
 }
 
+/** The tops of `files` (their first segments), each once: { top, isFile }. */
+const topsOf = (files) =>
+  [...new Map(files.map((f) => [f.segments[0], { top: f.segments[0], isFile: f.segments.length === 1 }])).values()];
+
 /**
  * The download's hand-ins: `files` ([{ segments, ... }], paths in the download) grouped by student;
  * `site`: the download's site, as detectSite tells it from the names at the top when not given.
@@ -60,8 +64,6 @@ export function detectSite(tops) {
  * A student with several hand-ins (Brightspace keeps each one) is graded on the latest; the
  * earlier ones are listed with their times.
  */
-const topsOf = (files) =>
-  [...new Map(files.map((f) => [f.segments[0], { top: f.segments[0], isFile: f.segments.length === 1 }])).values()];
 export function groupBySite(files, site = detectSite(topsOf(files).filter((t) => !t.top.startsWith('.')))) {
   const notes = [];
   const byUser = new Map();
