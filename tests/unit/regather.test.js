@@ -13,6 +13,7 @@ import { fileURLToPath } from 'node:url';
 import { auditDirs } from '../../grader/node/run/audit-pool.js';
 import { regatherLines } from '../../grader/node/run/audit-only.js';
 import { recording, staleKeys } from '../../grader/core/gather/reads.js';
+import { memo } from '../../grader/core/computed/memo.js';
 import { rolesInWords } from '../../grader/core/computed/roles.js';
 import { currentFacts } from '../../grader/core/artifact-schema.js';
 import { mergeRubric } from '../../grader/core/rubric.js';
@@ -39,6 +40,19 @@ test('the recorder notes each key read once, with its value; staleKeys names the
   assert.deepEqual(staleKeys({ ...into, 'controls.orbit': 'orbit' }, { thresholds: { a: 2, b: [2, 3] }, controls: { orbit: 'orbit|spin' } }), ['a', 'controls.orbit']);
   assert.deepEqual(staleKeys({ 'parts.WP04P1.must': ['sphere'] }, { thresholds: {}, parts: { WP04P1: { must: ['sphere', 'perspective'] } } }), ['parts.WP04P1.must']);
   assert.equal(staleKeys(undefined, rubric), null); // gathered before artifacts kept what they read: not known
+});
+
+test("a fit made in gathering (thresholds read through the recorder) is the audit's (thresholds as they are): made once, its reads recorded", () => {
+  const thresholds = { k: 2, unread: 3 }, into = {};
+  let made = 0;
+  const fit = memo((img, t) => (made++, img.v * t.k));
+  const img = { v: 5 };
+  assert.equal(fit(img, recording(thresholds, into)), 10); // gathering
+  assert.deepEqual(into, { k: 2 });
+  assert.equal(fit(img, thresholds), 10); // the audit, later in the same worker
+  assert.equal(made, 1, 'the audit made the fit again');
+  assert.equal(fit({ v: 5 }, thresholds), 10); // another picture: its own fit
+  assert.equal(made, 2);
 });
 
 test('--audit-only under a changed sliderChange names the parts whose gathering read it, and no others', async () => {

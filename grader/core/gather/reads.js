@@ -4,16 +4,18 @@
 // judged. The session reads the rubric through recorders, and the artifact keeps every key read
 // with its value (facts.gatheredWith): --audit-only under another rubric names the parts whose
 // gathering a changed key would change (staleKeys), and --regather-changed gathers them again.
+import { readsAs } from '../computed/memo.js';
 
 /** `obj` (a part of the rubric) read through a recorder: each own key read is noted in `into` as `prefix + key` → its value. */
 export function recording(obj, into, prefix = '') {
-  return new Proxy(obj, {
+  const view = new Proxy(obj, {
     get(target, key, receiver) {
       const v = Reflect.get(target, key, receiver);
       if (typeof key === 'string' && Object.hasOwn(target, key) && !(prefix + key in into)) into[prefix + key] = v;
       return v;
     },
   });
+  return readsAs(view, obj);
 }
 
 /** The value the rubric gives a key of facts.gatheredWith ('sliderChange', 'controls.orbit', 'parts.WP04P4.must'). */
