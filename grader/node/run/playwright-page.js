@@ -3,6 +3,7 @@
 // key, let frames run, capture. The driver (pageDriver) works on puppeteer's page too, which
 // firefox-page.js opens in Firefox ESR. The check page has its own implementation of the same
 // interface for a part in an iframe; the core knows none of them.
+import { inflateSync } from 'node:zlib';
 import { PNG } from 'pngjs';
 import { gradedPageScripts } from './graded-page-scripts.js';
 import { serveSubmission, urlOf } from './serve-submission.js';
@@ -163,11 +164,16 @@ export function pageDriver(page, log) {
     sent: () => page.evaluate(() => (window.__sent ? window.__sent.read() : null)),
     /** The geometry of the last frame drawn, summed up (grader/browser/geometry.js): triangles, winding, closed, per-face attributes. */
     geometry: (limits) => page.evaluate((l) => (window.__geometry ? window.__geometry.read(l) : { why: 'the geometry was not recorded' }), limits),
-    /** The surface the last frame drew, per pixel (grader/browser/surface.js): its two pictures as { width, height, data }. */
+    /**
+     * The surface the last frame drew, per pixel (grader/browser/surface.js): its two pictures as
+     * { width, height, data }. They leave the page deflated (the browser's CompressionStream: mostly
+     * background, a tenth of the bytes or less, lossless), else as they are.
+     */
     surface: async (opts) => {
       const r = await page.evaluate(async (o) => {
         if (!window.__geometry || !window.__geometry.surface) return { why: 'the geometry was not recorded' };
         const s = await window.__geometry.surface(o);
+        if (s.why) return s;
         const base64 = (bytes) => {
           let text = '';
           for (let i = 0; i < bytes.length; i += 0x8000) {
@@ -175,11 +181,30 @@ export function pageDriver(page, log) {
           }
           return btoa(text);
         };
-        return s.why ? s : { ...s, normals: base64(s.normals), points: base64(s.points) };
+        const packed = async (bytes) => {
+          try {
+            const stream = new Blob([bytes]).stream().pipeThrough(new CompressionStream('deflate'));
+            return { deflated: base64(new Uint8Array(await new Response(stream).arrayBuffer())) };
+          } catch {
+            return { raw: base64(bytes) };
+          }
+        };
+        return { ...s, normals: await packed(s.normals), points: await packed(s.points) };
       }, opts);
       if (r.why) return r;
-      const image = (b64) => ({ width: r.width, height: r.height, data: new Uint8Array(Buffer.from(b64, 'base64')) });
-      return { ...r, normals: image(r.normals), points: image(r.points) };
+      const size = r.width * r.height * 4;
+      const image = ({ deflated, raw }) => {
+        let bytes;
+        try {
+          bytes = deflated ? inflateSync(Buffer.from(deflated, 'base64'), { maxOutputLength: size }) : Buffer.from(raw, 'base64');
+        } catch {
+          return null; // (more than the picture's bytes, or not deflate)
+        }
+        return bytes.length === size ? { width: r.width, height: r.height, data: new Uint8Array(bytes) } : null;
+      };
+      const [normals, points] = [image(r.normals), image(r.points)];
+      if (!normals || !points) return { why: 'the surface\'s pictures did not come out of the page whole' };
+      return { ...r, normals, points };
     },
     errors: () => log.errors,
   };
