@@ -15,17 +15,17 @@ import { webgpuSurfaceReaderScript } from './surface-webgpu.js';
 
 /** The init script as text: the recorders of what a page sends (its geometry, WebGL and WebGPU, and its uniforms) with the analysis in it. */
 const recorders = [meshAnalysisScript, webgpuRecorderScript, sentScript, geometryStore, frameRecorder, recordWebGL,
-  geometryReader, programInfoOf, surfaceReaderScript, webgpuSurfaceReaderScript(picturesScript)];
+  extensionsOf, geometryReader, programInfoOf, surfaceReaderScript, webgpuSurfaceReaderScript(picturesScript)];
 export const recordersInit = `(${geometryScript})(${recorders.join(', ')});`;
 
 /** The init script's body (its parts are passed in as arguments: the script is their text). */
 function geometryScript(analyseMesh, recordWebGPU, recordSent, geometryStore, frameRecorder, recordWebGL,
-  geometryReader, programInfoOf, surfaceReader, webgpuSurfaceReader) {
+  extensionsOf, geometryReader, programInfoOf, surfaceReader, webgpuSurfaceReader) {
   if (window.__geometry || !window.WebGLRenderingContext) return;
   const G = geometryStore();
   Object.defineProperty(window, '__geometry', { value: G.rec, enumerable: false });
   Object.assign(G, frameRecorder(G, window.__grade)); // (instrument.js: the culling state the page set)
-  recordWebGL(G);
+  recordWebGL(G, extensionsOf);
   const { frameOf, closeFrame, wrap, bytesIn, MAX_DRAWS, FLOAT, TRIANGLES } = G;
   const infoOf = programInfoOf(G, analyseMesh);
   const read = geometryReader(G, analyseMesh, infoOf);
@@ -176,8 +176,11 @@ function frameRecorder({ rec, HISTORY, MAX_DRAWS, TRIANGLES, stateOf, newVao, va
   return { closeFrame, frameOf, draw, changed, bindVao };
 }
 
-/** The WebGL calls recorded: buffers and their bytes, the attribute layout, vertex arrays, the program, clears and draws. */
-function recordWebGL({ wrap, stateOf, bytesOf, copy, changed, bindVao, closeFrame, draw, rec, COLOR_BUFFER_BIT }) {
+/** The WebGL calls recorded: buffers and their bytes, the attribute layout (with divisors), vertex arrays, the program, clears and draws. */
+function recordWebGL(
+  { wrap, stateOf, bytesOf, copy, changed, bindVao, closeFrame, draw, rec, COLOR_BUFFER_BIT },
+  extensionsOf,
+) {
   const protos = [window.WebGLRenderingContext, window.WebGL2RenderingContext].filter(Boolean).map((c) => c.prototype);
   for (const proto of protos) {
     wrap(proto, 'bindBuffer', (gl, [target, buffer]) => {
@@ -218,6 +221,13 @@ function recordWebGL({ wrap, stateOf, bytesOf, copy, changed, bindVao, closeFram
         changed(st.vao);
       }
     });
+    // (an attribute read once an instance: its divisor, which the grader's redraw sets again)
+    const divisor = (gl, [index, n]) => {
+      const st = stateOf(gl);
+      st.vao.attribs[index] = { ...(st.vao.attribs[index] || {}), divisor: n >>> 0 };
+      changed(st.vao);
+    };
+    wrap(proto, 'vertexAttribDivisor', divisor);
     wrap(proto, 'bindVertexArray', (gl, [vao]) => bindVao(gl, vao));
     wrap(proto, 'useProgram', (gl, [program]) => { stateOf(gl).program = program; });
     wrap(proto, 'clear', (gl, [mask]) => {
@@ -229,23 +239,36 @@ function recordWebGL({ wrap, stateOf, bytesOf, copy, changed, bindVao, closeFram
       draw(gl, { mode, first: first | 0, count: Math.max(0, count | 0), indexed: false }));
     wrap(proto, 'drawElements', (gl, [mode, count, type, offset]) =>
       draw(gl, { mode, count: Math.max(0, count | 0), type, offset: offset | 0, indexed: true }));
-    // (WebGL 1's vertex array objects come from an extension)
-    const getExtension = proto.getExtension;
-    proto.getExtension = function (name) {
-      const ext = getExtension.call(this, name);
-      if (ext && /vertex_array_object/i.test(String(name)) && !ext.__geometryWrapped) {
-        const gl = this, bindVertexArrayOES = ext.bindVertexArrayOES;
-        Object.defineProperty(ext, '__geometryWrapped', { value: true });
-        ext.bindVertexArrayOES = function (vao) {
-          const out = bindVertexArrayOES.call(this, vao);
-          bindVao(gl, vao);
-          return out;
-        };
-      }
-      return ext;
-    };
+    extensionsOf(proto, { bindVao, divisor });
   }
 
+}
+
+/** WebGL 1's vertex array objects and instancing, which come from extensions: their calls recorded as WebGL 2's. */
+function extensionsOf(proto, { bindVao, divisor }) {
+  const getExtension = proto.getExtension;
+  proto.getExtension = function (name) {
+    const ext = getExtension.call(this, name);
+    if (ext && /instanced_arrays/i.test(String(name)) && !ext.__geometryWrapped) {
+      const gl = this, vertexAttribDivisorANGLE = ext.vertexAttribDivisorANGLE;
+      Object.defineProperty(ext, '__geometryWrapped', { value: true });
+      ext.vertexAttribDivisorANGLE = function (...a) {
+        const out = vertexAttribDivisorANGLE.apply(this, a);
+        try { divisor(gl, a); } catch { /* the record never breaks the page */ }
+        return out;
+      };
+    }
+    if (ext && /vertex_array_object/i.test(String(name)) && !ext.__geometryWrapped) {
+      const gl = this, bindVertexArrayOES = ext.bindVertexArrayOES;
+      Object.defineProperty(ext, '__geometryWrapped', { value: true });
+      ext.bindVertexArrayOES = function (vao) {
+        const out = bindVertexArrayOES.call(this, vao);
+        bindVao(gl, vao);
+        return out;
+      };
+    }
+    return ext;
+  };
 }
 
 /** infoOf(gl, program): the attributes of a program's vertex shader, and which one gl_Position is computed from (kept a program). */

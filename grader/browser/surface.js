@@ -141,7 +141,7 @@ function copyUniforms(gl, page, program, prog) {
   }
 }
 
-/** The draw's attributes and indices on buffers of ours, from the bytes the page uploaded (or its constant values). */
+/** The draw's attributes (a matrix's column by column, each with the page's divisor) and indices on buffers of ours, from the bytes the page uploaded (or its constant values). */
 function copyAttributes(gl, page, d, prog, buffers, bytesOf, TRIANGLES) {
   const upload = (target, src) => {
     const bytes = src && bytesOf.get(src);
@@ -155,20 +155,26 @@ function copyAttributes(gl, page, d, prog, buffers, bytesOf, TRIANGLES) {
     gl.bindBuffer(target, b);
     return b;
   };
+  // a matrix attribute takes a location a column (mat2, mat3, mat4: FLOAT_MAT2 … FLOAT_MAT4)
+  const columns = (type) => (type >= 0x8B5A && type <= 0x8B5C ? type - 0x8B5A + 2 : 1);
   const count = gl.getProgramParameter(prog, gl.ACTIVE_ATTRIBUTES);
   for (let i = 0; i < count; i++) {
     const a = gl.getActiveAttrib(prog, i);
-    const to = gl.getAttribLocation(prog, a.name), from = page('getAttribLocation', d.program, a.name);
-    if (to < 0) continue;
-    const at = from >= 0 ? d.attribs[from] : null;
-    if (!at || !at.enabled || !at.buffer) {
-      gl.disableVertexAttribArray(to);
-      if (from >= 0) gl.vertexAttrib4fv(to, page('getVertexAttrib', from, gl.CURRENT_VERTEX_ATTRIB));
-      continue;
+    const first = gl.getAttribLocation(prog, a.name), pageFirst = page('getAttribLocation', d.program, a.name);
+    if (first < 0) continue;
+    for (let k = 0; k < columns(a.type); k++) {
+      const to = first + k, from = pageFirst >= 0 ? pageFirst + k : -1;
+      const at = from >= 0 ? d.attribs[from] : null;
+      if (!at || !at.enabled || !at.buffer) {
+        gl.disableVertexAttribArray(to);
+        if (from >= 0) gl.vertexAttrib4fv(to, page('getVertexAttrib', from, gl.CURRENT_VERTEX_ATTRIB));
+        continue;
+      }
+      if (!upload(gl.ARRAY_BUFFER, at.buffer)) throw new Error(`the data of ${a.name}'s buffer was not seen`);
+      gl.enableVertexAttribArray(to);
+      gl.vertexAttribPointer(to, at.size, at.type, at.normalized, at.stride, at.offset);
+      gl.vertexAttribDivisor(to, at.divisor || 0);
     }
-    if (!upload(gl.ARRAY_BUFFER, at.buffer)) throw new Error(`the data of ${a.name}'s buffer was not seen`);
-    gl.enableVertexAttribArray(to);
-    gl.vertexAttribPointer(to, at.size, at.type, at.normalized, at.stride, at.offset);
   }
   if (d.indexed && !upload(gl.ELEMENT_ARRAY_BUFFER, d.elements)) throw new Error('the index buffer\'s data was not seen');
   return TRIANGLES;
