@@ -34,6 +34,27 @@ export async function surfaceOfPage(page, url) {
 }
 
 /**
+ * A fixture page's surface (`file` under tests/fixtures/, which sets window.drawn once it has drawn),
+ * in a context of its own with the grader's init scripts for `api`: its pictures' bytes as arrays
+ * (the points left out), or { why }.
+ */
+export async function surfaceOfFixture(browser, baseURL, api, file) {
+  const context = await browser.newContext();
+  try {
+    for (const script of initScripts(api)) await context.addInitScript(script);
+    const page = await context.newPage();
+    await page.goto(`${baseURL}/tests/fixtures/${file}`);
+    await page.waitForFunction(() => window.drawn === true);
+    return await page.evaluate(async () => {
+      const s = await window.__geometry.surface({ fitSamples: 256 });
+      return s.why ? s : { ...s, normals: Array.from(s.normals), points: null };
+    });
+  } finally {
+    await context.close();
+  }
+}
+
+/**
  * One test a case ({ api, step, query }): the step's own surface per pixel within 1° of the exact
  * sphere's normals on 99% of its pixels, the camera within 1e-3, nothing of the page's changed.
  */
