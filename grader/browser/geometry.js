@@ -239,34 +239,21 @@ function recordWebGL(
       draw(gl, { mode, first: first | 0, count: Math.max(0, count | 0), indexed: false }));
     wrap(proto, 'drawElements', (gl, [mode, count, type, offset]) =>
       draw(gl, { mode, count: Math.max(0, count | 0), type, offset: offset | 0, indexed: true }));
-    extensionsOf(proto, { bindVao, divisor });
+    extensionsOf(proto, { wrap, bindVao, divisor });
   }
 
 }
 
 /** WebGL 1's vertex array objects and instancing, which come from extensions: their calls recorded as WebGL 2's. */
-function extensionsOf(proto, { bindVao, divisor }) {
+function extensionsOf(proto, { wrap, bindVao, divisor }) {
   const getExtension = proto.getExtension;
   proto.getExtension = function (name) {
-    const ext = getExtension.call(this, name);
-    if (ext && /instanced_arrays/i.test(String(name)) && !ext.__geometryWrapped) {
-      const gl = this, vertexAttribDivisorANGLE = ext.vertexAttribDivisorANGLE;
-      Object.defineProperty(ext, '__geometryWrapped', { value: true });
-      ext.vertexAttribDivisorANGLE = function (...a) {
-        const out = vertexAttribDivisorANGLE.apply(this, a);
-        try { divisor(gl, a); } catch { /* the record never breaks the page */ }
-        return out;
-      };
-    }
-    if (ext && /vertex_array_object/i.test(String(name)) && !ext.__geometryWrapped) {
-      const gl = this, bindVertexArrayOES = ext.bindVertexArrayOES;
-      Object.defineProperty(ext, '__geometryWrapped', { value: true });
-      ext.bindVertexArrayOES = function (vao) {
-        const out = bindVertexArrayOES.call(this, vao);
-        bindVao(gl, vao);
-        return out;
-      };
-    }
+    const ext = getExtension.call(this, name), gl = this;
+    const [method, after] = /instanced_arrays/i.test(String(name)) ? ['vertexAttribDivisorANGLE', (_, a) => divisor(gl, a)]
+      : /vertex_array_object/i.test(String(name)) ? ['bindVertexArrayOES', (_, [vao]) => bindVao(gl, vao)] : [];
+    if (!ext || !method || ext.__geometryWrapped) return ext;
+    Object.defineProperty(ext, '__geometryWrapped', { value: true });
+    wrap(ext, method, after);
     return ext;
   };
 }
