@@ -25,8 +25,9 @@ export function memo(f) {
     if (!args.every((a) => a && typeof a === 'object')) return f(...args);
     let map = root;
     for (const a of args.slice(0, -1)) {
-      let next = map.get(keyOf(a));
-      if (!next) map.set(keyOf(a), (next = new WeakMap()));
+      const key = keyOf(a);
+      let next = map.get(key);
+      if (!next) map.set(key, (next = new WeakMap()));
       map = next;
     }
     const last = keyOf(args[args.length - 1]);
