@@ -149,6 +149,8 @@ function frameRecorder({ rec, HISTORY, MAX_DRAWS, TRIANGLES, stateOf, newVao, va
       prev &&
       !d.indexed &&
       !prev.indexed &&
+      d.instances === undefined &&
+      prev.instances === undefined &&
       d.mode === TRIANGLES &&
       prev.mode === TRIANGLES &&
       prev.gl === gl &&
@@ -235,25 +237,33 @@ function recordWebGL(
       rec.clears++;
       closeFrame();
     });
-    wrap(proto, 'drawArrays', (gl, [mode, first, count]) =>
-      draw(gl, { mode, first: first | 0, count: Math.max(0, count | 0), indexed: false }));
-    wrap(proto, 'drawElements', (gl, [mode, count, type, offset]) =>
-      draw(gl, { mode, count: Math.max(0, count | 0), type, offset: offset | 0, indexed: true }));
-    extensionsOf(proto, { wrap, bindVao, divisor });
+    // (an instanced draw: its instance count kept, which the grader's redraw draws again)
+    const instanced = (n) => (n === undefined ? {} : { instances: Math.max(0, n | 0) });
+    const arrays = (gl, [mode, first, count], instances) =>
+      draw(gl, { mode, first: first | 0, count: Math.max(0, count | 0), indexed: false, ...instanced(instances) });
+    const elements = (gl, [mode, count, type, offset], instances) => draw(gl,
+      { mode, count: Math.max(0, count | 0), type, offset: offset | 0, indexed: true, ...instanced(instances) });
+    wrap(proto, 'drawArrays', (gl, a) => arrays(gl, a));
+    wrap(proto, 'drawElements', (gl, a) => elements(gl, a));
+    wrap(proto, 'drawArraysInstanced', (gl, a) => arrays(gl, a, a[3]));
+    wrap(proto, 'drawElementsInstanced', (gl, a) => elements(gl, a, a[4]));
+    extensionsOf(proto, { wrap, bindVao, divisor, arrays, elements });
   }
 
 }
 
 /** WebGL 1's vertex array objects and instancing, which come from extensions: their calls recorded as WebGL 2's. */
-function extensionsOf(proto, { wrap, bindVao, divisor }) {
+function extensionsOf(proto, { wrap, bindVao, divisor, arrays, elements }) {
   const getExtension = proto.getExtension;
   proto.getExtension = function (name) {
     const ext = getExtension.call(this, name), gl = this;
-    const [method, after] = /instanced_arrays/i.test(String(name)) ? ['vertexAttribDivisorANGLE', (_, a) => divisor(gl, a)]
-      : /vertex_array_object/i.test(String(name)) ? ['bindVertexArrayOES', (_, [vao]) => bindVao(gl, vao)] : [];
-    if (!ext || !method || ext.__geometryWrapped) return ext;
+    const methods = /instanced_arrays/i.test(String(name))
+      ? { vertexAttribDivisorANGLE: divisor, drawArraysInstancedANGLE: (g, a) => arrays(g, a, a[3]),
+        drawElementsInstancedANGLE: (g, a) => elements(g, a, a[4]) }
+      : /vertex_array_object/i.test(String(name)) ? { bindVertexArrayOES: (g, [vao]) => bindVao(g, vao) } : {};
+    if (!ext || ext.__geometryWrapped || !Object.keys(methods).length) return ext;
     Object.defineProperty(ext, '__geometryWrapped', { value: true });
-    wrap(ext, method, after);
+    for (const [method, after] of Object.entries(methods)) wrap(ext, method, (_, a) => after(gl, a));
     return ext;
   };
 }
@@ -292,6 +302,7 @@ function geometryReader({ rec, bytesOf, FLOAT, TRIANGLES }, analyseMesh, infoOf)
         first: d.first,
         count: d.count,
         indexed: d.indexed,
+        ...(d.instances === undefined ? {} : { instances: d.instances }),
         type: d.type,
         offset: d.offset,
         cull: d.cull,

@@ -5,11 +5,15 @@
 // frames come from grader/browser/webgpu-capture.js, which must be added first). It is injected
 // as named parts, in order (instrumentScript), which share what they record on window.__grade.
 
+import { watchInstancedDraws } from './instanced-draws.js';
+
 /** window.__grade: what the parts below record, and state(), what the page interface reads of it. */
 function gradeState() {
   const g = { api: null, apis: [], draws: 0, vertices: 0, pending: 0, shaderErrors: [], gpuErrors: [],
     adapter: undefined, webgpuMissing: false, wgsl: [], glsl: [],
     faces: { depthTest: false, culling: false, cullMode: null }, noCull: false, cullOn: false };
+  // how each WebGL prototype sends a draw (watchWebGL's, used by instanced-draws.js too)
+  Object.defineProperty(g, 'senders', { value: new Map() });
   // (read-only: a page that assigns to it is noted, grader/browser/tamper.js)
   Object.defineProperty(window, '__grade', { get: () => g, set: () => { g.replacedByPage = true; }, enumerable: false });
 
@@ -131,6 +135,8 @@ function watchWebGL() {
     const arrays = (gl, a) => (batch ? batch.arrays(gl, a, send) : send(gl, a));
     proto.drawArrays = function (...a) { counted(this, a[2]); return arrays(this, a); };
     proto.drawElements = function (...a) { counted(this, a[1]); return bare(this, drawElements, a); };
+    // (instanced draws, watchInstancedDraws, counted and sent as these are)
+    g.senders.set(proto, (gl, draw, a, n) => { counted(gl, n); return bare(gl, draw, a); });
   }
 }
 
@@ -333,7 +339,8 @@ function controlsInterface() {
 }
 
 /** The parts, in the order they are installed (window.__grade first; the listeners' wrapper after the waits' own use of addEventListener). */
-export const INSTRUMENT_PARTS = [gradeState, watchContexts, watchWebGL, watchWaits, watchListeners, controlsInterface];
+export const INSTRUMENT_PARTS = [gradeState, watchContexts, watchWebGL, watchInstancedDraws, watchWaits, watchListeners,
+  controlsInterface];
 
 /** The init script, as source: each part called in order (for addInitScript, evaluateOnNewDocument or a frame's script). */
 export const instrumentScript = INSTRUMENT_PARTS.map((part) => `(${part})();`).join('\n');

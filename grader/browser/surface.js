@@ -199,7 +199,10 @@ function drawPass(gl, { draws, what, depthTest, ours, TRIANGLES, width, height }
       gl.cullFace(mode === 'front' ? gl.FRONT : mode === 'both' ? gl.FRONT_AND_BACK : gl.BACK);
       gl.frontFace(front === 'cw' ? gl.CW : gl.CCW);
     }
-    if (d.indexed) gl.drawElements(TRIANGLES, d.count, d.type, d.offset);
+    if (d.instances !== undefined) {
+      if (d.indexed) gl.drawElementsInstanced(TRIANGLES, d.count, d.type, d.offset, d.instances);
+      else gl.drawArraysInstanced(TRIANGLES, d.first, d.count, d.instances);
+    } else if (d.indexed) gl.drawElements(TRIANGLES, d.count, d.type, d.offset);
     else gl.drawArrays(TRIANGLES, d.first, d.count);
   }
   const px = new Float32Array(width * height * 4);

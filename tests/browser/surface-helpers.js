@@ -36,7 +36,7 @@ export async function surfaceOfPage(page, url) {
 /**
  * A fixture page's surface (`file` under tests/fixtures/, which sets window.drawn once it has drawn),
  * in a context of its own with the grader's init scripts for `api`: its pictures' bytes as arrays
- * (the points left out), or { why }.
+ * (the points left out), or { why }; and the draws and vertices the grader counted (counted).
  */
 export async function surfaceOfFixture(browser, baseURL, api, file) {
   const context = await browser.newContext();
@@ -47,7 +47,8 @@ export async function surfaceOfFixture(browser, baseURL, api, file) {
     await page.waitForFunction(() => window.drawn === true);
     return await page.evaluate(async () => {
       const s = await window.__geometry.surface({ fitSamples: 256 });
-      return s.why ? s : { ...s, normals: Array.from(s.normals), points: null };
+      const counted = { draws: window.__grade.draws, vertices: window.__grade.vertices };
+      return s.why ? { ...s, counted } : { ...s, normals: Array.from(s.normals), points: null, counted };
     });
   } finally {
     await context.close();

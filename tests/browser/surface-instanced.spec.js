@@ -1,36 +1,48 @@
-// The surface per pixel of a WebGL 1 page whose model matrix is an instanced `attribute mat4`
+// The surface per pixel of a WebGL page whose model matrix is an instanced `attribute mat4`
 // (tests/fixtures/surface-instanced.html, shaped as a real hand-in is): the grader's redraw
-// (grader/browser/surface.js) must set all four of its locations, each with its divisor, as the page
-// did (grader/browser/geometry.js records the divisor). Each pixel's normal (n = p: the position in
-// the model's space) is within 1° of the moved sphere's normal where the pixel's ray meets it.
+// (grader/browser/surface.js) must set all four of its locations, each with its divisor, as the
+// page did (grader/browser/geometry.js records the divisor), and draw an instanced draw again as
+// one (grader/browser/instanced-draws.js counts the page's). Each pixel's normal (n = p: the
+// position in the model's space) is within 1° of the moved sphere's normal where its ray meets it.
 import { test, expect } from '@playwright/test';
 import { surfaceOfFixture, SIZE } from './surface-helpers.js';
 import { degreesBetween } from '../../grader/core/computed/surface.js';
 
-test('a model matrix as an instanced mat4 attribute (divisor 1, plain drawArrays): the surface is the page\'s own sphere', async ({ browser, baseURL }, testInfo) => {
-  const surface = await surfaceOfFixture(browser, baseURL, 'webgl', 'surface-instanced.html');
-  expect(surface.why).toBeUndefined();
-  expect([surface.width, surface.position, surface.normal]).toEqual([SIZE, 'aPos', null]);
-  const f = 1 / Math.tan(Math.PI / 8), eye = [0, 0, 3], centre = [0.25, 0, 0];
-  let compared = 0, within = 0, drawn = 0;
-  for (let y = 0; y < SIZE; y++) {
-    for (let x = 0; x < SIZE; x++) {
-      const o = 4 * (y * SIZE + x);
-      if (surface.normals[o + 3]) drawn++;
-      // the pixel's ray from the eye, and the moved sphere's point it meets first
-      const d = [((2 * (x + 0.5)) / SIZE - 1) / f, (1 - (2 * (y + 0.5)) / SIZE) / f, -1], dl = Math.hypot(...d);
-      const u = d.map((v) => v / dl), e = eye.map((v, k) => v - centre[k]);
-      const b = e[0] * u[0] + e[1] * u[1] + e[2] * u[2], disc = b * b - (e[0] ** 2 + e[1] ** 2 + e[2] ** 2 - 1);
-      if (disc < 0.05) continue; // (the rim: the triangles' outline and the sphere's differ there)
-      compared++;
-      if (surface.normals[o + 3] !== 255) continue;
-      const t = -b - Math.sqrt(disc), p = e.map((v, k) => v + t * u[k]);
-      const n = [0, 1, 2].map((k) => (2 * surface.normals[o + k]) / 255 - 1), l = Math.hypot(...n);
-      if (degreesBetween(n.map((v) => v / l), p) <= 1) within++;
+// (the three ways the page draws: one instance with plain drawArrays; two, the first out of view,
+// with ANGLE_instanced_arrays' drawArraysInstancedANGLE in WebGL 1 and WebGL 2's drawElementsInstanced)
+const WAYS = [
+  ['plain drawArrays', '', 1],
+  ['two instances, drawArraysInstancedANGLE', '?draw=angle', 2],
+  ['two instances, WebGL 2\'s drawElementsInstanced', '?draw=webgl2', 2],
+];
+for (const [way, query, instances] of WAYS) {
+  test(`a model matrix as an instanced mat4 attribute (divisor 1, ${way}): the surface is the page's own sphere, its vertices counted`, async ({ browser, baseURL }, testInfo) => {
+    const surface = await surfaceOfFixture(browser, baseURL, 'webgl', `surface-instanced.html${query}`);
+    expect(surface.why).toBeUndefined();
+    expect([surface.width, surface.position, surface.normal]).toEqual([SIZE, 'aPos', null]);
+    // the page's one draw of 32·64·6 vertices an instance, as the grader counts the page's work
+    expect(surface.counted).toEqual({ draws: 1, vertices: instances * 32 * 64 * 6 });
+    const f = 1 / Math.tan(Math.PI / 8), eye = [0, 0, 3], centre = [0.25, 0, 0];
+    let compared = 0, within = 0, drawn = 0;
+    for (let y = 0; y < SIZE; y++) {
+      for (let x = 0; x < SIZE; x++) {
+        const o = 4 * (y * SIZE + x);
+        if (surface.normals[o + 3]) drawn++;
+        // the pixel's ray from the eye, and the moved sphere's point it meets first
+        const d = [((2 * (x + 0.5)) / SIZE - 1) / f, (1 - (2 * (y + 0.5)) / SIZE) / f, -1], dl = Math.hypot(...d);
+        const u = d.map((v) => v / dl), e = eye.map((v, k) => v - centre[k]);
+        const b = e[0] * u[0] + e[1] * u[1] + e[2] * u[2], disc = b * b - (e[0] ** 2 + e[1] ** 2 + e[2] ** 2 - 1);
+        if (disc < 0.05) continue; // (the rim: the triangles' outline and the sphere's differ there)
+        compared++;
+        if (surface.normals[o + 3] !== 255) continue;
+        const t = -b - Math.sqrt(disc), p = e.map((v, k) => v + t * u[k]);
+        const n = [0, 1, 2].map((k) => (2 * surface.normals[o + k]) / 255 - 1), l = Math.hypot(...n);
+        if (degreesBetween(n.map((v) => v / l), p) <= 1) within++;
+      }
     }
-  }
-  testInfo.annotations.push({ type: 'surface', description: `${compared} pixels inside the sphere, ${within} within 1°, ${drawn} drawn again` });
-  expect(compared).toBeGreaterThan(2000);
-  expect(within / compared).toBeGreaterThanOrEqual(0.99);
-  expect(drawn).toBeLessThan(1.1 * compared + 16 * Math.sqrt(compared)); // (nothing drawn outside the sphere but its rim)
-});
+    testInfo.annotations.push({ type: 'surface', description: `${compared} pixels inside the sphere, ${within} within 1°, ${drawn} drawn again` });
+    expect(compared).toBeGreaterThan(2000);
+    expect(within / compared).toBeGreaterThanOrEqual(0.99);
+    expect(drawn).toBeLessThan(1.1 * compared + 16 * Math.sqrt(compared)); // (nothing drawn outside the sphere but its rim)
+  });
+}
