@@ -11,10 +11,14 @@ import { KIB } from '../grader/core/units.js';
 /** More than this is not a worksheet (a course folder, videos, node_modules?). */
 export const MAX_BYTES = 100 * KIB * KIB;
 export const MAX_FILES = 5000;
+/** A size under this many MB is said with a decimal. */
+const DECIMALS_BELOW_MB = 10;
+/** Pages are looked for this many folders deep at most; a page's first TITLE_BYTES are read for its title; a message names PAGES_NAMED pages. */
+const PAGE_DEPTH = 7, TITLE_BYTES = 65536, PAGES_NAMED = 5;
 
 export class CheckInputError extends Error {}
 
-const mb = (n) => `${(n / KIB / KIB).toFixed(n < 10 * KIB * KIB ? 1 : 0)} MB`;
+const mb = (n) => `${(n / KIB / KIB).toFixed(n < DECIMALS_BELOW_MB * KIB * KIB ? 1 : 0)} MB`;
 const skipped = (segments) => segments.some((s) => s.startsWith('.') || s === 'node_modules' || s === '__MACOSX');
 
 /**
@@ -47,12 +51,12 @@ const walkOrder = (a, b) => {
 };
 
 // the pages the grader walks: HTML, six folders deep at most
-const pagesOf = (files) => [...files.keys()].filter((p) => /\.html?$/i.test(p) && p.split('/').length <= 7).sort(walkOrder);
+const pagesOf = (files) => [...files.keys()].filter((p) => /\.html?$/i.test(p) && p.split('/').length <= PAGE_DEPTH).sort(walkOrder);
 
 /** Each page's title and first heading ({ path: words }), read from its first bytes as the grader reads them. */
 export async function titlesOfHandIn(files) {
   const titles = {};
-  for (const p of pagesOf(files)) titles[p] = titleOfPage(await files.get(p).slice(0, 65536).text());
+  for (const p of pagesOf(files)) titles[p] = titleOfPage(await files.get(p).slice(0, TITLE_BYTES).text());
   return titles;
 }
 
@@ -69,7 +73,7 @@ export function partsOfHandIn(files, titles = {}) {
   }
   const { parts, notes } = partsFound(pages.map((p) => p.split('/')), (s) => s.join('/'), { titles });
   if (!Object.values(parts).some(Boolean)) {
-    throw new CheckInputError(`None of the HTML pages is named for a part of worksheet 4 (${pages.slice(0, 5).join(', ')}${pages.length > 5 ? ', …' : ''}). ` +
+    throw new CheckInputError(`None of the HTML pages is named for a part of worksheet 4 (${pages.slice(0, PAGES_NAMED).join(', ')}${pages.length > PAGES_NAMED ? ', …' : ''}). ` +
       'Name each part\'s folder or file for it, e.g. WP04P1/, Part1/, w4p1.html, week04p01.html.');
   }
   return { parts, notes, pages };

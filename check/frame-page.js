@@ -12,9 +12,9 @@ function pressKey(W, key) {
   const active = doc.activeElement;
   const target = active && active !== doc.documentElement ? active : doc.body || doc.documentElement;
   const code = /^[a-z]$/i.test(key) ? `Key${key.toUpperCase()}` : /^[0-9]$/.test(key) ? `Digit${key}` : { '+': 'Equal', '-': 'Minus', ' ': 'Space' }[key] || key;
-  const keyCodes = { ArrowLeft: 37, ArrowUp: 38, ArrowRight: 39, ArrowDown: 40, PageUp: 33, PageDown: 34,
+  const KEY_CODES = { ArrowLeft: 37, ArrowUp: 38, ArrowRight: 39, ArrowDown: 40, PageUp: 33, PageDown: 34,
     '+': 187, '-': 189, ' ': 32, Enter: 13, Escape: 27 };
-  const keyCode = keyCodes[key] ?? key.toUpperCase().charCodeAt(0);
+  const keyCode = KEY_CODES[key] ?? key.toUpperCase().charCodeAt(0);
   const init = { key, code, keyCode, which: keyCode, bubbles: true, cancelable: true, composed: true, view: W };
   target.dispatchEvent(new W.KeyboardEvent('keydown', init));
   const charCode = key.charCodeAt(0);

@@ -55,27 +55,30 @@ export function frameWatchScript(options) {
   // ... and no scrollbars (headless Chromium hides them): a canvas sized from clientWidth is as wide
   document.documentElement.style.scrollbarWidth = 'none';
 
+  // (a script put into the frame as text imports nothing: its milliseconds a second are its own;
+  // the beat's period; a loop looks at the clock once in LOOK_EVERY_MASK + 1 calls, a power of 2)
+  const MS_A_SECOND = 1000, BEAT_MS = 100, LOOK_EVERY_MASK = 1023;
   // the loop guard: a beat on the real clock (taken before grader/browser/clock.js stands in for it)
   const realSetTimeout = setTimeout.bind(window), realNow = performance.now.bind(performance);
   let beat = 0, seen = -1, taskStart = 0, calls = 0;
-  const tick = () => { beat++; realSetTimeout(tick, 100); };
+  const tick = () => { beat++; realSetTimeout(tick, BEAT_MS); };
   tick();
   // a new task begun by the check page (a timer or frame its clock runs, a click, a key, a slider
   // step): a loop there is timed from here, not from before the check page's own work in between
   watch.newTask = () => { beat++; };
   // loading has the rubric's loadSeconds; once loaded, a task may take up to the part's whole bound
   // (a quadratic flatten() at a high level takes tens of seconds on a slow machine, as under the grader)
-  let limit = 1000 * options.loopSeconds;
-  watch.setLoopSeconds = (seconds) => { limit = 1000 * seconds; };
+  let limit = MS_A_SECOND * options.loopSeconds;
+  watch.setLoopSeconds = (seconds) => { limit = MS_A_SECOND * seconds; };
   Object.defineProperty(window, '__checkLoop', {
     enumerable: false,
     value: () => {
       if (watch.hung) throw new Error(watch.hung);
-      if ((++calls & 1023) !== 0) return;
+      if ((++calls & LOOK_EVERY_MASK) !== 0) return;
       const now = realNow();
       if (beat !== seen) { seen = beat; taskStart = now; return; }
       if (now - taskStart > limit) {
-        watch.hung = `a loop ran for ${Math.round((now - taskStart) / 1000)} s without returning (stopped by the self-check)`;
+        watch.hung = `a loop ran for ${Math.round((now - taskStart) / MS_A_SECOND)} s without returning (stopped by the self-check)`;
         throw new Error(watch.hung);
       }
     },

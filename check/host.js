@@ -5,6 +5,13 @@ import { BASE, answer, askedPath } from './serve.js';
 
 const sessions = new Map(); // id → { source, frameScript, log, pending }
 
+/** The HTTP statuses of a bad path and of a file that could not be served. */
+const BAD_REQUEST = 400, SERVER_ERROR = 500;
+/** A session's id: ID_BYTES random bytes in hexadecimal. */
+const ID_BYTES = 8, HEX = 16;
+/** The frames' requests are idle after QUIET_MS without one (IDLE_MAX_MS at most), looked at every POLL_MS: the grader's networkidle. */
+const QUIET_MS = 500, IDLE_MAX_MS = 5000, POLL_MS = 50;
+
 /** Why this browser cannot run the self-check, or null. */
 export function unsupported() {
   if (!('serviceWorker' in navigator)) {
@@ -48,14 +55,14 @@ async function onMessage(e) {
   s.lastRequest = performance.now();
   try {
     const rel = askedPath(e.data.path, session);
-    if (rel === null) return port.postMessage({ status: 400, type: 'text/plain', body: 'bad path' });
+    if (rel === null) return port.postMessage({ status: BAD_REQUEST, type: 'text/plain', body: 'bad path' });
     const a = await answer(s.source, rel, { ...s, module: !!e.data.module });
     if (a.note) s.log.notes.push(a.note);
     if (a.webgpu) s.log.webgpu = true;
     if (a.missing) s.log.errors.push(`missing file: ${a.missing}`);
     port.postMessage({ status: a.status, type: a.type, body: a.body });
   } catch (err) {
-    port.postMessage({ status: 500, type: 'text/plain', body: `the self-check could not serve this file: ${err.message}` });
+    port.postMessage({ status: SERVER_ERROR, type: 'text/plain', body: `the self-check could not serve this file: ${err.message}` });
   } finally {
     s.pending--;
     s.lastRequest = performance.now();
@@ -69,7 +76,7 @@ async function onMessage(e) {
  * @returns {{ id: string, url: (path: string) => string, log: { errors: string[], blocked: string[], notes: string[], webgpu: boolean }, clearLog: () => void, idle: (ms: number, max: number) => Promise<void>, close: () => void }}
  */
 export function openSession(source, frameScript, loopSeconds) {
-  const id = Array.from(crypto.getRandomValues(new Uint8Array(8)), (b) => b.toString(16).padStart(2, '0')).join('');
+  const id = Array.from(crypto.getRandomValues(new Uint8Array(ID_BYTES)), (b) => b.toString(HEX).padStart(2, '0')).join('');
   const s = {
     source,
     frameScript,
@@ -85,10 +92,10 @@ export function openSession(source, frameScript, loopSeconds) {
     log: s.log,
     url: (path) => `${BASE}${id}/${path.split('/').map(encodeURIComponent).join('/')}`,
     /** Resolves once no request has been open for `quiet` ms (at most `max` ms): the grader's networkidle. */
-    idle: async (quiet = 500, max = 5000) => {
+    idle: async (quiet = QUIET_MS, max = IDLE_MAX_MS) => {
       const until = performance.now() + max;
       while (performance.now() < until && (s.pending || performance.now() - s.lastRequest < quiet)) {
-        await new Promise((r) => setTimeout(r, 50));
+        await new Promise((r) => setTimeout(r, POLL_MS));
       }
     },
     /** Forgets what the last part's frames did (before the next part). */

@@ -43,6 +43,9 @@ export function frameScript(rubric) {
 
 const sleep = (ms) => new Promise((resolve) => setTimeout(resolve, ms));
 
+/** How often a loading frame is looked at for a loop that never returns. */
+const HUNG_POLL_MS = 200;
+
 /** Loads `src` in a new frame in `stage`: 'load', 'hung' (a loop stopped) or 'timeout'. */
 async function load(stage, src, seconds) {
   const frame = document.createElement('iframe');
@@ -55,7 +58,7 @@ async function load(stage, src, seconds) {
   stage.replaceChildren(frame);
   const hung = (async () => {
     for (;;) {
-      await sleep(200);
+      await sleep(HUNG_POLL_MS);
       if (frame.contentWindow && frame.contentWindow.__checkWatch && frame.contentWindow.__checkWatch.hung) return 'hung';
     }
   })();
@@ -86,7 +89,7 @@ export async function checkPart({ part, page, session, rubric, stage, progress =
       const notLoaded = `it did not finish loading in ${loadSeconds} s (a script that never returns?)`;
       Object.assign(graded, asFail(notOpened(fp.hung() ? `${notLoaded}: ${fp.hung()}` : notLoaded)));
     } else {
-      await session.idle(500, 5000);
+      await session.idle();
       frame.contentWindow.__checkWatch.setLoopSeconds(rubric.timeoutSeconds);
       let timer;
       const bound = new Promise((resolve) => {
@@ -147,7 +150,7 @@ export async function drawReference({ result, rubric, session, stage }) {
   const { frame, how } = await load(stage, `${session.url(`${result.part}/index.html`)}?${query}`, rubric.loadSeconds);
   try {
     if (how !== 'load') return null;
-    await session.idle(500, 5000);
+    await session.idle();
     const fp = framePage(frame, session.log);
     // our pages publish window.scene after each frame drawn: wait for one (a loaded machine is slow)
     const shows = () => frame.contentWindow.scene && frame.contentWindow.scene.frame >= 1;

@@ -8,6 +8,9 @@ import { findStandIn, typeOf } from '../grader/core/standin.js';
 import { guardInlineScripts, guardLoops } from './guard.js';
 import { usesWebGPU } from './not-checked.js';
 
+/** The HTTP statuses the check page answers its frames with. */
+const OK = 200, NOT_FOUND = 404;
+
 /** The URL path under which the frames live: BASE + session + '/' + the hand-in's own path. */
 export const BASE = '/check/run/';
 /** The instrumentation's own path in a session (a name no hand-in uses). */
@@ -78,7 +81,7 @@ export function siteSource(root) {
  * @returns {Promise<{ status: number, type: string, body: string|Blob, note?: string, missing?: string, webgpu?: boolean }>}
  */
 export async function answer(source, rel, { frameScript, session, loopSeconds, module = false }) {
-  if (rel === FRAME_SCRIPT) return { status: 200, type: 'text/javascript', body: frameScript };
+  if (rel === FRAME_SCRIPT) return { status: OK, type: 'text/javascript', body: frameScript };
   let file = rel.replace(/\/+$/, '');
   const isFolder = (f) => !source.paths.includes(f) && source.paths.some((k) => k.startsWith(`${f}/`));
   if (rel.endsWith('/') || file === '' || isFolder(file)) file = file ? `${file}/index.html` : 'index.html';
@@ -86,7 +89,7 @@ export async function answer(source, rel, { frameScript, session, loopSeconds, m
   let blob = await source.read(file);
   if (!blob) {
     const standIn = findStandIn(rel, source.paths);
-    if (!standIn) return { status: 404, type: 'text/plain', body: 'not found', missing: `/${rel}` };
+    if (!standIn) return { status: NOT_FOUND, type: 'text/plain', body: 'not found', missing: `/${rel}` };
     note = `served ${standIn} for /${rel}, which is not in the submission as written (letter case, or a folder above the submission)`;
     file = standIn;
     blob = await source.read(file);
@@ -95,12 +98,12 @@ export async function answer(source, rel, { frameScript, session, loopSeconds, m
   if (type === 'text/html') {
     const html = await blob.text();
     const body = injectFrameScript(guardInlineScripts(html, loopSeconds), `${BASE}${session}/${FRAME_SCRIPT}`);
-    return { status: 200, type: 'text/html', note, webgpu: usesWebGPU(html), body };
+    return { status: OK, type: 'text/html', note, webgpu: usesWebGPU(html), body };
   }
   if (type === 'text/javascript') {
     const js = await blob.text();
     const body = guardLoops(js, { module: module || /\.mjs$/i.test(file), seconds: loopSeconds });
-    return { status: 200, type, note, webgpu: usesWebGPU(js), body };
+    return { status: OK, type, note, webgpu: usesWebGPU(js), body };
   }
-  return { status: 200, type, note, body: blob };
+  return { status: OK, type, note, body: blob };
 }

@@ -6,6 +6,9 @@
 const BASE = '/check/run/';
 const owners = new Map(); // session → the check page's client id
 
+/** How long the check page is waited for: a file it serves, a blocked request it hears of; the status where it is gone. */
+const ASK_MS = 15000, BLOCKED_ASK_MS = 2000, UNAVAILABLE = 503;
+
 self.addEventListener('install', () => self.skipWaiting());
 self.addEventListener('activate', (event) => event.waitUntil(clients.claim()));
 
@@ -22,7 +25,7 @@ async function sessionOf(event, url) {
 }
 
 /** Sends `message` to the check page that owns `session` (asking every check page the first time). */
-async function ask(session, message, timeout = 15000) {
+async function ask(session, message, timeout = ASK_MS) {
   const known = owners.get(session) && (await clients.get(owners.get(session)));
   const pages = known ? [known] : (await clients.matchAll({ type: 'window', includeUncontrolled: true }))
     .filter((c) => !new URL(c.url).pathname.startsWith(BASE));
@@ -46,13 +49,14 @@ async function respond(event) {
   const session = await sessionOf(event, url);
   if (!session) return Response.error();
   if (url.origin !== location.origin) {
-    if (!/^(data|blob):/.test(url.protocol)) ask(session, { type: 'check-blocked', url: url.href, navigation: event.request.mode === 'navigate' }, 2000);
+    const blocked = { type: 'check-blocked', url: url.href, navigation: event.request.mode === 'navigate' };
+    if (!/^(data|blob):/.test(url.protocol)) ask(session, blocked, BLOCKED_ASK_MS);
     return Response.error();
   }
   // a module script (and what a module imports) is fetched in cors mode, a classic script in no-cors
   const module = event.request.destination === 'script' && event.request.mode === 'cors';
   const a = await ask(session, { type: 'check-file', path: url.pathname, module });
-  if (!a) return new Response('the check page that opened this part is gone', { status: 503, headers: { 'Content-Type': 'text/plain' } });
+  if (!a) return new Response('the check page that opened this part is gone', { status: UNAVAILABLE, headers: { 'Content-Type': 'text/plain' } });
   return new Response(a.body, { status: a.status, headers: { 'Content-Type': a.type, 'Cache-Control': 'no-store' } });
 }
 

@@ -11,7 +11,9 @@ import { wgslVertexEntry } from './wgsl-vertex.js';
  * { vertexShader, vertexInputs, summary(draws, opts) }.
  */
 function analysis(vertexShader, vertexInputs, reader, indexer, meshesOf, walker, tally) {
-  const summary = (draws, { FLOAT, TRIANGLES, maxTriangles = 60000, maxEdgeTriangles = 65536 }) => {
+  // (the triangles read at most where no limit is given: the mesh's, and the edges' walk)
+  const MAX_TRIANGLES = 60000, MAX_EDGES = 65536;
+  const summary = (draws, { FLOAT, TRIANGLES, maxTriangles = MAX_TRIANGLES, maxEdgeTriangles = MAX_EDGES }) => {
     const tris = draws.filter((d) => d.mode === TRIANGLES && d.count >= 3);
     const triangles = tris.reduce((n, d) => n + Math.floor(d.count / 3), 0);
     const out = {

@@ -4,6 +4,9 @@
 // the page and take the trials' pictures; these functions read them.
 import { silhouetteChange, pictureChange, outlineFlips } from './measure/change.js';
 
+/** The characters of a control's words kept to name it in the report. */
+const WORDS_KEPT = 60;
+
 const re = (s) => new RegExp(s, 'i');
 /** An id or name read as words too: kdSlider → kd Slider, slider_kd → slider kd. */
 const words = (s) => s && s.replace(/([a-z])([A-Z])/g, '$1 $2').replace(/[_-]+/g, ' ');
@@ -13,7 +16,7 @@ export function labelsOf(c) {
 }
 /** How a control is named in the report: its type and the words it carries. */
 export function describe(c) {
-  const said = [c.text, c.id && `#${c.id}`, c.name && c.name !== c.id && `name=${c.name}`].filter(Boolean).join(' ').slice(0, 60);
+  const said = [c.text, c.id && `#${c.id}`, c.name && c.name !== c.id && `name=${c.name}`].filter(Boolean).join(' ').slice(0, WORDS_KEPT);
   return `${c.type} "${said}"`;
 }
 

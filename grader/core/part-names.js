@@ -32,6 +32,10 @@ const STEPS = [
   [2, /cull|depth[-_ ]*test|hidden[-_ ]*surface|back[-_ ]*face/i],
   [1, /sphere|tetrahedron|subdivi/i],
 ];
+
+/** A page's title and heading: the characters kept for a note. */
+const TITLE_KEPT = 120;
+
 /** The part whose step a title names ("Gouraud shading" → 3), or null. */
 export function stepOfTitle(title) {
   const hit = STEPS.find(([, re]) => re.test(title || ''));
@@ -78,7 +82,7 @@ function worksheetSections(pages) {
   for (const segments of pages) {
     segments.forEach((name, k) => {
       const s = sectionOf(k === segments.length - 1 ? name.replace(/\.html?$/i, '') : name);
-      if (!s || s.n < 1 || s.n > 5) return;
+      if (!s || s.n < 1 || s.n > PARTS.length) return;
       const key = `${segments.slice(0, k).join('/')}|${s.prefix}`;
       if (!runs.has(key)) runs.set(key, new Set());
       const step = stepOfTitle(s.title);
@@ -103,7 +107,7 @@ function nameOfPage(segments, sections, title) {
     const rank = names.length - 1 - k;
     // a section of the worksheet's run is read by its last number (3.4.2.-Culling is part 2, not 4.2)
     const s = sectionOf(names[k]);
-    if (s && s.n >= 1 && s.n <= 5 && sections.has(`${segments.slice(0, k).join('/')}|${s.prefix}`)) {
+    if (s && s.n >= 1 && s.n <= PARTS.length && sections.has(`${segments.slice(0, k).join('/')}|${s.prefix}`)) {
       const step = stepOfTitle(s.title);
       const note = step && step !== s.n ? `found as ${PARTS[s.n - 1]} by its section's number (${names[k]}), though its title names the step of ${PARTS[step - 1]}: the number wins` : null;
       return { n: s.n, strength: BY_SECTION, rank, ...(note ? { note } : {}) };
@@ -165,7 +169,7 @@ export function partsOf(pages, join, overrides = {}, titles = {}) {
 export function titleOfPage(html) {
   const words = (re) => {
     const m = re.exec(html);
-    return m ? m[1].replace(/<[^>]*>/g, ' ').replace(/&[a-z#0-9]+;/gi, ' ').replace(/\s+/g, ' ').trim().slice(0, 120) : '';
+    return m ? m[1].replace(/<[^>]*>/g, ' ').replace(/&[a-z#0-9]+;/gi, ' ').replace(/\s+/g, ' ').trim().slice(0, TITLE_KEPT) : '';
   };
   const both = [words(/<title[^>]*>([\s\S]*?)<\/title>/i), words(/<h[1-3][^>]*>([\s\S]*?)<\/h[1-3]>/i)].filter(Boolean);
   return both.length ? [...new Set(both)].join(' · ') : null;

@@ -5,6 +5,9 @@ import { nearPointLight } from './measure/point-light.js';
 import { fmt } from './format.js';
 import { FRAME_MS, MS_PER_SECOND } from './units.js';
 
+/** A real wait between looks at our own reference page: our page, never a bound on a student's. */
+const LOOK_MS = 100;
+
 /**
  * Our reference's light, as the judge fitted the student's (P3–P5): the fitted direction toward the
  * light is in view space, and our page at angle 0 has view = world (eye on +z), so a directional
@@ -59,7 +62,7 @@ const SETTLE = { ms: 500, frames: 30 };
  */
 export async function untilDrawn(shows, driver, seconds) {
   for (const until = Date.now() + MS_PER_SECOND * seconds; !(await shows()) && Date.now() < until;) {
-    await new Promise((resolve) => setTimeout(resolve, 100));
+    await new Promise((resolve) => setTimeout(resolve, LOOK_MS));
     await driver.tick(FRAME_MS);
   }
   return shows();

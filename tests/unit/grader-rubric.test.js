@@ -116,71 +116,42 @@ test('a part\'s must lists audit ids: an older rubric\'s names are read as their
   assert.throws(() => mergeRubric(rubric, { parts: { WP04P3: { must: 'diffuse' } } }), /parts\.WP04P3\.must is not a list of audit ids \(it is "diffuse"\)/);
 });
 
-// A number that decides a verdict lives in the rubric, or is a constant of
-// mathematics, of the slides or of a unit. Every number literal in grader/core/ and check/ is read,
-// and every default parameter with a number in grader/ and check/; what is left is listed below,
-// file by file, with why it is not the rubric's.
+// A number that decides a verdict lives in the rubric, or is a constant of mathematics, of the
+// slides or of a unit. Every number literal in grader/core/ and check/ is read, and every default
+// parameter with a number in grader/ and check/. A number is allowed by what it is, never by its
+// value: one of CONSTANTS, an index (a[7]), or named at its place, in the value of a constant whose
+// name is in capitals (`const SWEEPS = 12;`, with a comment saying what it is: core/units.js's
+// units, a fit's steps, a guard against dividing by zero, the check page's HTTP statuses).
 const CONSTANTS = new Set([
   0, 1, 2, 3, 4, 0.5, // counting, halves, x y z, RGBA; the slides' 0.5·p + 0.5
 ]);
-// every other number is named for what it is: a unit in core/units.js (per cent, milliseconds, a
-// channel's 255, degrees, ...), or at its place, listed below by file with why it is not the rubric's
-const GUARD = 'a guard against dividing by (nearly) zero';
-const MECHANICS = 'the mechanics of a fit or a search (indices, grid sizes, steps), not a bound on what a page shows';
-const PAGE = 'the check page\'s own plumbing (key codes, sizes of files, HTTP statuses, waits for the browser)';
-const ALLOWED = {
-  'core/units.js': { numbers: [100, 1000, 16, 255, 180, 90, 360, 1e6, 1024], why: 'the units themselves, each named once for what it is (per cent, milliseconds, a frame at 60 Hz, a channel\'s greatest byte, degrees, a 4×4 matrix\'s entries, roundings, a kibibyte)' },
-  'core/audits/surface.js': { numbers: [8], why: 'how many of the fitted variants the numbers keep (what the report shows, not a bound)' },
-  'core/controls.js': { numbers: [60], why: 'the characters of a control\'s words kept to name it in the report' },
-  'core/gather/params.js': { numbers: [100], why: 'HTML\'s default max of a range input (RANGE_DEFAULT_MAX)' },
-  'core/measure/highlight.js': { numbers: [1e-6], why: GUARD },
-  'core/measure/perspective.js': { numbers: [1e-9, 45], why: `${GUARD}; the rim angles searched, 0° to 45° from the view direction (${MECHANICS})` },
-  'core/measure/point-light.js': { numbers: [1.25, 1.5, 1.75, 2.5, 5, 7, 10, 20, 10000, 0.1, 0.005, 1.05, 1e-12], why: `the distance grid and its refinement (${MECHANICS}); ${GUARD}` },
-  'core/part-names.js': { numbers: [5, 6, 120], why: 'the worksheet\'s five parts, the six patterns that name a part outright (a page\'s title may use those only), a title\'s words kept for a note: names, never a bound on what a page shows' },
-  'core/computed/surface.js': { numbers: [7, 12, 1e-9], why: `a fit sample's indices (${MECHANICS}); ${GUARD}` },
-  'core/gather/geometry.js': { numbers: [7], why: `a fit sample's indices (${MECHANICS})` },
-  'core/measure/surface-fit.js': { numbers: [5, 10, 20, 40, 80, 160, 320, 0.15, 0.05, 0.015, 0.005, 30, 8, 10000, 100000], why: `the shininesses tried, the light's refinement steps, the least pixels a fit is solved on (30 in all, 8 a channel), and the rounding of what is kept (${MECHANICS})` },
-  'core/computed/camera.js': { numbers: [5, 6, 8, 9, 10], why: 'the 3×3 rotation inside a column-major 4×4 matrix' },
-  'core/measure/linear.js': { numbers: [12, 1e-9, 1e-12, 1e-15], why: `${MECHANICS}; ${GUARD}` },
-  'core/reference-state.js': { numbers: [500, 30, 100], why: 'how long our own reference page runs before its picture is taken, and a real wait of 100 ms between looks: our page, never a bound on a student\'s' },
-  'core/measure/directions.js': { numbers: [5, 500], why: `the golden angle's √5, and the fibonacci directions searched: ${MECHANICS}` },
-  'core/measure/tint-added.js': { numbers: [6, 7, 1e-6, 1e-9, 1e-12], why: `${MECHANICS} (the fit's indices); ${GUARD}` },
-  'core/measure/diffuse.js': { numbers: [0.1, 0.005, 1e-9], why: `the refinement steps: ${MECHANICS}; ${GUARD}` },
-  'core/measure/tint.js': { numbers: [0.05, 1e-6, 1e-12], why: `the albedo's floor, which keeps a division by it finite: ${MECHANICS}; ${GUARD}` },
-  'core/measure/silhouette.js': { numbers: [63, 72, 36, 10, 8, 16], why: `63: a mask's bits; 8, 16: a colour's bytes packed in one number; 72, 36, 10: bins of the outline (${MECHANICS})` },
-  'core/gather/session.js': { numbers: [10], why: 'a real wait of 10 ms for the page\'s promises' },
-  '../check/files.js': { numbers: [5000, 10, 7, 5, 65536, 100], why: PAGE },
-  '../check/frame-page.js': { numbers: [37, 38, 39, 40, 33, 34, 187, 189, 32, 13, 27], why: PAGE },
-  '../check/frame-watch.js': { numbers: [1023, 100, 1000], why: `${PAGE}; a script put into the frame as text, which can import nothing: its milliseconds a second are its own` },
-  '../check/host.js': { numbers: [400, 500, 5000, 50, 8, 16], why: PAGE },
-  '../check/runner.js': { numbers: [200, 500, 5000, 30, 1000], why: PAGE },
-  '../check/serve.js': { numbers: [200, 404], why: PAGE },
-  '../check/sw.js': { numbers: [15000, 2000, 503], why: PAGE },
-};
-// a number a default parameter gives, allowed where it is not the rubric's (in grader/ outside core/ too)
-const DEFAULTS_ALLOWED = {
-  'browser/mesh.js': [60000, 65536],
-  'node/run/browser-version.js': [5000],
-  'node/cli/progress-line.js': [2000], // how often a log (not a terminal) gets a progress line
-  '../check/host.js': [500, 5000],
-  '../check/sw.js': [15000],
-};
+const NAMED = /^[A-Z][A-Z0-9_]*$/;
 
-/** The number literals of `src` that are neither constants nor allowed: [{ value, line }]. */
-function bareNumbers(src, allowed = []) {
+/** The number literals of `src` that are neither CONSTANTS, an index nor inside a named constant's value: [{ value, line }]. */
+function bareNumbers(src) {
   const out = [];
-  for (const t of acorn.tokenizer(src, { ecmaVersion: 'latest', sourceType: 'module', locations: true })) {
-    if (t.type === acorn.tokTypes.num && !CONSTANTS.has(t.value) && !allowed.includes(t.value)) out.push({ value: t.value, line: t.loc.start.line });
-  }
+  const walk = (n, named, index) => {
+    if (!n || typeof n.type !== 'string') return;
+    if (n.type === 'Literal' && typeof n.value === 'number' && !CONSTANTS.has(n.value) && !named && !index) {
+      out.push({ value: n.value, line: n.loc.start.line });
+    }
+    const inName = named || (n.type === 'VariableDeclarator' && n.id.type === 'Identifier' && NAMED.test(n.id.name));
+    for (const [k, v] of Object.entries(n)) {
+      const isIndex = n.type === 'MemberExpression' && n.computed && k === 'property';
+      if (Array.isArray(v)) v.forEach((c) => walk(c, inName, false));
+      else if (v && typeof v.type === 'string') walk(v, inName, isIndex);
+    }
+  };
+  walk(acorn.parse(src, { ecmaVersion: 'latest', sourceType: 'module', locations: true }), false, false);
   return out;
 }
 
-/** The default parameters (and destructuring defaults) of `src` that give a number outside CONSTANTS and `allowed`. */
-function numberDefaults(src, allowed = []) {
+/** The default parameters (and destructuring defaults) of `src` that give a number outside CONSTANTS. */
+function numberDefaults(src) {
   const out = [];
   const walk = (n) => {
     if (!n || typeof n.type !== 'string') return;
-    if (n.type === 'AssignmentPattern' && n.right.type === 'Literal' && typeof n.right.value === 'number' && !CONSTANTS.has(n.right.value) && !allowed.includes(n.right.value)) {
+    if (n.type === 'AssignmentPattern' && n.right.type === 'Literal' && typeof n.right.value === 'number' && !CONSTANTS.has(n.right.value)) {
       out.push({ text: src.slice(n.start, n.end), line: n.loc.start.line });
     }
     for (const v of Object.values(n)) {
@@ -192,26 +163,28 @@ function numberDefaults(src, allowed = []) {
   return out;
 }
 
-test('the number scans find what they look for (a bare 0.7 in measure/highlight.js, loadSeconds = 20)', () => {
+test('the number scans find what they look for (a bare 0.7 in measure/highlight.js, loadSeconds = 20), and allow a number by what it is', () => {
   const highlight = read('core/measure/highlight.js');
-  const allowed = ALLOWED['core/measure/highlight.js'].numbers;
-  assert.deepEqual(bareNumbers(highlight, allowed), [], 'measure/highlight.js as it is');
+  assert.deepEqual(bareNumbers(highlight), [], 'measure/highlight.js as it is');
   const planted = highlight.replace('thresholds.highlightPlaceRise * rise', '0.7 * rise');
   assert.notEqual(planted, highlight);
-  assert.deepEqual(bareNumbers(planted, allowed).map((n) => n.value), [0.7]);
-  assert.deepEqual(numberDefaults('export function open({ root, loadSeconds = 20 }, d = 2) { return [root, loadSeconds, d]; }').map((d) => d.text), ['loadSeconds = 20']);
+  assert.deepEqual(bareNumbers(planted).map((n) => n.value), [0.7]);
+  // an index, and a constant named at its place (however deep its value), are what they are; a
+  // number in a constant named in lower case, or beside an index, is bare
+  assert.deepEqual(bareNumbers('const SWEEPS = 12, STEPS = [0.15, { at: 7 }]; const x = m[12] + m[k + 1]; const sweeps = 12; const y = m[5] * 9;').map((n) => n.value), [12, 9]);
+  assert.deepEqual(numberDefaults('export function open({ root, loadSeconds = 20 }, d = 2, e = LIMIT) { return [root, loadSeconds, d, e]; }').map((d) => d.text), ['loadSeconds = 20']);
 });
 
-test('no number decides a verdict outside the rubric in grader/core/ and check/ (constants and the listed ones aside)', () => {
+test('no number decides a verdict outside the rubric in grader/core/ and check/ (constants, indices and named constants aside)', () => {
   const files = sources();
   const found = [];
   for (const rel of files.filter((f) => f.startsWith('core/') || f.startsWith('../check/'))) {
-    found.push(...bareNumbers(read(rel), (ALLOWED[rel] || {}).numbers).map((n) => `${rel}:${n.line}: ${n.value}`));
+    found.push(...bareNumbers(read(rel)).map((n) => `${rel}:${n.line}: ${n.value}`));
   }
-  assert.deepEqual(found, [], 'numbers to put in rubric.json (or, a constant, in CONSTANTS; not a verdict\'s, in ALLOWED with why)');
+  assert.deepEqual(found, [], 'numbers to put in rubric.json (or, not a verdict\'s, named at their place: a constant in capitals with a comment saying what it is)');
 });
 
 test('no default parameter gives a number the rubric should in grader/ and check/', () => {
-  const found = sources().flatMap((rel) => numberDefaults(read(rel), DEFAULTS_ALLOWED[rel]).map((d) => `${rel}:${d.line}: ${d.text}`));
-  assert.deepEqual(found, [], 'defaults that belong in rubric.json');
+  const found = sources().flatMap((rel) => numberDefaults(read(rel)).map((d) => `${rel}:${d.line}: ${d.text}`));
+  assert.deepEqual(found, [], 'defaults that belong in rubric.json (or, not a verdict\'s, a constant named at its place)');
 });

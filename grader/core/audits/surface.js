@@ -6,6 +6,9 @@ import { SLIDE } from './slides.js';
 import { exactLighting } from '../computed/lighting.js';
 import { unit } from './unit.js';
 
+/** How many of the fitted variants the numbers keep: what the report shows, not a bound. */
+const VARIANTS_KEPT = 8;
+
 /** This module's audits: id → title, the slide's sentence it checks, the artifacts it reads. */
 export const META = {
   'surface-fit': { title: 'The lighting on the page\'s own surface', slide: SLIDE.eye, failureTitle: 'A known misreading explains the lighting on the page\'s own surface', description: 'Fits the slide\'s model and its known misreadings on each pixel\'s normal and position as the page drew them; a note where a misreading explains the picture better by the rubric\'s margin.', reads: ['facts.surface', 'images.judged'] },
@@ -45,7 +48,7 @@ function auditLightingOnSurface(context, results) {
           diffuse: exact.diffuse,
           slide: exact.slide,
           best: exact.best,
-          variants: exact.variants.slice(0, 8),
+          variants: exact.variants.slice(0, VARIANTS_KEPT),
         };
   }
   auditSurfaceFit(context, exact);

@@ -7,6 +7,9 @@ import { solveNormal } from '../measure/linear.js';
 import { dot, cross, unit } from '../measure/vectors.js';
 import { CHANNEL_MAX, HALF_TURN } from '../units.js';
 
+/** A guard against dividing by (nearly) zero. */
+const GUARD = 1e-9;
+
 /** x of A x = b for a small square system (linear.js's elimination); null where singular. */
 export const solve = (A, b) => solveNormal(A.flat(), b, b.length);
 
@@ -46,7 +49,8 @@ export function clipMatrix(samples) {
  */
 export function cameraOfClip(A) {
   const [A0, A1, A2, A3] = A.map((r) => r.slice(0, 3));
-  const eye = Math.hypot(...A3) > 1e-9 * Math.hypot(...A2) ? solve([A0, A1, A3], [-A[0][3], -A[1][3], -A[3][3]]) : null;
+  const eye = Math.hypot(...A3) > GUARD * Math.hypot(...A2)
+    ? solve([A0, A1, A3], [-A[0][3], -A[1][3], -A[3][3]]) : null;
   // eye space: x along row 0, y along row 1 (a perspective's w row is −z; an orthographic's z row is −z times a scale)
   const back = unit(eye ? A3.map((x) => -x) : A2.map((x) => -x));
   const right = back && unit(cross(cross(back, A0), back));

@@ -5,6 +5,9 @@
 import { clipMatrix } from '../computed/surface.js';
 import { MILLIONTHS } from '../units.js';
 
+/** A fit sample is [px, py, pz, cx, cy, cz, cw]: the position, then gl_Position from CLIP_AT on. */
+const CLIP_AT = 3, SAMPLE_LENGTH = 7;
+
 /** The last frame's geometry, summed up within the rubric's sample bounds; null where not recorded. */
 export async function readGeometry(session) {
   if (!session.page.geometry) return null;
@@ -34,7 +37,7 @@ export async function readSurface(session) {
   if (!r || r.why) return { why: r ? r.why : 'the surface was not read' };
   const { normals, points, fit, ...facts } = r;
   // where the page's matrices put its positions: P·V·M, solved from the fit's samples (16 numbers kept, not the samples)
-  const clip = clipMatrix(fit.map((f) => ({ p: f.slice(0, 3), clip: f.slice(3, 7) })));
+  const clip = clipMatrix(fit.map((f) => ({ p: f.slice(0, CLIP_AT), clip: f.slice(CLIP_AT, SAMPLE_LENGTH) })));
   if (!clip) return { why: `where the page's matrices put its positions could not be solved from ${fit.length} of its pixels` };
   return {
     ...facts,

@@ -10,6 +10,9 @@ import { analyse, pictureChange } from '../measure.js';
 import { describe, effectOf } from '../controls.js';
 import { HUNDREDTHS, MS_PER_SECOND } from '../units.js';
 
+/** A real wait between looks at the page's promises (settle): never a bound on what a page shows. */
+const SETTLE_POLL_MS = 10;
+
 /** The wall clock's outer bound ran out while `doing`. */
 export class TooSlow extends Error {
   constructor(doing) {
@@ -94,7 +97,7 @@ export function openSession(page, { part, rubric, progress = () => {}, deadline 
       for (;;) {
         const s = await page.state();
         if (!s.pending || Date.now() > until) return s;
-        await new Promise((resolve) => setTimeout(resolve, 10));
+        await new Promise((resolve) => setTimeout(resolve, SETTLE_POLL_MS));
       }
     },
     async shot() {

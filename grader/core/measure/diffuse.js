@@ -5,6 +5,11 @@ import { luminance, sameMask } from './samples.js';
 import { highlightOf } from './highlight.js';
 import { lineFit } from './linear.js';
 
+/** A guard against dividing by (nearly) zero. */
+const GUARD = 1e-9;
+/** The light's refinement: its first step and the step it stops before (the mechanics of a search). */
+const REFINE_FIRST = 0.1, REFINE_LAST = 0.005;
+
 /** The samples where `use` is set, as flat arrays (normals, brightness), which every fit below reads. */
 function flat(pts, use) {
   let m = 0;
@@ -80,7 +85,7 @@ export function diffuseFit(pts, thresholds) {
       if (f.b >= 0 && (!best || f.sse < best.sse)) best = { ...f, l };
     }
     // refine around the best direction
-    for (let step = 0.1; step > 0.005; step /= 2) {
+    for (let step = REFINE_FIRST; step > REFINE_LAST; step /= 2) {
       for (const d of [[1, 0, 0], [-1, 0, 0], [0, 1, 0], [0, -1, 0], [0, 0, 1], [0, 0, -1]]) {
         const l = best.l.map((v, k) => v + step * d[k]), len = Math.hypot(...l), u = l.map((v) => v / len);
         const f = fitDirection(F, u);
@@ -120,10 +125,10 @@ export function diffuseFit(pts, thresholds) {
     if (g.b >= 0 && (!twoSidedAll || g.sse < twoSidedAll.sse)) twoSidedAll = { ...g, l };
   }
   // ... and both models over all pixels, none left out as a highlight
-  const r2All = sst > 1e-9 ? 1 - sseAll / sst : 0, r2TwoSidedAll = sst > 1e-9 ? 1 - twoSidedAll.sse / sst : 0;
+  const r2All = sst > GUARD ? 1 - sseAll / sst : 0, r2TwoSidedAll = sst > GUARD ? 1 - twoSidedAll.sse / sst : 0;
   return {
-    r2: sstU > 1e-9 ? 1 - best.sse / sstU : 0,
-    r2TwoSided: sstU > 1e-9 ? 1 - twoSided.sse / sstU : 0,
+    r2: sstU > GUARD ? 1 - best.sse / sstU : 0,
+    r2TwoSided: sstU > GUARD ? 1 - twoSided.sse / sstU : 0,
     r2All,
     r2TwoSidedAll,
     rms: Math.sqrt(best.sse / Math.max(1, used)),

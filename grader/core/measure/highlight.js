@@ -3,6 +3,9 @@
 import { luminance } from './samples.js';
 import { HALF_TURN } from '../units.js';
 
+/** A guard against dividing by (nearly) zero. */
+const GUARD = 1e-6;
+
 /**
  * The highlight above a model of the diffuse brightness (`predict(n)`): the largest rise of a
  * pixel over it as a share of the headroom to white there (`peak`: a highlight on a bright diffuse
@@ -51,7 +54,7 @@ export function highlightOffset(highlightNormal, light, toViewer = 1) {
   if (!highlightNormal || !light) return null;
   const h = [light[0], light[1], light[2] + toViewer];
   const len = Math.hypot(...h);
-  if (len < 1e-6) return null; // the light straight behind: no half vector
+  if (len < GUARD) return null; // the light straight behind: no half vector
   const c = (highlightNormal[0] * h[0] + highlightNormal[1] * h[1] + highlightNormal[2] * h[2]) / len;
   return (HALF_TURN / Math.PI) * Math.acos(Math.max(-1, Math.min(1, c)));
 }

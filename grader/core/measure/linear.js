@@ -7,10 +7,15 @@ export const det3 = (m) =>
   m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
   m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
 
+/** Guards against dividing by (nearly) zero: a singular matrix, a pivot, a line fit's spread. */
+const SINGULAR = 1e-12, GUARD = 1e-9;
+/** Jacobi's method: its sweeps, and an off-diagonal entry taken as zero (the mechanics of a fit). */
+const SWEEPS = 12, OFF_DIAGONAL_ZERO = 1e-15;
+
 /** x with A x = b (A 3×3, rows), by Cramer's rule; [0, 0, 0] where A is singular. */
 export function solve3(A, b) {
   const d = det3(A);
-  if (Math.abs(d) < 1e-12) return [0, 0, 0];
+  if (Math.abs(d) < SINGULAR) return [0, 0, 0];
   return [0, 1, 2].map((k) => det3(A.map((row, i) => row.map((v, j) => (j === k ? b[i] : v)))) / d);
 }
 
@@ -34,7 +39,7 @@ export function solveNormal(N, v, k) {
   for (let c = 0; c < k; c++) {
     let p = c;
     for (let r = c + 1; r < k; r++) if (Math.abs(A[r][c]) > Math.abs(A[p][c])) p = r;
-    if (Math.abs(A[p][c]) < 1e-12) return null;
+    if (Math.abs(A[p][c]) < SINGULAR) return null;
     [A[c], A[p]] = [A[p], A[c]];
     for (let r = 0; r < k; r++) {
       if (r === c) continue;
@@ -48,9 +53,9 @@ export function solveNormal(N, v, k) {
 /** The eigenvalues of a symmetric 3×3 matrix (rows), largest first (Jacobi rotations). */
 export function symmetricEigenvalues3(M) {
   const a = M.map((r) => [...r]);
-  for (let sweep = 0; sweep < 12; sweep++) {
+  for (let sweep = 0; sweep < SWEEPS; sweep++) {
     for (const [p, q] of [[0, 1], [0, 2], [1, 2]]) {
-      if (Math.abs(a[p][q]) < 1e-15) continue;
+      if (Math.abs(a[p][q]) < OFF_DIAGONAL_ZERO) continue;
       const th = (a[q][q] - a[p][p]) / (2 * a[p][q]);
       const t = Math.sign(th || 1) / (Math.abs(th) + Math.sqrt(th * th + 1));
       const c = 1 / Math.sqrt(t * t + 1), s = t * c;
@@ -70,7 +75,7 @@ export function symmetricEigenvalues3(M) {
 /** The least-squares (a, b) of y ≈ a + b x over n points from the sums, and the residual Σy² − a Σy − b Σxy. */
 export function lineFit(n, sy, syy, sx, sxx, sxy) {
   const den = n * sxx - sx * sx;
-  const b = den > 1e-9 ? (n * sxy - sx * sy) / den : 0;
+  const b = den > GUARD ? (n * sxy - sx * sy) / den : 0;
   const a = (sy - b * sx) / n;
   return { a, b, sse: Math.max(0, syy - a * sy - b * sxy) };
 }

@@ -5,6 +5,11 @@
 // every decoded normal, not read off the few pixels at the edge.
 import { HALF_TURN, RIGHT_ANGLE } from '../units.js';
 
+/** A guard against dividing by (nearly) zero. */
+const GUARD = 1e-9;
+/** The rim angles searched: 0° to RIM_DEGREES from the view direction (the mechanics of a search). */
+const RIM_DEGREES = 45;
+
 const DEG = HALF_TURN / Math.PI;
 
 /**
@@ -41,14 +46,14 @@ export function rimAngle(pts, far, thresholds) {
     return u;
   });
   const len = Math.hypot(...axis);
-  if (len < 1e-9) return null;
+  if (len < GUARD) return null;
   const v = axis.map((x) => x / len);
   const seen = pts.map((s, i) => ({
     rho: Math.hypot(s.n[0], s.n[1]),
     angle: Math.acos(Math.max(-1, Math.min(1, dirs[i][0] * v[0] + dirs[i][1] * v[1] + dirs[i][2] * v[2]))),
   }));
   let best = null;
-  for (let deg = 0; deg <= 45; deg += 0.5) {
+  for (let deg = 0; deg <= RIM_DEGREES; deg += 0.5) {
     const a = deg / DEG;
     let e = 0;
     for (const s of seen) e += (s.angle - normalAngle(s.rho, a, far)) ** 2;

@@ -5,6 +5,11 @@ import { luminance, sameMask } from './samples.js';
 import { highlightOf } from './highlight.js';
 import { lineFit } from './linear.js';
 
+/** A guard against dividing by (nearly) zero. */
+const GUARD = 1e-12;
+/** The refinement (the mechanics of a search): its first step, the step it stops before, and the distances it keeps within. */
+const REFINE_FIRST = 0.1, REFINE_LAST = 0.005, NEAREST = 1.05, FARTHEST = 1e4;
+
 /**
  * P3–P5: is the light a point light, and does it fall off as 1/r² (the slides: L_i = I/‖p_ℓ − x‖²)?
  * Brightness is fitted by a + b·max(n·w_i, 0)·g over the sphere seen as a unit sphere (x = n, the
@@ -49,7 +54,7 @@ export function pointLightFit(pts, thresholds, around = null) {
     return {
       distance: f.d,
       light: f.l,
-      r2: sst > 1e-12 ? 1 - f.sse / sst : 0,
+      r2: sst > GUARD ? 1 - f.sse / sst : 0,
       rms: Math.sqrt(f.sse / used),
       model,
       highlightPeak: hl.peak,
@@ -131,13 +136,13 @@ function grid({ m, nx, ny, nz, ys }, use, dirs) {
 function search(F, use, falloff, coarse) {
   let best = coarse;
   if (!best) return null;
-  for (let step = 0.1; step > 0.005; step /= 2) { // refine the direction, then the distance
+  for (let step = REFINE_FIRST; step > REFINE_LAST; step /= 2) { // refine the direction, then the distance
     for (const dd of [[1, 0, 0], [-1, 0, 0], [0, 1, 0], [0, -1, 0], [0, 0, 1], [0, 0, -1]]) {
       const l = best.l.map((v, k) => v + step * dd[k]), len = Math.hypot(...l);
       const f = fit(F, use, l.map((v) => v / len), best.d, falloff);
       if (f.b > 0 && f.sse < best.sse) best = f;
     }
-    for (const d of [Math.max(1.05, best.d * (1 - 2 * step)), Math.min(1e4, best.d * (1 + 2 * step))]) {
+    for (const d of [Math.max(NEAREST, best.d * (1 - 2 * step)), Math.min(FARTHEST, best.d * (1 + 2 * step))]) {
       const f = fit(F, use, best.l, d, falloff);
       if (f.b > 0 && f.sse < best.sse) best = f;
     }

@@ -3,6 +3,11 @@
 // lit edge). An image is { width, height, data } (RGBA bytes); thresholds are the rubric's.
 import { solve3 } from './linear.js';
 
+/** A colour packed in one number, red and green shifted by these bits; SIX_BITS keeps a channel's 6 bits (the background's key). */
+const RED_SHIFT = 16, GREEN_SHIFT = 8, SIX_BITS = 63;
+/** The radial profile's rays from the centroid, and the lit edge's arc counted in bins of BIN_DEGREES (the mechanics of a fit). */
+const RAYS = 72, ARC_BINS = 36, BIN_DEGREES = 10;
+
 /** The background (the commonest border colour), the object's mask and its silhouette. */
 export function analyse(img, thresholds) {
   const { width: w, height: h, data } = img;
@@ -13,19 +18,19 @@ export function analyse(img, thresholds) {
   for (let y = 0; y < h; y++) border.push([0, y], [w - 1, y]);
   for (const [x, y] of border) {
     const o = 4 * (y * w + x);
-    const key = (data[o] >> 2) << 16 | (data[o + 1] >> 2) << 8 | (data[o + 2] >> 2);
+    const key = (data[o] >> 2) << RED_SHIFT | (data[o + 1] >> 2) << GREEN_SHIFT | (data[o + 2] >> 2);
     counts.set(key, (counts.get(key) || 0) + 1);
   }
   const top = [...counts.entries()].sort((a, b) => b[1] - a[1])[0][0];
-  const bg = [(top >> 16 & 63) * 4 + 2, (top >> 8 & 63) * 4 + 2, (top & 63) * 4 + 2];
+  const bg = [(top >> RED_SHIFT & SIX_BITS) * 4 + 2, (top >> GREEN_SHIFT & SIX_BITS) * 4 + 2, (top & SIX_BITS) * 4 + 2];
   const n = w * h;
   const raw = new Uint8Array(n);
-  const first = data[0] << 16 | data[1] << 8 | data[2];
+  const first = data[0] << RED_SHIFT | data[1] << GREEN_SHIFT | data[2];
   let oneColour = true;
   const b0 = bg[0], b1 = bg[1], b2 = bg[2];
   for (let p = 0; p < n; p++) {
     const o = 4 * p, r = data[o], g = data[o + 1], b = data[o + 2];
-    if (oneColour && (r << 16 | g << 8 | b) !== first) oneColour = false;
+    if (oneColour && (r << RED_SHIFT | g << GREEN_SHIFT | b) !== first) oneColour = false;
     if (Math.abs(r - b0) + Math.abs(g - b1) + Math.abs(b - b2) > tol) raw[p] = 1;
   }
   openMask(raw, w, h, thresholds.thinLine);
@@ -62,8 +67,8 @@ export function analyse(img, thresholds) {
   // radial profile: the farthest object pixel along 72 rays from the centroid
   const rmax = Math.hypot(w, h);
   const radii = [];
-  for (let k = 0; k < 72; k++) {
-    const a = (2 * Math.PI * k) / 72, dx = Math.cos(a), dy = Math.sin(a);
+  for (let k = 0; k < RAYS; k++) {
+    const a = (2 * Math.PI * k) / RAYS, dx = Math.cos(a), dy = Math.sin(a);
     let last = 0;
     for (let t = 0; t < rmax; t += 0.5) {
       const x = Math.floor(cx + t * dx), y = Math.floor(cy + t * dy);
@@ -77,7 +82,7 @@ export function analyse(img, thresholds) {
   const R = Math.sqrt(area / Math.PI);
   const fill = area / (Math.PI * mean * mean);
   const touches = radii.some((r, k) => {
-    const a = (2 * Math.PI * k) / 72;
+    const a = (2 * Math.PI * k) / RAYS;
     const x = cx + r * Math.cos(a), y = cy + r * Math.sin(a);
     const m = thresholds.edgeMarginPixels;
     return x < m || y < m || x > w - m || y > h - m;
@@ -191,7 +196,7 @@ export function fitCircle(img, mask, bg, tol, thresholds) {
   const lo = sorted[Math.floor(thresholds.edgeTrim * sorted.length)],
     hi = sorted[Math.ceil((1 - thresholds.edgeTrim) * sorted.length) - 1];
   const bins = new Set(
-    pts.map(([x, y]) => Math.floor(((Math.atan2(y - cy, x - cx) + Math.PI) / (2 * Math.PI)) * 36) % 36),
+    pts.map(([x, y]) => Math.floor(((Math.atan2(y - cy, x - cx) + Math.PI) / (2 * Math.PI)) * ARC_BINS) % ARC_BINS),
   );
-  return { cx, cy, r, roundness: (hi - lo) / r, arc: bins.size * 10, points: pts.length };
+  return { cx, cy, r, roundness: (hi - lo) / r, arc: bins.size * BIN_DEGREES, points: pts.length };
 }

@@ -13,6 +13,13 @@ import { DIRS } from './directions.js';
 import { dot, unit } from './vectors.js';
 import { CHANNEL_MAX } from '../units.js';
 
+/** The least pixels a fit is solved on: in all, and a channel. */
+const LEAST_PIXELS = 30, LEAST_A_CHANNEL = 8;
+/** The light's refinement steps around the best of the coarse search (the mechanics of a search). */
+const REFINE_STEPS = [0.15, 0.05, 0.015, 0.005];
+/** What is kept of a fit: its coefficients to 1/COEF_ROUND, its residuals to 1/RMS_ROUND. */
+const COEF_ROUND = 1e4, RMS_ROUND = 1e5;
+
 /**
  * The samples with the picture's colour at each ([0, 1] a channel). Front and back faces alike: a
  * page that winds its triangles the other way and culls nothing shows its outside as back faces.
@@ -74,7 +81,7 @@ function fitChannels(cols, D, S, { tint = false, times = false } = {}) {
       yy += y * y;
       count++;
     }
-    if (count < 8) return null;
+    if (count < LEAST_A_CHANNEL) return null;
     for (let a = 0; a < k; a++) for (let b = 0; b < a; b++) N[a * k + b] = N[b * k + a];
     const x = solveNormal(N, v, k);
     if (!x) return null;
@@ -133,7 +140,7 @@ function bestLight(cols, how) {
   // a coarse search over every fourth direction, then refined: the diffuse fit's error is smooth in w_i
   for (let k = 0; k < DIRS.length; k += 4) tryLight(DIRS[k]);
   if (!best) return null;
-  for (const step of [0.15, 0.05, 0.015, 0.005]) {
+  for (const step of REFINE_STEPS) {
     const c = best.wi;
     for (const a of [-1, 0, 1]) {
       for (const b of [-1, 0, 1]) {
@@ -158,7 +165,7 @@ function bestLight(cols, how) {
 export function surfaceFit(surface, img, thresholds) {
   if (!surface || surface.why) return { why: surface ? surface.why : 'no surface' };
   const use = coloured(surface.samples, img);
-  if (use.length < 30) return { why: `only ${use.length} pixels of the page's surface to fit` };
+  if (use.length < LEAST_PIXELS) return { why: `only ${use.length} pixels of the page's surface to fit` };
   const mean = [0, 1, 2].map((ch) => use.reduce((a, s) => a + s.c[ch], 0) / use.length);
   const sst = use.reduce((a, s) => a + s.c.reduce((b, v, ch) => b + (v - mean[ch]) ** 2, 0), 0);
   const cols = columns(use, thresholds);
@@ -207,11 +214,12 @@ export function surfaceFit(surface, img, thresholds) {
     samples: use.length,
     diffuse: d ? { wi: d.wi, rms: rms(d.fit), r2: sst > 0 ? 1 - d.fit.sse / sst : 0 } : null,
     best: { name: top.name, wi: top.wi, form: top.form, view: top.view, s: top.s, tint: top.tint, rms: rms(top.fit),
-      r2: sst > 0 ? 1 - top.fit.sse / sst : 0, coef: top.fit.coef.map((c) => c.map((v) => Math.round(v * 1e4) / 1e4)) },
+      r2: sst > 0 ? 1 - top.fit.sse / sst : 0,
+      coef: top.fit.coef.map((c) => c.map((v) => Math.round(v * COEF_ROUND) / COEF_ROUND)) },
     slide: slide ? { name: slide.name, form: slide.form, rms: rms(slide.fit), s: slide.s } : null,
     // the lighting is there, beside the normal colour: the colour alone leaves a visible residual that the lighting halves
     normalColourAlone: alone ? { rms: rms(alone) } : null,
     lit: !!alone && !!tinted && better(tinted, { fit: alone }),
-    variants: ranked.map((v) => ({ name: v.name, rms: Math.round(rms(v.fit) * 1e5) / 1e5, s: v.s })),
+    variants: ranked.map((v) => ({ name: v.name, rms: Math.round(rms(v.fit) * RMS_ROUND) / RMS_ROUND, s: v.s })),
   };
 }

@@ -11,6 +11,9 @@ import { leastSquares, symmetricEigenvalues3 } from './linear.js';
 import { dot, cross } from './vectors.js';
 import { HALF_TURN } from '../units.js';
 
+/** Guards against dividing by (nearly) zero. */
+const GUARD = 1e-9, SINGULAR = 1e-12, TINY = 1e-6;
+
 const det = (A) => dot(A[0], cross(A[1], A[2]));
 const clipped = (s, thresholds) =>
   Math.min(...s.c) <= thresholds.blackLevel || Math.max(...s.c) >= thresholds.clippedLevel;
@@ -32,11 +35,11 @@ function normalTurn(use) {
   }
   const M = [0, 1, 2].map((i) => [0, 1, 2].map((j) => D.reduce((a, r) => a + r[i] * r[j], 0)));
   const [l1, l2] = symmetricEigenvalues3(M);
-  if (!(l1 > 1e-9)) return null;
+  if (!(l1 > GUARD)) return null;
   const alpha = Math.sqrt((l1 + l2) / 2);
   const u = [cross(D[0], D[1]), cross(D[0], D[2]), cross(D[1], D[2])].reduce((a, b) => (dot(b, b) > dot(a, a) ? b : a));
   const len = Math.sqrt(dot(u, u));
-  if (len < 1e-12) return null;
+  if (len < SINGULAR) return null;
   for (const sign of [1, -1]) {
     const m = u.map((v) => (sign * alpha * v) / (len * Math.sqrt(3)));
     const A = D.map((r) => r.map((v, j) => v + m[j]));
@@ -68,7 +71,7 @@ function channelsR2(use, lit, turned, { alpha = null, times = false } = {}) {
     for (let i = k; i < ys.length; i += 3) sst += (use[(i - k) / 3].c[k] - mean) ** 2;
   }
   for (let i = 0; i < ys.length; i++) sse += (ys[i] - rows[i].reduce((a, v, j) => a + v * x[j], 0)) ** 2;
-  return { r2: sst > 1e-12 ? 1 - sse / sst : 0, x };
+  return { r2: sst > SINGULAR ? 1 - sse / sst : 0, x };
 }
 
 /**
@@ -116,7 +119,7 @@ export function addedTintFit(pts, thresholds) {
       even: nt.even,
       r2,
       r2Without: channelsR2(use, lit, turned, { alpha: 0 }).r2,
-      times: both.x ? both.x[7] / Math.max(1e-6, Math.abs(both.x[6])) : null,
+      times: both.x ? both.x[7] / Math.max(TINY, Math.abs(both.x[6])) : null,
     },
   };
 }

@@ -12,6 +12,11 @@ import { leastSquares, solveNormal, symmetricEigenvalues3 } from './linear.js';
 import { addedTintFit, addedClearly } from './tint-added.js';
 import { HALF_TURN, MAT4_ENTRIES } from '../units.js';
 
+/** Guards against dividing by (nearly) zero. */
+const SINGULAR = 1e-12, TINY = 1e-6;
+/** The albedo's floor, which keeps a division by it finite (the mechanics of a fit). */
+const ALBEDO_FLOOR = 0.05;
+
 // a pixel clipped at white (a channel at clippedLevel) or nearly black (its channels' sum at darkSum) says little of its hue
 const usable = (s, thresholds) =>
   Math.max(...s.c) < thresholds.clippedLevel && s.c[0] + s.c[1] + s.c[2] > thresholds.darkSum;
@@ -45,7 +50,7 @@ export function hueByNormal(pts, thresholds) {
   const ev = symmetricEigenvalues3(M);
   return {
     spread: Math.sqrt(sst / (3 * use.length)),
-    r2: sst > 1e-12 ? 1 - sse / sst : 0,
+    r2: sst > SINGULAR ? 1 - sse / sst : 0,
     turn: Math.sqrt(Math.max(0, ev[1])),
   };
 }
@@ -76,7 +81,7 @@ function albedoAndLighting(use, l, q0, a0, b0, iterations) {
       for (let j = 0; j < 4; j++) { v4[j] += r[j] * y; for (let k = 0; k < 4; k++) N4[j * 4 + k] += r[j] * r[k]; }
     }
     const x1 = solveNormal(N4, v4, 4);
-    if (!x1 || x1[0] <= 1e-6) break;
+    if (!x1 || x1[0] <= TINY) break;
     q = [x1[1] / x1[0], x1[2] / x1[0], x1[3] / x1[0]];
     // the lighting with the albedo fixed: y ≈ A·(a + b x)
     N2.fill(0); v2.fill(0);
@@ -101,7 +106,7 @@ function albedoAndLighting(use, l, q0, a0, b0, iterations) {
  */
 export function detintedFit(pts, thresholds, plain = diffuseFit(pts, thresholds)) {
   let q = [0, 0, 0];
-  const albedo = () => (n) => Math.max(0.05, 1 + q[0] * n[0] + q[1] * n[1] + q[2] * n[2]);
+  const albedo = () => (n) => Math.max(ALBEDO_FLOOR, 1 + q[0] * n[0] + q[1] * n[1] + q[2] * n[2]);
   // (with q = 0, A is 1 and the samples divide out to themselves: the fit is `plain`, diffuseFit's
   // on the samples as they are, to the last bit)
   const fitWith = (A) =>

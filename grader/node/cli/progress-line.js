@@ -1,6 +1,9 @@
 // A progress line for a long run, as every command here shows one (tools/cli.js gives it to the
 // tools, progress.js to the grader): rewritten in place on a terminal, plain lines in a log.
 
+/** How often a log (not a terminal) gets a progress line, at most. */
+const LOG_INTERVAL_MS = 2000;
+
 /**
  * A progress line for a long run: rewritten in place on a terminal, and in a log file a plain
  * line every `interval` ms at most (every call with 0). `progress(text)` shows it;
@@ -10,7 +13,7 @@
  * @param {{stream?: {write: (s: string) => void, isTTY?: boolean, columns?: number}, interval?: number, now?: () => number}} [options]
  *   where it goes (stderr), how often a log gets a line (2000 ms), the clock (Date.now)
  */
-export function progressLine(name, { stream = process.stderr, interval = 2000, now = Date.now } = {}) {
+export function progressLine(name, { stream = process.stderr, interval = LOG_INTERVAL_MS, now = Date.now } = {}) {
   let printed = -Infinity, shown = false;
   const tty = !!stream.isTTY;
   // on a terminal: back to the line's start, the text cut to the terminal's width, the rest cleared

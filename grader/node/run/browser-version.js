@@ -3,8 +3,11 @@
 // that graded). Chromium on Windows prints nothing for --version: then the path alone is said.
 import { spawnSync } from 'node:child_process';
 
+/** How long an executable's --version is waited for. */
+const VERSION_TIMEOUT_MS = 5000;
+
 /** The first line an executable prints for --version ("Chromium 156.0.8078.108 built on ..."), or null. */
-export function versionOfExecutable(file, timeoutMs = 5000) {
+export function versionOfExecutable(file, timeoutMs = VERSION_TIMEOUT_MS) {
   if (!file) return null;
   const run = spawnSync(file, ['--version'], { encoding: 'utf8', timeout: timeoutMs, stdio: ['ignore', 'pipe', 'ignore'] });
   const line = (run.stdout || '').split('\n').map((l) => l.trim()).find(Boolean);
