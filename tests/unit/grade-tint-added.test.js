@@ -5,7 +5,7 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import { analyse, samples, normalColours, addedTintFit, addedClearly, shadeFit } from '../../grader/core/measure.js';
-import { auditNormalsNotLight } from '../../grader/core/audits/normals.js';
+import { auditNormalsNotLight } from '../../grader/core/audits/units/normals-not-light.js';
 import { spherePicture } from './sphere-picture.js';
 
 const thresholds = JSON.parse(readFileSync(new URL('../../grader/core/rubric.json', import.meta.url), 'utf8')).thresholds;

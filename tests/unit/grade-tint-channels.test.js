@@ -108,7 +108,7 @@ test('clippedShare: the share of the sphere washed out to white', () => {
 });
 
 test('a highlight at the light is a review on a plain material, and a note where the tint makes the fitted light unsure', async () => {
-  const { auditHighlight } = await import('../../grader/core/audits/highlight.js');
+  const { auditHighlight } = await import('../../grader/core/audits/units/highlight.js');
   const { shadingOf } = await import('../../grader/core/computed/evidence.js');
   const light = norm([0.9, 0.2, 0.35]); // 68° from the viewer
   const atLight = (n, albedo) => {

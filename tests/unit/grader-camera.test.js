@@ -5,7 +5,7 @@ import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import { mat4 } from 'gl-matrix';
 import { cameraOf, cameraTurn } from '../../grader/core/computed/camera.js';
-import { auditOrbit } from '../../grader/core/audits/orbit.js';
+import { auditOrbit } from '../../grader/core/audits/units/orbit-light.js';
 import { checkList } from '../../grader/core/verdict.js';
 
 const rubric = JSON.parse(readFileSync(new URL('../../grader/core/rubric.json', import.meta.url), 'utf8'));

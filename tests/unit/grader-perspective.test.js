@@ -6,7 +6,9 @@ import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import { analyse, samples } from '../../grader/core/measure.js';
 import { normalAngle, rimAngle } from '../../grader/core/measure/perspective.js';
-import { auditNormals, auditPerspective, auditNormalsNotLight } from '../../grader/core/audits/normals.js';
+import { auditNormals } from '../../grader/core/audits/units/normal-colours.js';
+import { auditPerspective } from '../../grader/core/audits/units/perspective.js';
+import { auditNormalsNotLight } from '../../grader/core/audits/units/normals-not-light.js';
 import { checkList } from '../../grader/core/verdict.js';
 
 const rubric = JSON.parse(readFileSync(new URL('../../grader/core/rubric.json', import.meta.url), 'utf8'));

@@ -4,7 +4,7 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import { shownDifference } from '../../grader/core/measure/shown.js';
-import { auditShown } from '../../grader/core/audits/channels.js';
+import { auditShown } from '../../grader/core/audits/units/shown-channels.js';
 
 const thresholds = JSON.parse(readFileSync(new URL('../../grader/core/rubric.json', import.meta.url), 'utf8')).thresholds;
 /** A w×h picture: pixel (x, y) is f(x, y) → [r, g, b, a]. */

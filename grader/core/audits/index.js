@@ -5,41 +5,17 @@
 // feedback pages, grades.csv and the grader's README find a reason's slide and its column by that
 // id, never by its words.
 import { META as page } from './page.js';
-import { META as firstFrame } from './first-frame.js';
-import { META as channels } from './channels.js';
-import { META as sphere } from './sphere.js';
-import { META as geometry } from './geometry.js';
-import { META as normals } from './normals.js';
-import { META as diffuse } from './diffuse.js';
-import { META as orbit } from './orbit.js';
-import { META as highlight } from './highlight.js';
-import { META as sliders } from './sliders.js';
-import { META as shading } from './shading.js';
-import { META as surface } from './surface.js';
+import { AUDIT_LIST } from './list.js';
 
-const modules = {
-  page,
-  firstFrame,
-  channels,
-  sphere,
-  geometry,
-  normals,
-  diffuse,
-  orbit,
-  highlight,
-  sliders,
-  shading,
-  surface,
-};
-
-/** id → { id, title, failureTitle, description, slide, note?, reads, module }. */
+/** id → { id, title, failureTitle, description, slide, note?, reads, module }: module, the unit that declares it (units/<id>.js), or page. */
 export const AUDITS = {};
-for (const [module, meta] of Object.entries(modules)) {
-  for (const [id, m] of Object.entries(meta)) {
-    if (AUDITS[id]) throw new Error(`audit id ${id} is in both ${AUDITS[id].module} and ${module}`);
-    AUDITS[id] = { id, ...m, module };
-  }
-}
+const declare = (id, m, module) => {
+  // (a unit that says another's id shares that unit's declaration: the same object, declared once)
+  if (AUDITS[id] && AUDITS[id].declared !== m) throw new Error(`audit id ${id} is declared in both ${AUDITS[id].module} and ${module}`);
+  if (!AUDITS[id]) AUDITS[id] = Object.defineProperty({ id, ...m, module }, 'declared', { value: m, enumerable: false });
+};
+for (const [id, m] of Object.entries(page)) declare(id, m, 'page');
+for (const u of AUDIT_LIST) for (const [id, m] of Object.entries(u.meta)) declare(id, m, u.id);
 
 /** `id`'s meta; throws for an id no audit declares (a reason must carry a declared id). */
 export function auditMeta(id) {

@@ -1,79 +1,88 @@
 // Every audit unit, in the order core/audit.js runs them: the order a teacher reads a part (can
-// it be judged at all, the sphere, its geometry, its lighting). A unit runs after the units whose
-// results it uses. Adding an audit is a module with its META and its UNITS (audits/unit.js), and
-// its id in ORDER below.
-import { UNITS as page } from './page.js';
-import { UNITS as firstFrame } from './first-frame.js';
-import { UNITS as channels } from './channels.js';
-import { UNITS as sphere } from './sphere.js';
-import { UNITS as geometry } from './geometry.js';
-import { UNITS as normals } from './normals.js';
-import { UNITS as surface } from './surface.js';
-import { UNITS as readings } from './readings.js';
-import { UNITS as diffuse } from './diffuse.js';
-import { UNITS as orbit } from './orbit.js';
-import { UNITS as highlight } from './highlight.js';
-import { UNITS as sliders } from './sliders.js';
-import { UNITS as shading } from './shading.js';
+// it be judged at all, the sphere, its geometry, its lighting). Each is a module of its own under
+// units/, named by its id: its META (the ids it says) and one function, declared as a unit
+// (audits/unit.js). A unit runs after the units whose results it uses. Adding an audit is a module
+// under units/ and its place in ORDER below (with its import).
+import { UNIT as notGraded } from './units/not-graded.js';
+import { UNIT as tamper } from './units/tamper.js';
+import { UNIT as tooSlow } from './units/too-slow.js';
+import { UNIT as shownChannels } from './units/shown-channels.js';
+import { UNIT as firstFrame } from './units/first-frame.js';
+import { UNIT as ladderClimbed } from './units/ladder-climbed.js';
+import { UNIT as heavyLevel } from './units/heavy-level.js';
+import { UNIT as orbitStopsAgain } from './units/orbit-stops-again.js';
+import { UNIT as levelLadder } from './units/level-ladder.js';
+import { UNIT as levelControls } from './units/level-controls.js';
+import { UNIT as judgedPicture } from './units/judged-picture.js';
+import { UNIT as sphere } from './units/sphere.js';
+import { UNIT as closed } from './units/closed.js';
+import { UNIT as allRound } from './units/all-round.js';
+import { UNIT as growth } from './units/growth.js';
+import { UNIT as loopsMultiply } from './units/loops-multiply.js';
+import { UNIT as pictureNotGeometry } from './units/picture-not-geometry.js';
+import { UNIT as normalColours } from './units/normal-colours.js';
+import { UNIT as perspective } from './units/perspective.js';
+import { UNIT as perFace } from './units/per-face.js';
+import { UNIT as depthCulling } from './units/depth-culling.js';
+import { UNIT as winding } from './units/winding.js';
+import { UNIT as surfaceFit } from './units/surface-fit.js';
+import { UNIT as normalsNotLight } from './units/normals-not-light.js';
+import { UNIT as shading } from './units/shading.js';
+import { UNIT as unclipped } from './units/unclipped.js';
+import { UNIT as brightened } from './units/brightened.js';
+import { UNIT as litViews } from './units/lit-views.js';
+import { UNIT as diffuse } from './units/diffuse.js';
+import { UNIT as orbitLight } from './units/orbit-light.js';
+import { UNIT as pointLight } from './units/point-light.js';
+import { UNIT as highlight } from './units/highlight.js';
+import { UNIT as sliders } from './units/sliders.js';
+import { UNIT as leastS } from './units/least-s.js';
+import { UNIT as perFragment } from './units/per-fragment.js';
+import { UNIT as highlightPlace } from './units/highlight-place.js';
+import { UNIT as orbitNotStopped } from './units/orbit-not-stopped.js';
 
 const ORDER = [
   // can the part be judged: this browser runs it, it left the grader's hooks alone, it was
   // gathered within the bounds, it drew a first frame, the level ladder was climbed
-  'not-graded',
-  'tamper',
-  'too-slow',
-  'shown-channels',
-  'first-frame',
-  'ladder-climbed',
-  'heavy-level',
-  'orbit-stops-again',
-  'level-ladder',
-  'level-controls',
+  notGraded,
+  tamper,
+  tooSlow,
+  shownChannels,
+  firstFrame,
+  ladderClimbed,
+  heavyLevel,
+  orbitStopsAgain,
+  levelLadder,
+  levelControls,
   // the sphere at the judged level, its geometry and its normals
-  'judged-picture',
-  'sphere',
-  'closed',
-  'all-round',
-  'growth',
-  'loops-multiply',
-  'picture-not-geometry',
-  'normal-colours',
-  'perspective',
-  'per-face',
-  'depth-culling',
-  'winding',
+  judgedPicture,
+  sphere,
+  closed,
+  allRound,
+  growth,
+  loopsMultiply,
+  pictureNotGeometry,
+  normalColours,
+  perspective,
+  perFace,
+  depthCulling,
+  winding,
   // the lighting
-  'surface-fit',
-  'normals-not-light',
-  'shading',
-  'unclipped',
-  'brightened',
-  'lit-views',
-  'diffuse',
-  'orbit-light',
-  'point-light',
-  'highlight',
-  'sliders',
-  'least-s',
-  'per-fragment',
-  'highlight-place',
-  'orbit-not-stopped',
-];
-
-const ALL = [
-  ...page,
-  ...firstFrame,
-  ...channels,
-  ...sphere,
-  ...geometry,
-  ...normals,
-  ...surface,
-  ...readings,
-  ...diffuse,
-  ...orbit,
-  ...highlight,
-  ...sliders,
-  ...shading,
+  surfaceFit,
+  normalsNotLight,
+  shading,
+  unclipped,
+  brightened,
+  litViews,
+  diffuse,
+  orbitLight,
+  pointLight,
+  highlight,
+  sliders,
+  leastS,
+  perFragment,
+  highlightPlace,
+  orbitNotStopped,
 ];
 
 /** The units in ORDER; checks that each is listed once and runs after the units it uses. */
@@ -97,4 +106,4 @@ export function orderedUnits(units, order) {
 }
 
 /** Every audit unit, in the order they run. */
-export const AUDIT_LIST = orderedUnits(ALL, ORDER);
+export const AUDIT_LIST = orderedUnits(ORDER, ORDER.map((u) => u.id));

@@ -1,10 +1,10 @@
 // What is said of a part before or around its audits (the page missing, not opened, stopped by the
-// time bound, linked to another part's page, the grader's own trouble, a hand-in not unpacked) and
-// of the grading as a whole (a page that replaced what the grader reads through, a part too slow
-// on this machine): ids as the audits' are, so that every reason carries one.
+// time bound, linked to another part's page, the grader's own trouble, the browser's own failure,
+// a hand-in not unpacked): ids as the audits' are, so that every reason carries one. (A page that
+// replaced what the grader reads through, and a part too slow here, are audits: units/tamper.js,
+// units/too-slow.js.)
 import { SLIDE } from './slides.js';
-import { NOT_GRADED, tooSlowWords, tooHeavyWords } from '../verdict.js';
-import { unit, end } from './unit.js';
+import { NOT_GRADED } from '../verdict.js';
 
 /** These reasons' ids: id → title, the slide's sentence a miss quotes (or null), what it reads. */
 export const META = {
@@ -17,14 +17,11 @@ export const META = {
   'browser-failed': { title: 'The browser kept running the page to the end', slide: null, failureTitle: 'The browser failed while grading this page', description: 'Where the browser itself fails (it runs out of memory, loses its connection to the page or the page\'s frame), the part is not graded here, with the browser\'s message: a grade rests on the page, never on the browser that ran it.', reads: ['the page'] },
   'grader-trouble': { title: 'The grader finished on this page', slide: null, failureTitle: 'The grader could not finish on this page', description: 'Where the grader itself fails on a page, the part is a review for a teacher, never a pass.', reads: ['the page'] },
   'page-errors': { title: 'Errors the page reported (no verdict changes)', slide: null, failureTitle: 'The page reported errors', description: 'The page\'s own errors and alerts, listed for the student; they change no verdict.', reads: ['facts.errors'] },
-  tamper: { title: 'The page left what the grader reads through alone', slide: null, failureTitle: 'The page replaced what the grader reads through', description: 'Checks that the browser\'s functions and the grader\'s hooks it reads through are still the ones installed before the page ran.', reads: ['facts.tampered'] },
-  'too-slow': { title: 'Gathered within the rubric\'s bounds', slide: null, failureTitle: 'Too slow to judge here', description: 'Gathers within counted budgets and the rubric\'s time and work bounds; a part past them is not graded here (or the rubric\'s tooSlowVerdict), never failed for being slow.', reads: ['facts.tooSlow', 'facts.tooHeavy'] },
-  'level-ladder': { title: 'The level ladder climbed and judged at the last level that drew', slide: SLIDE.buttons, failureTitle: 'The level ladder was not climbed to the end', description: 'Subdivides until the silhouette settles, and judges the last level that drew.', reads: ['facts.ladder', 'facts.blankAtHigherLevel'] },
   'not-checked': { title: 'A part the check page cannot check in this browser', slide: null, failureTitle: 'The check page cannot check this part in this browser', description: 'A WebGPU part in a browser without WebGPU is not checked on the check page.', reads: [] },
 };
 
 /** A reason `id` said at `level`, as findingsOf gives one ({ id, level, reason }). */
-const finding = (id, level, reason) => ({ id, level, reason });
+export const finding = (id, level, reason) => ({ id, level, reason });
 
 /** No page for `part` in the hand-in. */
 export const missingPage = (part) => finding('page-missing', 'fail', `no page for ${part} was found in the submission`);
@@ -83,36 +80,3 @@ export function troubleWith(err, browser) {
   const f = browserFailure(err, browser);
   return { checks: [], notGraded: f.reason, notGradedId: f.id };
 }
-
-/** A page that replaced what the grader reads through may show one thing and hand the grader another. */
-function auditTamper({ facts, sayAs }) {
-  if (facts.tampered) sayAs('tamper')('review', `the page replaced or probed what the grader reads it through: ${facts.tampered.join(', ')} (a hand-in must not change the browser's own functions or the grader's, nor draw otherwise under a test driver): what it showed may not be what the grader saw, a teacher looks`);
-}
-
-/**
- * Nothing is judged where the gathering ran out of its bound: where it ran out depends on the
- * machine, the verdict must not. A page that draws is not broken for being slow: not graded here
- * (the rubric's tooSlowVerdict), or said at that verdict.
- */
-function auditTooSlow(context) {
-  const { facts, rubric, sayAs } = context;
-  if (!facts.tooSlow) return null;
-  const slow = tooSlow(
-    rubric,
-    facts.tooHeavy != null ? tooHeavyWords(rubric, facts.tooSlow, facts.tooHeavy) : tooSlowWords(rubric, facts.tooSlow),
-  );
-  if (slow.level === NOT_GRADED) context.notGraded = { reason: slow.reason, id: slow.id };
-  else sayAs(slow.id)(slow.level, slow.reason);
-  return end();
-}
-
-/** This module's audit units (audits/list.js runs them in its order). */
-export const UNITS = [
-  unit(META, 'tamper', auditTamper),
-  unit(META, 'too-slow', auditTooSlow),
-  // the gathering stopped before it climbed the levels: nothing past the first frame can be judged
-  unit(META, 'ladder-climbed', ({ facts }) => (facts.ladder ? null : end('the grader stopped before the level ladder', 'level-ladder')), { says: ['level-ladder'] }),
-  unit(META, 'level-ladder', ({ facts, sayAs }) => {
-    if (facts.blankAtHigherLevel) sayAs('level-ladder')('mistake', 'the picture goes blank at a higher level: judged at the last level that drew');
-  }),
-];

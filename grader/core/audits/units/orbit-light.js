@@ -1,16 +1,15 @@
-// WP04P3: "the camera orbits the sphere" with a button that toggles it: the lit side turns as the
-// camera orbits (a light that stays in the world), and a control starts and stops the orbit.
-import { describe } from '../controls.js';
-import { cameraRotations, rotationsTurn, staysInWorld } from '../computed/camera.js';
-import { fmt } from '../format.js';
-import { SLIDE } from './slides.js';
-import { rolesInWords } from '../computed/roles.js';
-import { unit } from './unit.js';
-import { HALF_TURN } from '../units.js';
+// The audit unit 'orbit-light' (The lit side turns as the camera orbits): Compares the light
+// fitted in the lit views with how far the camera turned (its view matrix, as the page sent it).
+import { describe } from '../../controls.js';
+import { cameraRotations, rotationsTurn, staysInWorld } from '../../computed/camera.js';
+import { fmt } from '../../format.js';
+import { SLIDE } from '../slides.js';
+import { rolesInWords } from '../../computed/roles.js';
+import { unit } from '../unit.js';
+import { HALF_TURN } from '../../units.js';
 
-/** This module's audits: id → title, the slide's sentence it checks, the artifacts it reads. */
+/** The audits this unit says: id → title, the slide's sentence it checks, the artifacts it reads. */
 export const META = {
-  'orbit-stops': { title: 'The orbit stops, and stops again', slide: SLIDE.orbit, failureTitle: 'The orbit does not stop', description: 'Looks for the control that stops the orbit, and checks that it stops again after being restarted.', reads: ['facts.stopped', 'facts.orbitKeptMoving'] },
   'orbit-light': { title: 'The lit side turns as the camera orbits', slide: SLIDE.orbit, failureTitle: 'The lit side does not turn as the camera orbits', description: 'Compares the light fitted in the lit views with how far the camera turned (its view matrix, as the page sent it).', reads: ['facts.views'] },
   'orbit-toggle': { title: 'A button toggles the orbit', slide: SLIDE.orbit, failureTitle: 'No button toggles the orbit', description: 'Finds the control that starts and stops the orbit by what it does to the picture.', reads: ['facts.orbit', 'facts.controls', 'facts.roles', 'facts.level'] },
 };
@@ -20,14 +19,9 @@ const signedAngle = (a, b) =>
   Math.acos(
     Math.max(-1, Math.min(1, (a[0] * b[0] + a[1] * b[1] + a[2] * b[2]) / (Math.hypot(...a) * Math.hypot(...b)))),
   );
+
 const angle = (a, b) =>
   (HALF_TURN / Math.PI) * Math.acos(Math.min(1, Math.abs(a[0] * b[0] + a[1] * b[1] + a[2] * b[2])));
-
-/** The orbit restarted to look at the shading would not stop again. */
-export function auditOrbitStopsAgain({ facts, sayAs }) {
-  const say = sayAs('orbit-stops');
-  if (facts.orbitKeptMoving) say('review', 'the orbit did not stop again: the pictures were judged as it moves');
-}
 
 /** The lit side turning with the orbit (the lit views' sparse fits, `lit`), and the orbit's control. */
 export function auditOrbit({ facts, thresholds, must, sayAs, numbers }, lit) {
@@ -74,15 +68,5 @@ export function auditOrbit({ facts, thresholds, must, sayAs, numbers }, lit) {
   }
 }
 
-/** The orbit could not be stopped: said as a note. */
-export function auditNotStopped({ facts, sayAs }) {
-  const say = sayAs('orbit-stops');
-  if (!facts.stopped) say('pass', 'note: the orbit could not be stopped: the pictures were judged as it moves');
-}
-
-/** This module's audit units (audits/list.js runs them in its order). */
-export const UNITS = [
-  unit(META, 'orbit-stops-again', auditOrbitStopsAgain, { says: ['orbit-stops'] }),
-  unit(META, 'orbit-light', (context, results) => auditOrbit(context, results['lit-views']), { also: ['orbit-toggle'], uses: ['lit-views'] }),
-  unit(META, 'orbit-not-stopped', auditNotStopped, { says: ['orbit-stops'] }),
-];
+/** The unit (audits/list.js runs it in its order). */
+export const UNIT = unit(META, 'orbit-light', (context, results) => auditOrbit(context, results['lit-views']), { also: ['orbit-toggle'], uses: ['lit-views'] });

@@ -1,10 +1,10 @@
-// A page must not show one thing and hand the grader another: each picture that decides a verdict
-// is read back by the page (the grader's own functions, kept from before the page ran) and taken
-// as the browser shows it (a screenshot from outside the page), and the two must agree.
-import { unit } from './unit.js';
-import { PERCENT } from '../units.js';
+// The audit unit 'shown-channels' (What the page reads back is what the browser shows): Compares
+// the canvas read back with a screenshot of it as the browser shows it, at the first frame and at
+// the end.
+import { unit } from '../unit.js';
+import { PERCENT } from '../../units.js';
 
-/** This module's audits: id → title, the slide's sentence it checks, the artifacts it reads. */
+/** The audit this unit says: id → title, the slide's sentence it checks, the artifacts it reads. */
 export const META = {
   'shown-channels': { title: 'What the page reads back is what the browser shows', slide: null, failureTitle: 'What the page reads back is not what the browser shows', description: 'Compares the canvas read back with a screenshot of it as the browser shows it, at the first frame and at the end.', reads: ['facts.shown'] },
 };
@@ -26,5 +26,5 @@ export function auditShown({ facts, thresholds, sayAs, imagesShown }) {
   return off.some((d) => d.at === 'first');
 }
 
-/** This module's audit units (audits/list.js runs them in its order). */
-export const UNITS = [unit(META, 'shown-channels', auditShown)];
+/** The unit (audits/list.js runs it in its order). */
+export const UNIT = unit(META, 'shown-channels', auditShown);

@@ -1,18 +1,17 @@
-// The lighting read on the page's own surface (computed/lighting.js: the slide's model and its known
-// misreadings fitted where each pixel's normal and position are the page's own). A note for the
-// student and the teacher, never a change of verdict: it names what explains the picture best where
-// a misreading beats the slide's formula by the rubric's margin (surfaceVariantMargin).
-import { SLIDE } from './slides.js';
-import { exactLighting } from '../computed/lighting.js';
-import { unit } from './unit.js';
+// The audit unit 'surface-fit' (The lighting on the page's own surface): Fits the slide's model
+// and its known misreadings on each pixel's normal and position as the page drew them; a note
+// where a misreading explains the picture better by the rubric's margin.
+import { SLIDE } from '../slides.js';
+import { exactLighting } from '../../computed/lighting.js';
+import { unit } from '../unit.js';
 
-/** How many of the fitted variants the numbers keep: what the report shows, not a bound. */
-const VARIANTS_KEPT = 8;
-
-/** This module's audits: id → title, the slide's sentence it checks, the artifacts it reads. */
+/** The audit this unit says: id → title, the slide's sentence it checks, the artifacts it reads. */
 export const META = {
   'surface-fit': { title: 'The lighting on the page\'s own surface', slide: SLIDE.eye, failureTitle: 'A known misreading explains the lighting on the page\'s own surface', description: 'Fits the slide\'s model and its known misreadings on each pixel\'s normal and position as the page drew them; a note where a misreading explains the picture better by the rubric\'s margin.', reads: ['facts.surface', 'images.judged'] },
 };
+
+/** How many of the fitted variants the numbers keep: what the report shows, not a bound. */
+const VARIANTS_KEPT = 8;
 
 const fmt = (x) => x.toFixed(3);
 
@@ -54,7 +53,5 @@ function auditLightingOnSurface(context, results) {
   auditSurfaceFit(context, exact);
 }
 
-/** This module's audit units (audits/list.js runs them in its order). */
-export const UNITS = [
-  unit(META, 'surface-fit', auditLightingOnSurface, { uses: ['judged-picture'] }),
-];
+/** The unit (audits/list.js runs it in its order). */
+export const UNIT = unit(META, 'surface-fit', auditLightingOnSurface, { uses: ['judged-picture'] });

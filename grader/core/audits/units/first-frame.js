@@ -1,17 +1,14 @@
-// The first frame: the page got a context, its shaders compile, it drew something visible. A
-// part that drew nothing cannot be judged further: `fail` says why, with the first error seen.
-// A part that asked for WebGPU in a browser without it (Firefox ESR) is not graded here at all.
-import { analyse } from '../measure.js';
-import { NOT_GRADED } from '../verdict.js';
-import { SLIDE } from './slides.js';
-import { unit, end } from './unit.js';
+// The audit unit 'first-frame' (The page draws its first frame): Waits for the page's first frame
+// (frames run once nothing it awaits is pending) and reads the canvas back.
+import { analyse } from '../../measure.js';
+import { SLIDE } from '../slides.js';
+import { unit, end } from '../unit.js';
 
-/** This module's audits: id → title, the slide's sentence it checks, the artifacts it reads. */
+/** The audits this unit says: id → title, the slide's sentence it checks, the artifacts it reads. */
 export const META = {
   'first-frame': { title: 'The page draws its first frame', slide: SLIDE.sphere, failureTitle: 'The page draws no visible first frame', description: 'Waits for the page\'s first frame (frames run once nothing it awaits is pending) and reads the canvas back.', reads: ['facts.first', 'images.first', 'facts.errors'] },
   'shaders-compile': { title: 'The shaders compile and link', slide: SLIDE.uniforms, note: 'the shaders must compile first: the error above gives the line', failureTitle: 'A shader does not compile or link', description: 'Reads every shader\'s compile and link status (WebGL) and compilation messages (WebGPU), with the line of the error.', reads: ['facts.first'] },
   'webgpu-adapter': { title: 'WebGPU starts', slide: SLIDE.sphere, note: 'this browser has no WebGPU adapter: try the WebGL view, or a browser with WebGPU', failureTitle: 'WebGPU did not start', description: 'The page asked for a WebGPU adapter and got none.', reads: ['facts.first'] },
-  'not-graded': { title: 'A part this browser cannot run (WebGPU here without it)', slide: null, failureTitle: 'This browser cannot run the part', description: 'A part that uses WebGPU, in a browser that has none (Firefox ESR), is not graded there.', reads: ['facts.first'] },
 };
 
 /** auditFirstFrame's answer where it has said why nothing more is judged, and the part is not broken. */
@@ -45,30 +42,12 @@ export function auditFirstFrame({ facts, images, thresholds, sayAs }) {
   return `drew nothing visible: the canvas is one colour${waited}${why ? ` (${why})` : ''}`;
 }
 
-/**
- * A part that asked for WebGPU (navigator.gpu, a 'webgpu' canvas) where the browser has none, and
- * got no WebGL context either, is not graded here: the browser is to blame, not the page. The
- * reason, or null.
- */
-export function notGradedHere({ facts }) {
-  const g = facts.first;
-  if (!g || !g.webgpuMissing || /^webgl/.test(g.api || '')) return null;
-  return `${NOT_GRADED}: this part uses WebGPU (it asked for navigator.gpu or a 'webgpu' canvas), and this browser has no WebGPU ` +
-    '(Firefox ESR has none): grade it in Chromium, npm run grade without --browser firefox';
-}
-
-/** This module's audit units (audits/list.js runs them in its order). */
-export const UNITS = [
-  unit(META, 'not-graded', (context) => {
-    const reason = notGradedHere(context);
-    if (reason) context.notGraded = { reason, id: 'not-graded' };
-  }),
-  // a part that drew nothing ends here; where what the grader read is not what a student sees
-  // (shown-channels), the review stands and nothing is failed on it
-  unit(META, 'first-frame', (context, results) => {
-    const fail = auditFirstFrame(context);
-    if (fail === STOP) return end();
-    if (fail) return results['shown-channels'] ? end() : end(fail, 'first-frame');
-    return null;
-  }, { also: ['shaders-compile', 'webgpu-adapter'], uses: ['shown-channels'] }),
-];
+/** The unit (audits/list.js runs it in its order). */
+// a part that drew nothing ends here; where what the grader read is not what a student sees
+// (shown-channels), the review stands and nothing is failed on it
+export const UNIT = unit(META, 'first-frame', (context, results) => {
+  const fail = auditFirstFrame(context);
+  if (fail === STOP) return end();
+  if (fail) return results['shown-channels'] ? end() : end(fail, 'first-frame');
+  return null;
+}, { also: ['shaders-compile', 'webgpu-adapter'], uses: ['shown-channels'] });

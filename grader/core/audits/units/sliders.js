@@ -1,13 +1,13 @@
-// WP04P4: "sliders for the material and light parameters" that act on the input event (while
-// sliding), and ks used in the specular term.
-import { analyse, perspectiveSamples, highlightAbove } from '../measure.js';
-import { fullFit } from '../computed/views.js';
-import { sliderEvent } from '../computed/slider-event.js';
-import { fmt } from '../format.js';
-import { SLIDE } from './slides.js';
-import { unit } from './unit.js';
+// The audit unit 'sliders' (Sliders for the material and light parameters): Finds the sliders for
+// kd, ks, s, Le and La by what they change, and sets each far from where it is.
+import { analyse, perspectiveSamples, highlightAbove } from '../../measure.js';
+import { fullFit } from '../../computed/views.js';
+import { sliderEvent } from '../../computed/slider-event.js';
+import { fmt } from '../../format.js';
+import { SLIDE } from '../slides.js';
+import { unit } from '../unit.js';
 
-/** This module's audits: id → title, the slide's sentence it checks, the artifacts it reads. */
+/** The audits this unit says: id → title, the slide's sentence it checks, the artifacts it reads. */
 export const META = {
   sliders: { title: 'Sliders for the material and light parameters', slide: SLIDE.sliders, failureTitle: 'Sliders for the material and light parameters are missing or do nothing', description: 'Finds the sliders for kd, ks, s, Le and La by what they change, and sets each far from where it is.', reads: ['facts.sliders', 'facts.slidersFound'] },
   'input-event': { title: 'Sliders that act on the input event', slide: SLIDE.inputEvent, failureTitle: 'A slider acts on the change event, not on input', description: 'Sets each slider on the input event first, and on the change event only where input showed nothing.', reads: ['facts.sliders'] },
@@ -77,8 +77,6 @@ export function auditSliders({ facts, images, thresholds, must, sayAs, rubric, p
   if (must.has('sliders') && dead) say('pass', `note: ${dead} slider(s) change nothing in the picture`);
 }
 
-/** This module's audit units (audits/list.js runs them in its order). */
-export const UNITS = [
-  unit(META, 'sliders', (context, results) => auditSliders(context, results['judged-picture'], results.shading.shading),
-    { also: ['input-event', 'ks-used'], uses: ['judged-picture', 'shading'] }),
-];
+/** The unit (audits/list.js runs it in its order). */
+export const UNIT = unit(META, 'sliders', (context, results) => auditSliders(context, results['judged-picture'], results.shading.shading),
+  { also: ['input-event', 'ks-used'], uses: ['judged-picture', 'shading'] });
