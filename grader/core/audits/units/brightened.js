@@ -3,7 +3,7 @@
 import { fmt } from '../../format.js';
 import { SLIDE } from '../slides.js';
 import { unit } from '../unit.js';
-import { settings } from '../diffuse.js';
+import { noteReadAgain, settings } from '../diffuse.js';
 
 /** The audit this unit says: id → title, the slide's sentence it checks, the artifacts it reads. */
 export const META = {
@@ -11,12 +11,8 @@ export const META = {
 };
 
 /** Where the picture was too dim to show its shading, the slider the gatherer raised to read it (facts.brightened). */
-export function auditBrightened({ facts, sayAs, imagesShown }) {
-  const say = sayAs('brightened');
-  const b = facts.brightened;
-  if (!b) return;
-  imagesShown.brightened = b.image;
-  say('pass', `note: the sphere is too dim to show its shading (brightness spread ${fmt(b.before, 3)}: a dark light); it was judged with the page's own slider raised: ${settings(b.steps)} (spread ${fmt(b.after, 3)} then)`);
+export function auditBrightened(context) {
+  noteReadAgain(context, 'brightened', context.facts.brightened, (b) => `note: the sphere is too dim to show its shading (brightness spread ${fmt(b.before, 3)}: a dark light); it was judged with the page's own slider raised: ${settings(b.steps)} (spread ${fmt(b.after, 3)} then)`);
 }
 
 /** The unit (audits/list.js runs it in its order). */

@@ -5,7 +5,7 @@ import { fmt } from '../../format.js';
 import { SLIDE } from '../slides.js';
 import { unit } from '../unit.js';
 import { PERCENT } from '../../units.js';
-import { settings } from '../diffuse.js';
+import { noteReadAgain, settings } from '../diffuse.js';
 
 /** The audit this unit says: id → title, the slide's sentence it checks, the artifacts it reads. */
 export const META = {
@@ -13,12 +13,11 @@ export const META = {
 };
 
 /** Where the picture clipped to white, the sliders the gatherer lowered to read its shading (facts.unclipped). */
-export function auditUnclipped({ facts, sayAs, imagesShown }) {
-  const say = sayAs('unclipped');
-  const u = facts.unclipped;
-  if (!u) return;
-  imagesShown.unclipped = u.image;
-  say('pass', `note: the picture clips to white over ${fmt(PERCENT * u.before, 0)}% of the sphere, which hides its shading and highlight; they were judged with the page's own slider${u.steps.length > 1 ? 's' : ''} lowered: ${settings(u.steps)} (${fmt(PERCENT * u.after, 0)}% white then)`);
+export function auditUnclipped(context) {
+  noteReadAgain(context, 'unclipped', context.facts.unclipped, (u) => {
+    const sliders = `slider${u.steps.length > 1 ? 's' : ''}`;
+    return `note: the picture clips to white over ${fmt(PERCENT * u.before, 0)}% of the sphere, which hides its shading and highlight; they were judged with the page's own ${sliders} lowered: ${settings(u.steps)} (${fmt(PERCENT * u.after, 0)}% white then)`;
+  });
 }
 
 /** The unit (audits/list.js runs it in its order). */
