@@ -4,8 +4,9 @@
 // page did (grader/browser/geometry.js records the divisor), and draw an instanced draw again as
 // one (grader/browser/instanced-draws.js counts the page's). Each pixel's normal (n = p: the
 // position in the model's space) is within 1° of the moved sphere's normal where its ray meets it.
+// And the grader's experiment with culling off reaches an instanced draw as it reaches a plain one.
 import { test, expect } from '@playwright/test';
-import { surfaceOfFixture, SIZE } from './surface-helpers.js';
+import { surfaceOfFixture, initScripts, SIZE } from './surface-helpers.js';
 import { degreesBetween } from '../../grader/core/computed/surface.js';
 
 // (the three ways the page draws: one instance with plain drawArrays; two, the first out of view,
@@ -44,5 +45,34 @@ for (const [way, query, instances] of WAYS) {
     expect(compared).toBeGreaterThan(2000);
     expect(within / compared).toBeGreaterThanOrEqual(0.99);
     expect(drawn).toBeLessThan(1.1 * compared + 16 * Math.sqrt(compared)); // (nothing drawn outside the sphere but its rim)
+  });
+}
+
+// the grader's experiment (gather/faces.js): the page's own frame drawn again with culling off,
+// where the page culls its front faces: the near side, culled, shows again, in every way of drawing
+for (const [way, query] of WAYS) {
+  test(`with culling off (${way}, the front faces culled): the near side shows, as the grader's experiment asks`, async ({ browser, baseURL }) => {
+    const context = await browser.newContext();
+    try {
+      for (const script of initScripts('webgl')) await context.addInitScript(script);
+      const page = await context.newPage();
+      await page.goto(`${baseURL}/tests/fixtures/surface-instanced.html${query}${query ? '&' : '?'}cull=front`);
+      await page.waitForFunction(() => window.drawn === true);
+      // the blue of the pixel at the moved sphere's centre: 0.5·p_z + 0.5, near side 1, far side 0
+      const blue = () => page.evaluate(() => {
+        const gl = document.getElementById('c').getContext(window.location.search.includes('webgl2') ? 'webgl2' : 'webgl');
+        const px = new Uint8Array(4);
+        // (x at the moved centre: 0.25 in the model, 0.25·f/3 in NDC)
+        gl.readPixels(Math.round(64 + 64 * (0.25 / Math.tan(Math.PI / 8)) / 3), 64, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, px);
+        return px[2];
+      });
+      expect(await blue()).toBeLessThan(64); // culled: the inside of the far side
+      await page.evaluate(() => { window.__grade.noCull = true; window.draw(); });
+      expect(await blue()).toBeGreaterThan(192); // culling off: the near side
+      await page.evaluate(() => { window.__grade.noCull = false; window.draw(); });
+      expect(await blue()).toBeLessThan(64); // as the page set it again
+    } finally {
+      await context.close();
+    }
   });
 }
