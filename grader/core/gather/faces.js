@@ -2,7 +2,7 @@
 // culling and winding controls set as the step ends, a frame with culling off, and the depth test and
 // culling as the page set them.
 import { samples, normalColours, facesViewer } from '../measure.js';
-import { free } from './params.js';
+import { freeControlNamed } from './params.js';
 
 /**
  * P2: the page may start with the depth test off or culling on the wrong side: its own controls
@@ -17,7 +17,7 @@ export async function probeFaces(session, controls, judged) {
   let nc = normalColours(samples(img, an, thresholds), thresholds);
   if (nc && !facesViewer(nc, thresholds)) {
     for (const [r, want] of [['depth', true], ['cull', true], ['clockwise', false]]) {
-      const c = free(session, controls, r);
+      const c = freeControlNamed(session, controls, r);
       if (!c || (c.type === 'checkbox' && c.checked === want)) continue;
       if (!await session.press(c, `the ${r === 'clockwise' ? 'clockwise-front-faces' : r} control`)) continue;
       const s = await session.shot();
@@ -49,7 +49,7 @@ export async function probeFaces(session, controls, judged) {
 export async function probeDepthCulling(session, controls) {
   let faces = (await session.page.state()).faces || {};
   for (const [r, on] of [['depth', 'depthTest'], ['cull', 'culling']]) {
-    const c = free(session, controls, r);
+    const c = freeControlNamed(session, controls, r);
     if (faces[on] || !c) continue;
     if (await session.press(c, `the ${r} control`)) faces = (await session.page.state()).faces || {};
   }

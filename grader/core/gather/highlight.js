@@ -6,7 +6,7 @@ import { describeGroup } from '../controls.js';
 import { lightAngle, fullFit } from '../computed/views.js';
 import { highlightIn } from '../computed/evidence.js';
 import { searchOrbit } from './orbit.js';
-import { groupsOf, setGroup, greatest, groupFacts } from './params.js';
+import { groupsOf, setGroup, greatestValue, groupFacts } from './params.js';
 
 /**
  * P4/P5, no highlight seen: the page's own material sliders show it: ks up to its greatest, then s
@@ -22,7 +22,7 @@ export async function raiseHighlight(session, controls) {
   const groups = groupsOf(session, controls).filter((g) =>
     g.controls.every((c) => c.type === 'range' || c.type === 'number' || (g.role === 'ks' && c.type === 'color')),
   );
-  const ksTop = (c) => (c.type === 'color' ? greatest(c) : Number(c.max === '' || c.max === undefined ? 1 : c.max));
+  const ksTop = (c) => (c.type === 'color' ? greatestValue(c) : Number(c.max === '' || c.max === undefined ? 1 : c.max));
   for (const [r, to] of [['ks', ksTop], ['s', s10]]) {
     const g = groups.find((x) => x.role === r);
     if (!g || raised.some((x) => x.seen)) continue;

@@ -9,8 +9,8 @@
 // grader, check/frame-page.js for the check page): state(), snap(), controls(), click(c),
 // setValue(c, v, events), press(key), tick(ms, frames) → state(), setNoCull(on), sources(), errors().
 import { openSession, TooSlow, TooHeavy } from './session.js';
-import { findOrbit, sampleOrbit, look, startOrbitToSee } from './orbit.js';
-import { findLevel, climb } from './level.js';
+import { findOrbit, sampleOrbit, keepIfLit, startOrbitToSee } from './orbit.js';
+import { findLevel, climbLevelLadder } from './level.js';
 import { probeFaces, probeDepthCulling } from './faces.js';
 import { raiseHighlight, placeFarther } from './highlight.js';
 import { trySliders, leastShininess } from './sliders.js';
@@ -116,13 +116,13 @@ async function orbitAndLevel(session, controls) {
   await findOrbit(session, controls);
   const stopped = facts.stopped = !session.moving;
   await findLevel(session, controls);
-  await climb(session);
+  await climbLevelLadder(session);
   const ladder = session.ladder;
   // the orbit looked at where the shading can be read (it was too coarse at first): on again,
   // sampled, off again; the view it stops at is judged. Only where it buys evidence: the judged view
   // is unlit, or the step asks for the orbit (P3)
   const { orbit } = session;
-  const unlit = () => !look(session, ladder[ladder.length - 1].img, { orbiting: false, keep: false });
+  const unlit = () => !keepIfLit(session, ladder[ladder.length - 1].img, { orbiting: false, keep: false });
   if (orbit.later && must.has('diffuse') && (must.has('orbit-toggle') || unlit())) {
     const at = ladder.length - 1;
     if (!stopped) {

@@ -165,7 +165,7 @@ export async function findLevel(session, controls) {
  * The ladder: coarsen to the bottom (P5's coarse level), then subdivide until the silhouette
  * settles or is as round as pixels allow. Each level's picture is kept (level-k) with its work a frame.
  */
-export async function climb(session) {
+export async function climbLevelLadder(session) {
   const { thresholds, level: levelBy } = session;
   session.step('subdividing until the sphere is round');
   const ladder = [session.cur];

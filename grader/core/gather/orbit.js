@@ -11,7 +11,7 @@ import { fmt } from '../format.js';
 import { MS_PER_SECOND } from '../units.js';
 
 /** Is `img` a lit view? Lit views are kept (`orbiting`: seen while the camera orbits). */
-export function look(session, img, { orbiting = true, keep = true } = {}) {
+export function keepIfLit(session, img, { orbiting = true, keep = true } = {}) {
   const { lit } = litView(img, session.thresholds);
   if (lit && keep) {
     session.facts.views.push({
@@ -77,7 +77,7 @@ export async function sampleOrbit(session, afterLadder = false) {
   for (
     ;
     k < thresholds.orbitSamples &&
-    (!look(session, img) || k < thresholds.orbitLeastSamples || turnedTooLittle(session));
+    (!keepIfLit(session, img) || k < thresholds.orbitLeastSamples || turnedTooLittle(session));
     k++
   ) {
     await tickOrbit(session, k);
@@ -115,7 +115,7 @@ export async function findOrbit(session, controls) {
   // with no control touched (an orbit's view matrix: not a slider's doing)
   facts.geometryAtFirst = await readGeometry(session);
   if (session.moving) facts.sentAnimated = sentChanges(sent, await readSent(session));
-  if (shaded) look(session, session.images.first, { orbiting: false });
+  if (shaded) keepIfLit(session, session.images.first, { orbiting: false });
   if (session.moving) {
     session.act('the picture moves by itself (an orbit or animation)');
     if (shaded) await sampleOrbit(session);

@@ -6,15 +6,15 @@ import { nameRole, parameterGroups } from '../controls.js';
 const role = (session, c) => nameRole(c, session.patterns);
 
 /** The first of `controls` not yet given a role whose name says `r` (and `pred` holds). */
-export const free = (session, controls, r, pred = () => true) =>
+export const freeControlNamed = (session, controls, r, pred = () => true) =>
   controls.find((x) => !session.taken.has(x.index) && pred(x) && role(session, x) === r);
 
 /** An <input type=range> without min or max runs from 0 to 100: HTML's defaults. */
 export const RANGE_DEFAULT_MAX = 100;
 
 /** A slider's least and greatest values (a colour picker's: black and white). */
-export const least = (c) => (c.type === 'color' ? '#000000' : Number(c.min || 0));
-export const greatest = (c) =>
+export const leastValue = (c) => (c.type === 'color' ? '#000000' : Number(c.min || 0));
+export const greatestValue = (c) =>
   c.type === 'color'
     ? '#ffffff'
     : Number(c.max === '' || c.max === undefined ? (c.type === 'range' ? RANGE_DEFAULT_MAX : 1) : c.max);

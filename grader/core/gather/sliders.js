@@ -5,7 +5,7 @@ import { pictureChange } from '../measure.js';
 import { describeGroup, sentChanges } from '../controls.js';
 import { sliderEvent } from '../computed/slider-event.js';
 import { readSent } from './geometry.js';
-import { groupsOf, setGroup, least, free, groupFacts, RANGE_DEFAULT_MAX } from './params.js';
+import { groupsOf, setGroup, leastValue, freeControlNamed, groupFacts, RANGE_DEFAULT_MAX } from './params.js';
 
 /**
  * P4: each parameter's sliders (one slider, or the three of a colour or vector: parameterGroups)
@@ -21,8 +21,8 @@ export async function trySliders(session, controls) {
   for (const g of groups.slice(0, thresholds.maxSliderTrials)) {
     const k = g.role;
     const target = (c) => {
-      if (c.type === 'color') return least(c);
-      const lo = least(c), hi = Number(c.max === '' || c.max === undefined ? RANGE_DEFAULT_MAX : c.max);
+      if (c.type === 'color') return leastValue(c);
+      const lo = leastValue(c), hi = Number(c.max === '' || c.max === undefined ? RANGE_DEFAULT_MAX : c.max);
       return k === 's' ? (Number(session.now(c)) > (lo + hi) / 2 ? lo : hi) : (Number(session.now(c)) > lo ? lo : hi); // s: far from where it is; others: to the least
     };
     const vs = await setGroup(session, g, target, ['input']);
@@ -70,7 +70,7 @@ export async function trySliders(session, controls) {
 
 /** s at its least (where that is 0 or below): one picture, in the judged view; then s back. */
 export async function leastShininess(session, controls) {
-  const c = free(session, controls, 's', (x) => x.type === 'range' || x.type === 'number');
+  const c = freeControlNamed(session, controls, 's', (x) => x.type === 'range' || x.type === 'number');
   if (!c) return;
   const lo = c.min === '' || c.min === undefined || c.min === null ? 0 : Number(c.min); // a range's min defaults to 0
   if (!(lo <= 0)) return;

@@ -7,7 +7,7 @@
 // dark light) is read again with the page's own Le slider (else kd) at its greatest.
 import { samples } from '../measure.js';
 import { luminance } from '../measure/samples.js';
-import { groupsOf, setGroup, least, greatest } from './params.js';
+import { groupsOf, setGroup, leastValue, greatestValue } from './params.js';
 import { PERCENT, THOUSANDTHS } from '../units.js';
 
 /** The page's free parameter groups for `roles` that are sliders or numbers (not colour pickers), in the order of `roles`. */
@@ -40,7 +40,7 @@ export async function unclip(session, controls, img, an) {
   for (let k = 0; k < thresholds.maxUnclipSteps && share > thresholds.unclippedShare; k++) {
     const g = groups[k % groups.length];
     const vs = await setGroup(session, g, (c) => {
-      const lo = least(c), v = Number(session.now(c));
+      const lo = leastValue(c), v = Number(session.now(c));
       return Math.round(THOUSANDTHS * (lo + (v - lo) / 2)) / THOUSANDTHS;
     });
     g.controls.forEach((c, i) => session.values.set(c.index, vs[i]));
@@ -78,9 +78,9 @@ export async function brighten(session, controls, img, an) {
   const before = brightnessSpread(img, an, thresholds);
   if (before >= thresholds.evenSpread) return null;
   const [g] = numericGroups(session, controls, ['Le', 'kd']);
-  if (!g || g.controls.every((c) => Number(session.now(c)) >= greatest(c))) return null;
+  if (!g || g.controls.every((c) => Number(session.now(c)) >= greatestValue(c))) return null;
   session.step('raising the page\'s own light: the picture is too dim to show its shading');
-  const vs = await setGroup(session, g, greatest);
+  const vs = await setGroup(session, g, greatestValue);
   await session.tick(session.thresholds.actionTickMs);
   const sh = await session.shot();
   const after = sh && !sh.an.blank ? brightnessSpread(sh.img, an, thresholds) : 0;
