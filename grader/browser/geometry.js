@@ -245,21 +245,22 @@ function recordWebGL(
       { mode, count: Math.max(0, count | 0), type, offset: offset | 0, indexed: true, ...instanced(instances) });
     wrap(proto, 'drawArrays', (gl, a) => arrays(gl, a));
     wrap(proto, 'drawElements', (gl, a) => elements(gl, a));
-    wrap(proto, 'drawArraysInstanced', (gl, a) => arrays(gl, a, a[3]));
-    wrap(proto, 'drawElementsInstanced', (gl, a) => elements(gl, a, a[4]));
-    extensionsOf(proto, { wrap, bindVao, divisor, arrays, elements });
+    const arraysInstanced = (gl, a) => arrays(gl, a, a[3]), elementsInstanced = (gl, a) => elements(gl, a, a[4]);
+    wrap(proto, 'drawArraysInstanced', arraysInstanced);
+    wrap(proto, 'drawElementsInstanced', elementsInstanced);
+    extensionsOf(proto, { wrap, bindVao, divisor, arraysInstanced, elementsInstanced });
   }
 
 }
 
 /** WebGL 1's vertex array objects and instancing, which come from extensions: their calls recorded as WebGL 2's. */
-function extensionsOf(proto, { wrap, bindVao, divisor, arrays, elements }) {
+function extensionsOf(proto, { wrap, bindVao, divisor, arraysInstanced, elementsInstanced }) {
   const getExtension = proto.getExtension;
   proto.getExtension = function (name) {
     const ext = getExtension.call(this, name), gl = this;
     const methods = /instanced_arrays/i.test(String(name))
-      ? { vertexAttribDivisorANGLE: divisor, drawArraysInstancedANGLE: (g, a) => arrays(g, a, a[3]),
-        drawElementsInstancedANGLE: (g, a) => elements(g, a, a[4]) }
+      ? { vertexAttribDivisorANGLE: divisor, drawArraysInstancedANGLE: arraysInstanced,
+        drawElementsInstancedANGLE: elementsInstanced }
       : /vertex_array_object/i.test(String(name)) ? { bindVertexArrayOES: (g, [vao]) => bindVao(g, vao) } : {};
     if (!ext || ext.__geometryWrapped || !Object.keys(methods).length) return ext;
     Object.defineProperty(ext, '__geometryWrapped', { value: true });

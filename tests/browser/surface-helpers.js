@@ -34,26 +34,32 @@ export async function surfaceOfPage(page, url) {
 }
 
 /**
- * A fixture page's surface (`file` under tests/fixtures/, which sets window.drawn once it has drawn),
- * in a context of its own with the grader's init scripts for `api`: its pictures' bytes as arrays
- * (the points left out), or { why }; and the draws and vertices the grader counted (counted).
+ * `look(page)` on a fixture page (`file` under tests/fixtures/, which sets window.drawn once it has
+ * drawn), opened in a context of its own with the grader's init scripts for `api`.
  */
-export async function surfaceOfFixture(browser, baseURL, api, file) {
+export async function onFixture(browser, baseURL, api, file, look) {
   const context = await browser.newContext();
   try {
     for (const script of initScripts(api)) await context.addInitScript(script);
     const page = await context.newPage();
     await page.goto(`${baseURL}/tests/fixtures/${file}`);
     await page.waitForFunction(() => window.drawn === true);
-    return await page.evaluate(async () => {
-      const s = await window.__geometry.surface({ fitSamples: 256 });
-      const counted = { draws: window.__grade.draws, vertices: window.__grade.vertices };
-      return s.why ? { ...s, counted } : { ...s, normals: Array.from(s.normals), points: null, counted };
-    });
+    return await look(page);
   } finally {
     await context.close();
   }
 }
+
+/**
+ * A fixture page's surface (onFixture): its pictures' bytes as arrays (the points left out), or
+ * { why }; and the draws and vertices the grader counted (counted).
+ */
+export const surfaceOfFixture = (browser, baseURL, api, file) => onFixture(browser, baseURL, api, file, (page) =>
+  page.evaluate(async () => {
+    const s = await window.__geometry.surface({ fitSamples: 256 });
+    const counted = { draws: window.__grade.draws, vertices: window.__grade.vertices };
+    return s.why ? { ...s, counted } : { ...s, normals: Array.from(s.normals), points: null, counted };
+  }));
 
 /**
  * One test a case ({ api, step, query }): the step's own surface per pixel within 1° of the exact

@@ -6,7 +6,7 @@
 // position in the model's space) is within 1° of the moved sphere's normal where its ray meets it.
 // And the grader's experiment with culling off reaches an instanced draw as it reaches a plain one.
 import { test, expect } from '@playwright/test';
-import { surfaceOfFixture, initScripts, SIZE } from './surface-helpers.js';
+import { surfaceOfFixture, onFixture, SIZE } from './surface-helpers.js';
 import { degreesBetween } from '../../grader/core/computed/surface.js';
 
 // (the three ways the page draws: one instance with plain drawArrays; two, the first out of view,
@@ -52,12 +52,7 @@ for (const [way, query, instances] of WAYS) {
 // where the page culls its front faces: the near side, culled, shows again, in every way of drawing
 for (const [way, query] of WAYS) {
   test(`with culling off (${way}, the front faces culled): the near side shows, as the grader's experiment asks`, async ({ browser, baseURL }) => {
-    const context = await browser.newContext();
-    try {
-      for (const script of initScripts('webgl')) await context.addInitScript(script);
-      const page = await context.newPage();
-      await page.goto(`${baseURL}/tests/fixtures/surface-instanced.html${query}${query ? '&' : '?'}cull=front`);
-      await page.waitForFunction(() => window.drawn === true);
+    await onFixture(browser, baseURL, 'webgl', `surface-instanced.html${query}${query ? '&' : '?'}cull=front`, async (page) => {
       // the blue of the pixel at the moved sphere's centre: 0.5·p_z + 0.5, near side 1, far side 0
       const blue = () => page.evaluate(() => {
         const gl = document.getElementById('c').getContext(window.location.search.includes('webgl2') ? 'webgl2' : 'webgl');
@@ -71,8 +66,6 @@ for (const [way, query] of WAYS) {
       expect(await blue()).toBeGreaterThan(192); // culling off: the near side
       await page.evaluate(() => { window.__grade.noCull = false; window.draw(); });
       expect(await blue()).toBeLessThan(64); // as the page set it again
-    } finally {
-      await context.close();
-    }
+    });
   });
 }
