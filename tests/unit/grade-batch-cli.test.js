@@ -79,6 +79,10 @@ test('--help names the download and the loop\'s options; a missing download is a
   const badDue = run(['--batch', 'x.zip', '--due', 'Friday 23:59']);
   assert.equal(badDue.status, 2);
   assert.match(badDue.stderr, /--due takes the due date and time as "2025-10-10 23:59"/);
+  // an option's value is never the next option (it once graded into a folder named "--out")
+  const optionAsValue = run(['--audit-only', '--out', path.join(os.tmpdir(), 'grade-cli-none')]);
+  assert.equal(optionAsValue.status, 2);
+  assert.match(optionAsValue.stderr, /^grade: --audit-only needs a value/);
   const missing = run(['--batch', path.join(os.tmpdir(), 'no-such-download.zip'), '--out', path.join(os.tmpdir(), 'grade-cli-none')]);
   assert.equal(missing.status, 1);
   assert.match(missing.stderr, /no such file or folder/);

@@ -108,7 +108,8 @@ function parseArgs(argv) {
   const o = { parts: {}, positional: [] };
   for (let k = 0; k < argv.length; k++) {
     const a = argv[k];
-    const next = () => (k + 1 < argv.length ? argv[++k] : fail(`${a} needs a value\n\n${HELP}`, 2));
+    // (an option's value is never the next option: "--audit-only --out x" would grade into a folder named --out)
+    const next = () => (k + 1 < argv.length && !argv[k + 1].startsWith('--') ? argv[++k] : fail(`${a} needs a value\n\n${HELP}`, 2));
     if (a === '--help' || a === '-h') { console.log(`${HELP}\n${browsersHere()}`); process.exit(0); }
     else if (a === '--batch') o.batch = next();
     else if (a === '--rubric') o.rubric = next();
