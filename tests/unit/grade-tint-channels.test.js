@@ -6,7 +6,7 @@ import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import { channelOf, parameterGroups, handlerChannelOf } from '../../grader/core/controls.js';
 import { analyse, samples, diffuseFit, hueByNormal, tintedByNormal, shadeFit } from '../../grader/core/measure.js';
-import { clippedShare } from '../../grader/core/gather/visible.js';
+import { clippedShare } from '../../grader/core/measure/samples.js';
 import { spherePicture } from './sphere-picture.js';
 
 const rubric = JSON.parse(readFileSync(new URL('../../grader/core/rubric.json', import.meta.url), 'utf8'));

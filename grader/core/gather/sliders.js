@@ -9,17 +9,27 @@ import { groupsOf, setGroup, leastValue, freeControlNamed, groupFacts, RANGE_DEF
 
 /**
  * P4: each parameter's sliders (one slider, or the three of a colour or vector: parameterGroups)
- * set far from where they are, on input (else change), its picture kept; then back.
+ * set far from where they are, on input (else change), its picture kept; then back. Each trial is
+ * read against the picture (and what the page sent) just before it, in the same state: putting a
+ * slider back to its value in the page can leave the page in another state than it started in (a
+ * material the page set itself, its slider showing another value), and the next trial must not be
+ * credited with that change. Where it did, the entry says how much (`restored`).
  */
 export async function trySliders(session, controls) {
   const { thresholds, facts } = session;
   session.step('trying the sliders');
-  const base = session.images[facts.shadingImage || facts.judged];
   const groups = groupsOf(session, controls);
   facts.slidersFound = groups.length;
-  const animated = facts.sentAnimated, sentBefore = session.moving && animated ? await readSent(session) : null;
+  const animated = facts.sentAnimated;
+  // the picture (and what the page sent) as the trial starts: the state the last one was put back to
+  const now = async () => {
+    await session.tick(session.thresholds.actionTickMs);
+    return { img: await session.page.snap(), sent: session.moving && animated ? await readSent(session) : null };
+  };
+  let start = await now();
   for (const g of groups.slice(0, thresholds.maxSliderTrials)) {
     const k = g.role;
+    const base = start.img, sentBefore = start.sent;
     const target = (c) => {
       if (c.type === 'color') return leastValue(c);
       const lo = leastValue(c), hi = Number(c.max === '' || c.max === undefined ? RANGE_DEFAULT_MAX : c.max);
@@ -53,19 +63,26 @@ export async function trySliders(session, controls) {
         found: 'shading',
       };
     }
-    facts.sliders.push({
+    const entry = {
       ...groupFacts(g, vs),
       role: r,
       levelSlider: k === 'levelSlider',
       target: vs[0],
       how,
       ...seen(),
+      before: session.keep(`slider-${facts.sliders.length}-before`, base),
       image: session.keep(`slider-${facts.sliders.length}`, after),
-    });
-    // back to where it was (drawn with the next slider's frame, or the last one below)
-    await setGroup(session, g, (c) => session.now(c));
+    };
+    facts.sliders.push(entry);
+    // back to where it was; how far the picture is then from the one before the trial
+    const back = await setGroup(session, g, (c) => session.now(c));
+    start = await now();
+    // (a picture that moves by itself: what the page sends differently, its animation's keys left out)
+    if (sentBefore && start.sent) entry.restored = { to: back[0], sent: sentChanges(sentBefore, start.sent, animated) };
+    else if (!session.moving && base && start.img) {
+      entry.restored = { to: back[0], changed: pictureChange(base, start.img, thresholds) };
+    }
   }
-  await session.tick(session.thresholds.actionTickMs);
 }
 
 /** s at its least (where that is 0 or below): one picture, in the judged view; then s back. */

@@ -5,8 +5,7 @@
 // the rest of the part (the slider trials, the highlight's search), and facts.unclipped says what
 // was changed, so that the reasons can name it. A picture too dim to show its diffuse shading (a
 // dark light) is read again with the page's own Le slider (else kd) at its greatest.
-import { samples } from '../measure.js';
-import { luminance } from '../measure/samples.js';
+import { samples, luminance, clippedShare } from '../measure/samples.js';
 import { groupsOf, setGroup, leastValue, greatestValue } from './params.js';
 import { PERCENT, THOUSANDTHS } from '../units.js';
 
@@ -14,12 +13,6 @@ import { PERCENT, THOUSANDTHS } from '../units.js';
 function numericGroups(session, controls, roles) {
   const groups = groupsOf(session, controls);
   return roles.map((r) => groups.find((g) => g.role === r && g.controls.every((c) => c.type !== 'color'))).filter(Boolean);
-}
-
-/** The share of the sphere's samples (the judged view's outline `an`) white (every channel at clippedLevel). */
-export function clippedShare(img, an, thresholds) {
-  const pts = samples(img, an, thresholds);
-  return pts.length ? pts.filter((s) => Math.min(...s.c) >= thresholds.clippedLevel).length / pts.length : 0;
 }
 
 /**

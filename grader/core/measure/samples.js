@@ -54,3 +54,9 @@ export function sameMask(a, b) {
   for (let i = 0; i < a.length; i++) if (!a[i] !== !b[i]) return false;
   return true;
 }
+
+/** The share of the sphere's samples (the outline `an`) white (every channel at clippedLevel). */
+export function clippedShare(img, an, thresholds) {
+  const pts = samples(img, an, thresholds);
+  return pts.length ? pts.filter((s) => Math.min(...s.c) >= thresholds.clippedLevel).length / pts.length : 0;
+}

@@ -1,7 +1,9 @@
 // The audit unit 'sliders' (Sliders for the material and light parameters): Finds the sliders for
 // kd, ks, s, Le and La by what they change, and sets each far from where it is.
 import { analyse, perspectiveSamples, highlightAbove } from '../../measure.js';
-import { fullFit } from '../../computed/views.js';
+import { clippedShare } from '../../measure/samples.js';
+import { PERCENT } from '../../units.js';
+import { fullFit, litView } from '../../computed/views.js';
 import { sliderEvent } from '../../computed/slider-event.js';
 import { fmt } from '../../format.js';
 import { SLIDE } from '../slides.js';
@@ -27,16 +29,24 @@ export function auditSliders({ facts, images, thresholds, must, sayAs, rubric, p
   let inputOk = 0, changeOnly = 0, dead = 0;
   const found = {};
   const together = {}; // role → how its sliders moved together (ks r, g, b: one parameter)
+  // a slider put back to its value on the page that left the page in another state: the trials
+  // after it were read against the picture just before each (gather/sliders.js), and so is ks's highlight
+  let moved = null;
+  const hidden = []; // the trials that showed nothing from a picture with no shading to read: { role, why }
   for (const s of facts.sliders) {
     const { role, target } = s;
+    const base = moved && s.before && !nearModel ? fullFit(images[s.before], thresholds) : baseFit;
     const how = sliderEvent(s, thresholds);
-    if (how !== 'none' && !s.levelSlider) {
+    // (a state the grader's own putting back left: a trial that showed nothing there may act elsewhere)
+    const why = how === 'none' && moved && s.before ? hiddenIn(images[s.before], thresholds) : null;
+    if (why) hidden.push({ role, why });
+    else if (how !== 'none' && !s.levelSlider) {
       if (role && !found[role]) found[role] = true;
       if (role && s.controls) together[role] = `${s.controls.length} sliders (${s.channels}) moved together`;
       if (how === 'input') inputOk++;
       else changeOnly++;
     } else if (how === 'none') dead++;
-    if (how !== 'none' && baseFit && role === 'ks') {
+    if (how !== 'none' && base && role === 'ks') {
       // the highlight left with ks at its least: above the base picture's near point-light model (its
       // 1/r² spot stays and is no highlight), or above the after picture's own directional fit
       const after = images[s.image];
@@ -54,7 +64,7 @@ export function auditSliders({ facts, images, thresholds, must, sayAs, rubric, p
           : fullFit(after, thresholds);
       if (
         f &&
-        f.highlightPeak >= baseFit.highlightPeak * thresholds.ksLeftShare &&
+        f.highlightPeak >= base.highlightPeak * thresholds.ksLeftShare &&
         f.highlightPeak >= thresholds.highlightPeak
       ) {
         sayKs(
@@ -63,9 +73,17 @@ export function auditSliders({ facts, images, thresholds, must, sayAs, rubric, p
         );
       }
     }
+    if (!moved && restoredElsewhere(s, thresholds)) moved = s;
+  }
+  if (moved) {
+    say('pass', `note: putting ${moved.role ? `the ${moved.role} slider` : 'a slider'} back to ${moved.restored.to} (its value on the page) changed the picture: the page starts with another value than its slider shows (each slider after it was tried from the picture just before it)`);
   }
   const named = Object.keys(found).map((k) => (together[k] ? `${k}: ${together[k]}` : k));
-  const missing = looked.filter((k) => !found[k]);
+  const unseen = hidden.filter((h) => h.role && !found[h.role]).map((h) => h.role);
+  if (hidden.length) {
+    say('pass', `note: ${hidden.length} slider(s)${unseen.length ? ` (${unseen.join(', ')})` : ''} showed no change from a picture that ${hidden[0].why}: whether they act cannot be seen there`);
+  }
+  const missing = looked.filter((k) => !found[k] && !unseen.includes(k));
   const changeOnlyWords = `${changeOnly} slider(s) update the picture only on the change event, not while sliding (the slide asks for the input event)`;
   if (inputOk) say('pass', `${inputOk} slider(s) change the material or light on the input event${named.length ? ` (${named.join(', ')})` : ''}`);
   else if (changeOnly) sayEvent('review', changeOnlyWords);
@@ -75,6 +93,23 @@ export function auditSliders({ facts, images, thresholds, must, sayAs, rubric, p
   if (requiredMissing.length) say('review', `no slider found for ${requiredMissing.join(', ')} (this rubric asks for each)`);
   else if (missing.length && inputOk) say('pass', `note: no slider found for ${missing.join(', ')}`);
   if (must.has('sliders') && dead) say('pass', `note: ${dead} slider(s) change nothing in the picture`);
+}
+
+/** Why `img` hides what a slider does (washed out to white over clippedShare of the sphere or more, or no lit sphere), in words; null where it shows its shading. */
+function hiddenIn(img, thresholds) {
+  if (!img) return null;
+  const { an, lit } = litView(img, thresholds);
+  if (an.blank) return 'shows no sphere';
+  const share = clippedShare(img, an, thresholds);
+  if (share >= thresholds.clippedShare) return `clips to white over ${Math.round(PERCENT * share)}% of the sphere`;
+  return lit ? null : 'shows no lit sphere';
+}
+
+/** Did putting slider trial `s` back leave the page in another state than before it (its picture, or where the picture moves by itself, what the page sent)? */
+export function restoredElsewhere(s, thresholds) {
+  const r = s.restored;
+  if (!r) return false;
+  return r.sent ? r.sent.length > 0 : r.changed > thresholds.sliderChange;
 }
 
 /** The unit (audits/list.js runs it in its order). */
