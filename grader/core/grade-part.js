@@ -8,13 +8,19 @@ export { addTime, timed };
 
 /**
  * Grades one opened part: { artifact, fail, checks, actions, controls, numbers, images, api, canvas,
- * timing, busy, tooSlow }. `images` are the pictures a report shows (first, judged, coarse,
+ * timing, steps, busy, tooSlow }. `images` are the pictures a report shows (first, judged, coarse,
  * highlightPlace, leastS); `artifact` ({ facts, images }) is everything gathered.
  */
-export async function gradePart(page, { part, rubric, progress, deadline, timing = {} }) {
-  const artifact = await gatherPart(page, { part, rubric, progress, deadline, timing });
-  return { ...judged(artifact, rubric), timing, busy: timing.tick ? timing.tick.ms : 0 };
+export async function gradePart(page, { part, rubric, progress, deadline, timing = {}, steps = {} }) {
+  const artifact = await gatherPart(page, { part, rubric, progress, deadline, timing, steps });
+  const t0 = Date.now();
+  const j = judged(artifact, rubric);
+  steps[JUDGING] = Date.now() - t0;
+  return { ...j, timing, steps, busy: timing.tick ? timing.tick.ms : 0 };
 }
+
+/** The step of a part's time spent judging what was gathered (`steps`, beside the gathering's). */
+export const JUDGING = 'judging';
 
 /** An artifact's audit in the shape a report reads (`audits`: the units run, audits/list.js's by default). */
 export function judged(artifact, rubric, { audits } = {}) {

@@ -20,7 +20,7 @@ const grade = (...args) => spawnSync(process.execPath, ['grader/node/cli/grade.j
 /** report.json without what differs run to run: when it was written and how long each part took. */
 function reportOf(out) {
   const drop = (x) => (Array.isArray(x) ? x.map(drop) : x && typeof x === 'object'
-    ? Object.fromEntries(Object.entries(x).filter(([k]) => !['generated', 'seconds', 'timing'].includes(k)).map(([k, v]) => [k, drop(v)])) : x);
+    ? Object.fromEntries(Object.entries(x).filter(([k]) => !['generated', 'seconds', 'timing', 'steps'].includes(k)).map(([k, v]) => [k, drop(v)])) : x);
   return drop(JSON.parse(readFileSync(path.join(out, 'report.json'), 'utf8')));
 }
 

@@ -30,3 +30,15 @@ test('seconds a part: median, p90 and slowest by nearest rank; missing parts not
   assert.equal(lines[1], 'past the time bound: b WP04P2');
   assert.equal(lines[2], 'labels: 2 of 4 exact, correct parts passed 1 of 2, partial parts passed 1, broken parts passed 0');
 });
+
+test('where the time went: each step\'s seconds added up over the parts, most first, the most named in a line', () => {
+  const part = (seconds, steps) => ({ name: 'a', part: 'WP04P1', seconds, verdict: 'pass', status: 'graded', steps });
+  const st = gradingStats({ submissions: [{ parts: [
+    part(3, { 'waiting for the first frame': 1000, judging: 500, 'sampling the orbit': 1500 }),
+    part(2, { 'sampling the orbit': 1000, judging: 1000 }),
+    { name: 'a', part: 'WP04P3', verdict: 'fail', status: 'missing' },
+  ] }] });
+  assert.deepEqual(st.steps, [{ step: 'sampling the orbit', seconds: 2.5 }, { step: 'judging', seconds: 1.5 }, { step: 'waiting for the first frame', seconds: 1 }]);
+  assert.equal(statsLines(st, 10)[2], 'where the parts\' 5.0 s went: sampling the orbit 2.5 s, judging 1.5 s, waiting for the first frame 1.0 s');
+});
+

@@ -2,6 +2,10 @@
 // grader's own record): seconds a part (median, p90, slowest), the parts past the time bound, and
 // the labels' agreement. Pure: the benchmark command (tools/bench-grader.js) reads and prints.
 import { NOT_GRADED } from '../../grader/core/verdict.js';
+import { MS_PER_SECOND } from '../../grader/core/units.js';
+
+/** How many of the steps that took the most time the lines name. */
+const STEPS_SAID = 8;
 
 /** The q-quantile (0…1) of `xs` by the nearest rank; null for none. */
 export function quantile(xs, q) {
@@ -11,8 +15,10 @@ export function quantile(xs, q) {
 }
 
 /**
- * { parts, median, p90, max, slowest: [{ name, part, seconds }], notGraded, agreement } from a
- * report (report.json). A part with no `seconds` (missing, linked) is not counted.
+ * { parts, median, p90, max, slowest: [{ name, part, seconds }], notGraded, agreement, steps } from
+ * a report (report.json). A part with no `seconds` (missing, linked) is not counted. `steps`: the
+ * seconds of each step of the parts' gathering and judging, added up over the parts (their
+ * `steps`), most first: [{ step, seconds }].
  */
 export function gradingStats(report) {
   const parts = report.submissions.flatMap((s) => s.parts).filter((p) => Number.isFinite(p.seconds));
@@ -27,7 +33,10 @@ export function gradingStats(report) {
     partialPassed: rows.filter((r) => r.label === 'partial' && r.verdict === 'pass').length,
     brokenPassed: rows.filter((r) => r.label === 'broken' && r.verdict === 'pass').length,
   } : null;
-  return { parts: parts.length, median: quantile(seconds, 0.5), p90: quantile(seconds, 0.9), max: quantile(seconds, 1), slowest, notGraded, agreement };
+  const bySteps = new Map();
+  for (const p of parts) for (const [k, ms] of Object.entries(p.steps || {})) bySteps.set(k, (bySteps.get(k) || 0) + ms / MS_PER_SECOND);
+  const steps = [...bySteps].map(([step, s]) => ({ step, seconds: s })).sort((a, b) => b.seconds - a.seconds);
+  return { parts: parts.length, median: quantile(seconds, 0.5), p90: quantile(seconds, 0.9), max: quantile(seconds, 1), slowest, notGraded, agreement, steps };
 }
 
 /** The stats as the lines a person reads. */
@@ -35,6 +44,10 @@ export function statsLines(st, wallSeconds) {
   const f = (x) => (x === null ? '–' : x.toFixed(1));
   const lines = [`${st.parts} parts in ${f(wallSeconds)} s: a part median ${f(st.median)} s, p90 ${f(st.p90)} s, slowest ${f(st.max)} s (${st.slowest.map((s) => `${s.name} ${s.part} ${f(s.seconds)} s`).join(', ')})`];
   lines.push(st.notGraded.length ? `past the time bound: ${st.notGraded.join(', ')}` : 'every part judged within the time bound');
+  if (st.steps && st.steps.length) {
+    const all = st.steps.reduce((t, s) => t + s.seconds, 0);
+    lines.push(`where the parts' ${f(all)} s went: ${st.steps.slice(0, STEPS_SAID).map((s) => `${s.step} ${f(s.seconds)} s`).join(', ')}`);
+  }
   const a = st.agreement;
   if (a) lines.push(`labels: ${a.exact} of ${a.of} exact, correct parts passed ${a.correctPassed} of ${a.correct}, partial parts passed ${a.partialPassed}, broken parts passed ${a.brokenPassed}`);
   return lines;

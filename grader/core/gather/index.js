@@ -8,7 +8,7 @@
 // It drives the page only through the page interface (grader/node/run/playwright-page.js for the
 // grader, check/frame-page.js for the check page): state(), snap(), controls(), click(c),
 // setValue(c, v, events), press(key), tick(ms, frames) → state(), setNoCull(on), sources(), errors().
-import { openSession, TooSlow, TooHeavy } from './session.js';
+import { openSession, TooSlow, TooHeavy, FIRST_FRAME } from './session.js';
 import { findOrbit, sampleOrbit, keepIfLit, startOrbitToSee } from './orbit.js';
 import { findLevel, climbLevelLadder } from './level.js';
 import { probeFaces, probeDepthCulling } from './faces.js';
@@ -20,18 +20,23 @@ import { lookAllRound } from './all-round.js';
 import { sphereView, shadingOf, viewFits, highlightEvidence } from '../computed/evidence.js';
 import { shownDifference } from '../measure/shown.js';
 
-/** What the gathering is doing until the page's first frame is seen (past it, the page draws). */
-export const FIRST_FRAME = 'waiting for the first frame';
+export { FIRST_FRAME };
 
-/** Gathers one opened part: { facts, images }. `timing` ({ method: { ms, calls } }) hears where the time went. */
-export async function gatherPart(page, { part, rubric, progress = () => {}, deadline = Infinity, timing = {} }) {
-  const session = openSession(timed(page, timing), { part, rubric, progress, deadline });
+/**
+ * Gathers one opened part: { facts, images }. `timing` ({ method: { ms, calls } }) hears where the
+ * time went by page call, `steps` ({ step: ms }) by step of the gathering.
+ */
+export async function gatherPart(page, options) {
+  const { part, rubric, progress = () => {}, deadline = Infinity, timing = {}, steps = {} } = options;
+  const session = openSession(timed(page, timing), { part, rubric, progress, deadline, steps });
   try {
     await gather(session);
   } catch (err) {
     if (!(err instanceof TooSlow)) throw err;
     session.facts.tooSlow = err.doing;
     if (err instanceof TooHeavy) session.facts.tooHeavy = err.work;
+  } finally {
+    session.mark(null);
   }
   session.facts.errors = [...page.errors()];
   // the grader's hooks the page replaced (a hand-in is untrusted code): the audit names them
@@ -46,6 +51,7 @@ async function gather(session) {
   if (!first || first.an.blank) return;
   // the page's animation loops and draws a frame before any control is touched, and after them all
   if (session.frameDraws) session.facts.frameDraws = { first: session.frameDraws };
+  session.mark('reading the controls');
   const controls = await session.page.controls();
   session.facts.controls = controls;
   session.cur = first;
@@ -157,6 +163,7 @@ async function orbitAndLevel(session, controls) {
   facts.ladder = ladder.map((s, k) => ({ roundness: s.an.roundness, blank: !!s.an.blank,
     ...(k === j || must.has('per-fragment') ? { image: session.keep(`level-${k}`, s.img) } : {}) }));
   facts.judgedLevel = j;
+  session.mark('reading the geometry and the surface');
   facts.geometry = await readGeometry(session);
   // the judged view's surface per pixel, where the lighting is judged: each pixel's position and normal as the page drew them
   if (must.has('diffuse') || must.has('highlight')) facts.surface = await readSurface(session);
@@ -169,11 +176,13 @@ async function whatTheStepAsks(session, controls, img) {
   const { page, thresholds, facts, must, orbit } = session;
   const stopped = facts.stopped;
   const { an } = sphereView(img, thresholds);
+  session.mark('trying the faces and the depth test');
   if (must.has('front-faces')) await probeFaces(session, controls, { img, an });
   if (must.has('depth-culling')) await probeDepthCulling(session, controls);
   // a picture that clips to white over much of the sphere: read with the page's own kd, Le, La
   // lowered; one too dim to show its shading, with the page's own Le (else kd) raised
   const shaded = must.has('diffuse') || must.has('highlight');
+  session.mark('reading the shading');
   const shadeImg =
     (shaded && ((await unclip(session, controls, img, an)) || (await brighten(session, controls, img, an)))) || img;
   const shading = shaded ? shadingOf(shadeImg, an, thresholds) : null;
@@ -181,6 +190,7 @@ async function whatTheStepAsks(session, controls, img) {
   if (must.has('highlight') && shading.fit) {
     const views = viewFits(facts.views.map((v) => ({ img: session.images[v.image] })), thresholds);
     if (!highlightEvidence(shading, views, null, session.images, thresholds).seen && !shading.nearModel) {
+      session.mark('raising the highlight');
       await raiseHighlight(session, controls);
     }
     placeLater =
@@ -190,9 +200,12 @@ async function whatTheStepAsks(session, controls, img) {
       stopped;
   }
   if (must.has('sliders')) await trySliders(session, controls);
+  session.mark('s at its least');
   if (must.has('highlight') && shading.fit && stopped) await leastShininess(session, controls);
+  session.mark('the highlight\'s place');
   facts.sources = await page.sources();
   if (placeLater) await placeFarther(session, controls);
+  session.mark('the picture as the browser shows it');
   await compareShown(session, 'last');
   // last: it turns the orbit on and off again, and nothing after it reads the picture
   await lookAllRound(session);

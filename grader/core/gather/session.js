@@ -30,16 +30,37 @@ export class TooHeavy extends TooSlow {
   }
 }
 
+/** What the gathering is doing until the page's first frame is seen (past it, the page draws): the step it starts in. */
+export const FIRST_FRAME = 'waiting for the first frame';
+
 export const effectWords = {
   finer: 'the silhouette got rounder', coarser: 'the silhouette got coarser', starts: 'the picture started moving', stops: 'the picture stopped moving',
   shading: 'the shading changed, not the silhouette', blank: 'the picture went blank', none: 'nothing visible changed', unclickable: 'could not be used',
 };
 
 /**
- * A gathering session over `page` (the page interface) for `part`. `progress(text)` hears each
- * step; `deadline` (ms since the epoch) is the outer bound.
+ * A clock of the gathering's steps: mark(what) counts the time since the last mark (from the
+ * first step, FIRST_FRAME) to that one in `steps` ({ step: ms }), and counts from now to `what`
+ * (null: to none).
  */
-export function openSession(page, { part, rubric, progress = () => {}, deadline = Infinity }) {
+function stepClock(steps) {
+  let marked = FIRST_FRAME, since = Date.now();
+  return (what) => {
+    const now = Date.now();
+    if (marked !== null) steps[marked] = (steps[marked] || 0) + (now - since);
+    marked = what;
+    since = now;
+  };
+}
+
+/**
+ * A gathering session over `page` (the page interface) for `part`. `progress(text)` hears each
+ * step; `deadline` (ms since the epoch) is the outer bound; `steps` ({ step: ms }) hears how long
+ * each step took, a step named by step() or, where it is said to nobody, by mark() (read by no
+ * gatherer: where the time goes, for the benchmark).
+ */
+export function openSession(page, { part, rubric, progress = () => {}, deadline = Infinity, steps = {} }) {
+  const mark = stepClock(steps);
   // every threshold and control pattern the gathering reads, with its value (reads.js)
   const gatheredWith = { [`parts.${part}.must`]: (rubric.parts[part] || {}).must };
   const thresholds = recording(rubric.thresholds, gatheredWith);
@@ -66,12 +87,11 @@ export function openSession(page, { part, rubric, progress = () => {}, deadline 
     // count of frames, where the driver has it): { loops, draws } or null
     frameDraws: null,
     animationFrames: 0,
-    doing: 'waiting for the first frame',
+    doing: FIRST_FRAME,
 
-    step(what) {
-      session.doing = what;
-      progress(what);
-    },
+    /** A step of the gathering begun: timed from here (mark), said (progress), and named if it runs out of time. */
+    step(what) { mark(what); session.doing = what; progress(what); },
+    mark,
     outOfTime() {
       if (Date.now() > deadline) throw new TooSlow(session.doing);
     },

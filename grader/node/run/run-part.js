@@ -16,6 +16,9 @@ import { deadlineOf } from '../../core/deadline.js';
 import { FIRST_FRAME } from '../../core/gather/index.js';
 import { gradePart, addTime } from '../../core/grade-part.js';
 
+// the part's phases around its gathering and judging, as steps (result.steps)
+const PHASE_STEPS = { open: 'opening the page', write: 'writing the artifact', close: 'closing the page' };
+
 // the message of an error thrown because Playwright's time bound closed the part's page (the result stays 'timeout')
 const CLOSED = /Test ended|Target page, context or browser has been closed/;
 
@@ -54,9 +57,13 @@ export async function runPart({ item, plan, openers, browserVersion = null, more
   let graded = { fail: null, checks: [], actions: [], images: {}, shown: {}, busy: 0 };
   const files = {};
   let clean = false;
-  // where the part's time goes: opening it, each page-interface call, closing it, writing the pictures
-  const timing = result.timing = {};
-  const phase = (what, t0) => addTime(timing, what, Date.now() - t0);
+  // where the part's time goes: opening it, each page-interface call, closing it, writing the
+  // pictures; and by step: each step of the gathering, and the judging
+  const timing = result.timing = {}, steps = result.steps = {};
+  const phase = (what, t0) => {
+    addTime(timing, what, Date.now() - t0);
+    steps[PHASE_STEPS[what]] = (steps[PHASE_STEPS[what]] || 0) + Date.now() - t0;
+  };
   try {
     const t0 = Date.now();
     const { root, page: rel } = item;
@@ -66,7 +73,7 @@ export async function runPart({ item, plan, openers, browserVersion = null, more
     else {
       // what has been done so far stays in the result if the time bound stops the part
       const deadline = deadlineOf(started, rubric);
-      graded = await gradePart(opened.driver, { part: item.part, rubric, deadline, timing, progress: (what) => {
+      graded = await gradePart(opened.driver, { part: item.part, rubric, deadline, timing, steps, progress: (what) => {
         // what stays if the time bound stops the part now: past its first frame the page draws, and
         // a page that draws is too slow here, not broken (the rubric's tooSlowVerdict)
         if (what === FIRST_FRAME) withFindings(result, [stoppedAtFirstFrame(rubric, what)]);
