@@ -4,7 +4,7 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import { mat4 } from 'gl-matrix';
-import { cameraOf, cameraTurn } from '../../grader/core/computed/camera.js';
+import { cameraOf, cameraTurn, cameraPath } from '../../grader/core/computed/camera.js';
 import { auditOrbit } from '../../grader/core/audits/units/orbit-light.js';
 import { checkList } from '../../grader/core/verdict.js';
 
@@ -27,6 +27,19 @@ test('the view matrix: read from the animated uniforms, its turn between views',
   // P·V sent as one matrix is no rotation: not read
   const pv = (a) => mat4.multiply(mat4.create(), mat4.perspective(mat4.create(), 45 * DEG, 1, 0.1, 10), view(a));
   assert.equal(cameraTurn([0, 30].map((a) => cameraOf(sent(pv(a)), animated)), thresholds.cameraRotationTolerance), null);
+});
+
+test('the camera\'s path: the turns from view to view added up, never more than it went (a full turn is at least once round)', () => {
+  const animated = ['uniform V'], tol = thresholds.cameraRotationTolerance;
+  const path = (angles) => cameraPath(angles.map((a) => cameraOf(sent(view(a)), animated)), tol);
+  // five views 137° apart (fagnig's orbit sampled: 0.05 rad a frame, 48 frames): 548° round
+  assert.ok(Math.abs(path([0, 137, 274, 411, 548]) - 548) < 1e-3);
+  // the largest turn from the first is no path: it stays under a half turn
+  assert.ok(cameraTurn([0, 137, 274, 411, 548].map((a) => cameraOf(sent(view(a)), animated)), tol) <= 180);
+  // a step past a half turn reads as the shorter way back: the path is shorter, never longer, than the camera's
+  assert.ok(Math.abs(path([0, 270]) - 90) < 1e-3);
+  assert.equal(path([0]), null, 'one view: no path');
+  assert.equal(cameraPath([cameraOf(sent(view(0)), animated), null], tol), null, 'a view with no camera: unknown');
 });
 
 test('the orbit\'s audit: the lit side\'s turn against the camera\'s', () => {

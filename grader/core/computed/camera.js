@@ -60,6 +60,16 @@ export function cameraRotations(cameras, tolerance) {
   return null;
 }
 
+/**
+ * How far the camera travelled over `cameras`, in order: the turns from each to the next added up,
+ * in degrees; null where unknown. A turn is the least rotation between two views, so the path is
+ * never longer than the camera's own: a path of a full turn is at least one time round.
+ */
+export function cameraPath(cameras, tolerance) {
+  const rs = cameraRotations(cameras, tolerance);
+  return rs && rs.slice(1).reduce((sum, r, k) => sum + turnBetween(rs[k], r), 0);
+}
+
 /** How far the camera turned over `cameras`: the largest turn from the first, in degrees; null where unknown. */
 export function cameraTurn(cameras, tolerance) {
   return rotationsTurn(cameraRotations(cameras.filter(Boolean), tolerance));

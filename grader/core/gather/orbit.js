@@ -6,9 +6,9 @@ import { analyse } from '../measure.js';
 import { describe, named, trialOrder, isClickable, sentChanges } from '../controls.js';
 import { litView } from '../computed/views.js';
 import { readGeometry, readSent } from './geometry.js';
-import { cameraOf, cameraTurn } from '../computed/camera.js';
+import { cameraOf, cameraTurn, cameraPath } from '../computed/camera.js';
 import { fmt } from '../format.js';
-import { MS_PER_SECOND } from '../units.js';
+import { MS_PER_SECOND, FULL_TURN } from '../units.js';
 
 /** Is `img` a lit view? Lit views are kept (`orbiting`: seen while the camera orbits). */
 export function keepIfLit(session, img, { orbiting = true, keep = true } = {}) {
@@ -59,8 +59,10 @@ export const tickOrbit = async (session, k) => {
 
 /**
  * Looks along the orbit until a lit view shows (a few positions at least), at most orbitSamples
- * positions. A silhouette too coarse to read shading from (a tetrahedron at level 0) is looked at
- * once the sphere is round, after the level ladder (`afterLadder`).
+ * positions, and no farther than once round where no view is lit: where the page sends its view
+ * matrix and the camera has gone all the way round, every view the orbit shows has been shown. A
+ * silhouette too coarse to read shading from (a tetrahedron at level 0) is looked at once the
+ * sphere is round, after the level ladder (`afterLadder`).
  */
 export async function sampleOrbit(session, afterLadder = false) {
   const { thresholds, orbit } = session;
@@ -71,20 +73,26 @@ export async function sampleOrbit(session, afterLadder = false) {
   session.step('sampling the orbit');
   let k = 0, img = session.cur.img;
   await readCamera(session);
+  const cameras = [session.camera];
+  const roundUnlit = () => !session.facts.views.some((v) => v.orbiting) &&
+    cameraPath(cameras, thresholds.cameraRotationTolerance) >= FULL_TURN;
   // a lit view and two samples at least; where the page sends its view matrix, until the camera has
   // turned cameraTurnDegrees over the lit views (a slow orbit: a light that moves with the camera
   // and one that stays in the world look alike over a small turn)
   for (
     ;
     k < thresholds.orbitSamples &&
-    (!keepIfLit(session, img) || k < thresholds.orbitLeastSamples || turnedTooLittle(session));
+    (!keepIfLit(session, img) || k < thresholds.orbitLeastSamples || turnedTooLittle(session)) &&
+    !roundUnlit();
     k++
   ) {
     await tickOrbit(session, k);
     img = await session.page.snap();
+    cameras.push(session.camera);
   }
   session.cur = { img, an: analyse(img, thresholds) };
-  session.act(`sampled the orbit at ${k} positions ${fmt(thresholds.orbitSampleSeconds, 1)} s apart (${session.facts.views.filter((v) => v.orbiting).length} lit)`);
+  const round = roundUnlit() ? '; the camera went all the way round' : '';
+  session.act(`sampled the orbit at ${k} positions ${fmt(thresholds.orbitSampleSeconds, 1)} s apart (${session.facts.views.filter((v) => v.orbiting).length} lit${round})`);
 }
 
 /** Looks along the orbit for a view `good(img, an)` accepts: { img, k } or null, after at most orbitSamples positions. */
