@@ -1,7 +1,7 @@
 // The grader benchmark's numbers (tools/bench-grader/stats.js) from a built report.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { quantile, gradingStats, statsLines } from '../../tools/bench-grader/stats.js';
+import { quantile, gradingStats, statsLines, medianRun } from '../../tools/bench-grader/stats.js';
 import { NOT_GRADED } from '../../grader/core/verdict.js';
 
 test('seconds a part: median, p90 and slowest by nearest rank; missing parts not counted; parts past the bound named', () => {
@@ -42,3 +42,9 @@ test('where the time went: each step\'s seconds added up over the parts, most fi
   assert.equal(statsLines(st, 10)[2], 'where the parts\' 5.0 s went: sampling the orbit 2.5 s, judging 1.5 s, waiting for the first frame 1.0 s');
 });
 
+test('runs of the same grading: the median run\'s numbers (the lower middle of an even count), every run\'s wall time in the order run', () => {
+  const run = (wall) => ({ wall, st: { tag: wall } });
+  assert.deepEqual(medianRun([run(70), run(66), run(81)]), { wall: 70, st: { tag: 70 }, walls: [70, 66, 81] });
+  assert.deepEqual(medianRun([run(70), run(66)]), { wall: 66, st: { tag: 66 }, walls: [70, 66] });
+  assert.deepEqual(medianRun([run(5)]), { wall: 5, st: { tag: 5 }, walls: [5] });
+});

@@ -39,6 +39,16 @@ export function gradingStats(report) {
   return { parts: parts.length, median: quantile(seconds, 0.5), p90: quantile(seconds, 0.9), max: quantile(seconds, 1), slowest, notGraded, agreement, steps };
 }
 
+/**
+ * Of runs of the same grading ([{ wall, st }], in the order run), the one of the median wall time
+ * (the lower middle of an even count), with every run's wall time: { wall, st, walls }.
+ */
+export function medianRun(runs) {
+  const sorted = [...runs].sort((a, b) => a.wall - b.wall);
+  const mid = sorted[Math.ceil(sorted.length / 2) - 1];
+  return { wall: mid.wall, st: mid.st, walls: runs.map((r) => r.wall) };
+}
+
 /** The stats as the lines a person reads. */
 export function statsLines(st, wallSeconds) {
   const f = (x) => (x === null ? '–' : x.toFixed(1));
