@@ -70,7 +70,7 @@ export async function trySliders(session, controls) {
       target: vs[0],
       how,
       ...seen(),
-      before: session.keep(`slider-${facts.sliders.length}-before`, base),
+      ...(base ? { before: session.keep(`slider-${facts.sliders.length}-before`, base) } : {}),
       image: session.keep(`slider-${facts.sliders.length}`, after),
     };
     facts.sliders.push(entry);

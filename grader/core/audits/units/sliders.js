@@ -1,5 +1,6 @@
 // The audit unit 'sliders' (Sliders for the material and light parameters): Finds the sliders for
-// kd, ks, s, Le and La by what they change, and sets each far from where it is.
+// kd, ks, s, Le and La by what they change, and sets each far from where it is, against the picture
+// just before it.
 import { analyse, perspectiveSamples, highlightAbove } from '../../measure.js';
 import { clippedShare } from '../../measure/samples.js';
 import { PERCENT } from '../../units.js';
@@ -11,7 +12,7 @@ import { unit } from '../unit.js';
 
 /** The audits this unit says: id → title, the slide's sentence it checks, the artifacts it reads. */
 export const META = {
-  sliders: { title: 'Sliders for the material and light parameters', slide: SLIDE.sliders, failureTitle: 'Sliders for the material and light parameters are missing or do nothing', description: 'Finds the sliders for kd, ks, s, Le and La by what they change, and sets each far from where it is.', reads: ['facts.sliders', 'facts.slidersFound'] },
+  sliders: { title: 'Sliders for the material and light parameters', slide: SLIDE.sliders, failureTitle: 'Sliders for the material and light parameters are missing or do nothing', description: 'Finds the sliders for kd, ks, s, Le and La by what they change, and sets each far from where it is, against the picture just before it.', reads: ['facts.sliders', 'facts.slidersFound'] },
   'input-event': { title: 'Sliders that act on the input event', slide: SLIDE.inputEvent, failureTitle: 'A slider acts on the change event, not on input', description: 'Sets each slider on the input event first, and on the change event only where input showed nothing.', reads: ['facts.sliders'] },
   'ks-used': { title: 'ks used in the specular term', slide: SLIDE.sliders, failureTitle: 'ks is not used in the specular term', description: 'Sets the ks sliders to their least and checks that the highlight changes.', reads: ['facts.sliders', 'images.judged'] },
 };
