@@ -115,6 +115,7 @@ export async function findOrbit(session, controls) {
   const orbit = session.orbit = { movedAtFirst: false, toggles: false, start: null, stop: null, later: false };
   const clickables = controls.filter(isClickable);
   const shaded = session.must.has('diffuse');
+  session.mark('watching whether the picture moves by itself');
   const sent = await readSent(session);
   await session.watch();
   orbit.movedAtFirst = session.moving;
