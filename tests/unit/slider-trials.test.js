@@ -9,7 +9,8 @@ import { readFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
 import { readArtifact } from '../../grader/node/run/artifacts.js';
 import { judged } from '../../grader/core/grade-part.js';
-import { restoredElsewhere } from '../../grader/core/audits/units/sliders.js';
+import { restoredElsewhere, auditSliders } from '../../grader/core/audits/units/sliders.js';
+import { checkList } from '../../grader/core/verdict.js';
 
 const rubric = JSON.parse(readFileSync(new URL('../../grader/core/rubric.json', import.meta.url), 'utf8'));
 const thresholds = rubric.thresholds;
@@ -31,3 +32,14 @@ test('the audit names the slider put back, and says that ks and s cannot be seen
   assert.ok(sliders.some((t) => /\(ks, s\) showed no change from a picture that clips to white over \d+% of the sphere/.test(t)), sliders.join('\n'));
   assert.ok(!sliders.some((t) => /no slider found for ks|change nothing/.test(t)), sliders.join('\n'));
 });
+
+test('several sliders put back elsewhere are named together, each with the value it was put back to', () => {
+  const { checks, sayAs } = checkList(rubric);
+  const trial = (role, to, moved) => ({ control: 0, role, levelSlider: false, target: 0, how: 'input', changed: { input: 0.5, change: null }, image: 'x',
+    restored: { to, changed: moved ? 0.5 : 0 } });
+  const facts = { sliders: [trial('kd', '0.5', true), trial('ks', '0.6', false), trial('La', '0.2', true)], slidersFound: 3 };
+  auditSliders({ facts, images: {}, thresholds, must: new Set(['sliders']), sayAs, rubric, part: 'WP04P4' }, null, null);
+  const notes = checks.filter((c) => c.id === 'sliders').map((c) => c.reason);
+  assert.ok(notes.includes('note: putting 2 sliders back to their values on the page (kd to 0.5, La to 0.2) changed the picture: the page starts with other values than its sliders show (each slider was tried from the picture just before it)'), notes.join('\n'));
+});
+

@@ -33,6 +33,7 @@ export function auditSliders({ facts, images, thresholds, must, sayAs, rubric, p
   // a slider put back to its value on the page that left the page in another state: the trials
   // after it were read against the picture just before each (gather/sliders.js), and so is ks's highlight
   let moved = null;
+  const putBack = []; // every trial whose putting back left the page elsewhere
   const hidden = []; // the trials that showed nothing from a picture with no shading to read: { role, why }
   for (const s of facts.sliders) {
     const { role, target } = s;
@@ -74,10 +75,16 @@ export function auditSliders({ facts, images, thresholds, must, sayAs, rubric, p
         );
       }
     }
-    if (!moved && restoredElsewhere(s, thresholds)) moved = s;
+    if (restoredElsewhere(s, thresholds)) {
+      if (!moved) moved = s;
+      putBack.push(s);
+    }
   }
-  if (moved) {
+  if (putBack.length === 1) {
     say('pass', `note: putting ${moved.role ? `the ${moved.role} slider` : 'a slider'} back to ${moved.restored.to} (its value on the page) changed the picture: the page starts with another value than its slider shows (each slider after it was tried from the picture just before it)`);
+  } else if (putBack.length > 1) {
+    const which = putBack.map((x) => `${x.role || 'a slider'} to ${x.restored.to}`).join(', ');
+    say('pass', `note: putting ${putBack.length} sliders back to their values on the page (${which}) changed the picture: the page starts with other values than its sliders show (each slider was tried from the picture just before it)`);
   }
   const named = Object.keys(found).map((k) => (together[k] ? `${k}: ${together[k]}` : k));
   const unseen = hidden.filter((h) => h.role && !found[h.role]).map((h) => h.role);
