@@ -1,10 +1,10 @@
 // Gathering and judging one part in a row (Lighthouse's -GA): the artifact gathered from the page
 // (gather/), then audited (audit.js). For the command's Playwright run and for the check page.
-import { gatherPart, addTime, timed } from './gather/index.js';
+import { gatherPart, addTime, addStep, timed } from './gather/index.js';
 import { auditPart } from './audit.js';
 import { rolesInWords } from './computed/roles.js';
 
-export { addTime, timed };
+export { addTime, addStep, timed };
 
 /**
  * Grades one opened part: { artifact, fail, checks, actions, controls, numbers, images, api, canvas,
@@ -15,7 +15,7 @@ export async function gradePart(page, { part, rubric, progress, deadline, timing
   const artifact = await gatherPart(page, { part, rubric, progress, deadline, timing, steps });
   const t0 = Date.now();
   const j = judged(artifact, rubric);
-  steps[JUDGING] = Date.now() - t0;
+  addStep(steps, JUDGING, Date.now() - t0);
   return { ...j, timing, steps, busy: timing.tick ? timing.tick.ms : 0 };
 }
 

@@ -8,7 +8,7 @@
 // It drives the page only through the page interface (grader/node/run/playwright-page.js for the
 // grader, check/frame-page.js for the check page): state(), snap(), controls(), click(c),
 // setValue(c, v, events), press(key), tick(ms, frames) → state(), setNoCull(on), sources(), errors().
-import { openSession, TooSlow, TooHeavy, FIRST_FRAME } from './session.js';
+import { openSession, TooSlow, TooHeavy, FIRST_FRAME, addStep } from './session.js';
 import { findOrbit, sampleOrbit, keepIfLit, startOrbitToSee } from './orbit.js';
 import { findLevel, climbLevelLadder } from './level.js';
 import { probeFaces, probeDepthCulling } from './faces.js';
@@ -20,7 +20,7 @@ import { lookAllRound } from './all-round.js';
 import { sphereView, shadingOf, viewFits, highlightEvidence } from '../computed/evidence.js';
 import { shownDifference } from '../measure/shown.js';
 
-export { FIRST_FRAME };
+export { FIRST_FRAME, addStep };
 
 /**
  * Gathers one opened part: { facts, images }. `timing` ({ method: { ms, calls } }) hears where the

@@ -38,6 +38,11 @@ export const effectWords = {
   shading: 'the shading changed, not the silhouette', blank: 'the picture went blank', none: 'nothing visible changed', unclickable: 'could not be used',
 };
 
+/** Adds `ms` to the step `what` of `steps` ({ step: ms }). */
+export function addStep(steps, what, ms) {
+  steps[what] = (steps[what] || 0) + ms;
+}
+
 /**
  * A clock of the gathering's steps: mark(what) counts the time since the last mark (from the
  * first step, FIRST_FRAME) to that one in `steps` ({ step: ms }), and counts from now to `what`
@@ -47,7 +52,7 @@ function stepClock(steps) {
   let marked = FIRST_FRAME, since = Date.now();
   return (what) => {
     const now = Date.now();
-    if (marked !== null) steps[marked] = (steps[marked] || 0) + (now - since);
+    if (marked !== null) addStep(steps, marked, now - since);
     marked = what;
     since = now;
   };

@@ -22,11 +22,11 @@ export async function trySliders(session, controls) {
   facts.slidersFound = groups.length;
   const animated = facts.sentAnimated;
   // the picture (and what the page sent) as the trial starts: the state the last one was put back to
-  const now = async () => {
+  const readState = async () => {
     await session.tick(session.thresholds.actionTickMs);
     return { img: await session.page.snap(), sent: session.moving && animated ? await readSent(session) : null };
   };
-  let start = await now();
+  let start = await readState();
   for (const g of groups.slice(0, thresholds.maxSliderTrials)) {
     const k = g.role;
     const base = start.img, sentBefore = start.sent;
@@ -76,7 +76,7 @@ export async function trySliders(session, controls) {
     facts.sliders.push(entry);
     // back to where it was; how far the picture is then from the one before the trial
     const back = await setGroup(session, g, (c) => session.now(c));
-    start = await now();
+    start = await readState();
     // (a picture that moves by itself: what the page sends differently, its animation's keys left out)
     if (sentBefore && start.sent) entry.restored = { to: back[0], sent: sentChanges(sentBefore, start.sent, animated) };
     else if (!session.moving && base && start.img) {

@@ -14,7 +14,7 @@ import { missingPage, timedOut, stoppedAtFirstFrame, tooSlow, linkedPage, notOpe
 import { tooSlowWords } from '../../core/verdict.js';
 import { deadlineOf } from '../../core/deadline.js';
 import { FIRST_FRAME } from '../../core/gather/index.js';
-import { gradePart, addTime } from '../../core/grade-part.js';
+import { gradePart, addTime, addStep } from '../../core/grade-part.js';
 
 // the part's phases around its gathering and judging, as steps (result.steps)
 const PHASE_STEPS = { open: 'opening the page', write: 'writing the artifact', close: 'closing the page' };
@@ -60,9 +60,8 @@ export async function runPart({ item, plan, openers, browserVersion = null, more
   // where the part's time goes: opening it, each page-interface call, closing it, writing the
   // pictures; and by step: each step of the gathering, and the judging
   const timing = result.timing = {}, steps = result.steps = {};
-  const phase = (what, t0) => {
-    addTime(timing, what, Date.now() - t0);
-    steps[PHASE_STEPS[what]] = (steps[PHASE_STEPS[what]] || 0) + Date.now() - t0;
+  const phase = (what, t0, ms = Date.now() - t0) => {
+    addTime(timing, what, ms); addStep(steps, PHASE_STEPS[what], ms);
   };
   try {
     const t0 = Date.now();

@@ -30,17 +30,15 @@ export function auditSliders({ facts, images, thresholds, must, sayAs, rubric, p
   let inputOk = 0, changeOnly = 0, dead = 0;
   const found = {};
   const together = {}; // role → how its sliders moved together (ks r, g, b: one parameter)
-  // a slider put back to its value on the page that left the page in another state: the trials
-  // after it were read against the picture just before each (gather/sliders.js), and so is ks's highlight
-  let moved = null;
-  const putBack = []; // every trial whose putting back left the page elsewhere
+  // the trials whose putting back left the page in another state: the trials after the first were
+  // read against the picture just before each (gather/sliders.js), and so is ks's highlight
+  const putBack = [];
   const hidden = []; // the trials that showed nothing from a picture with no shading to read: { role, why }
   for (const s of facts.sliders) {
     const { role, target } = s;
-    const base = moved && s.before && !nearModel ? fullFit(images[s.before], thresholds) : baseFit;
     const how = sliderEvent(s, thresholds);
     // (a state the grader's own putting back left: a trial that showed nothing there may act elsewhere)
-    const why = how === 'none' && moved && s.before ? hiddenIn(images[s.before], thresholds) : null;
+    const why = how === 'none' && putBack.length && s.before ? hiddenIn(images[s.before], thresholds) : null;
     if (why) hidden.push({ role, why });
     else if (how !== 'none' && !s.levelSlider) {
       if (role && !found[role]) found[role] = true;
@@ -48,7 +46,10 @@ export function auditSliders({ facts, images, thresholds, must, sayAs, rubric, p
       if (how === 'input') inputOk++;
       else changeOnly++;
     } else if (how === 'none') dead++;
-    if (how !== 'none' && base && role === 'ks') {
+    // (ks's highlight is read against the picture before its trial once the page has been left elsewhere)
+    const fromBefore = putBack.length && s.before && !nearModel;
+    const base = role === 'ks' && how !== 'none' && (fromBefore ? fullFit(images[s.before], thresholds) : baseFit);
+    if (base) {
       // the highlight left with ks at its least: above the base picture's near point-light model (its
       // 1/r² spot stays and is no highlight), or above the after picture's own directional fit
       const after = images[s.image];
@@ -75,12 +76,10 @@ export function auditSliders({ facts, images, thresholds, must, sayAs, rubric, p
         );
       }
     }
-    if (restoredElsewhere(s, thresholds)) {
-      if (!moved) moved = s;
-      putBack.push(s);
-    }
+    if (restoredElsewhere(s, thresholds)) putBack.push(s);
   }
   if (putBack.length === 1) {
+    const [moved] = putBack;
     say('pass', `note: putting ${moved.role ? `the ${moved.role} slider` : 'a slider'} back to ${moved.restored.to} (its value on the page) changed the picture: the page starts with another value than its slider shows (each slider after it was tried from the picture just before it)`);
   } else if (putBack.length > 1) {
     const which = putBack.map((x) => `${x.role || 'a slider'} to ${x.restored.to}`).join(', ');
