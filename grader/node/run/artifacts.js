@@ -1,5 +1,6 @@
 // A part's artifact on disk (Lighthouse's latest-run/): `facts.json` (what the page showed, as
-// plain data) and its pictures as PNG files beside it, a picture shown twice stored once
+// plain data) and its pictures as PNG files beside it (png.js: the browser's own bytes where it
+// handed the picture over as a PNG), a picture shown twice stored once
 // (facts.json's `files` maps each picture's name to its file; its `schema` numbers its shape).
 // Read back, it audits as it did when gathered: `npm run grade -- --audit-only OUT` re-judges a
 // class with no browser.
@@ -7,16 +8,8 @@ import { createHash } from 'node:crypto';
 import { existsSync, mkdirSync, readFileSync, readdirSync, rmSync, writeFileSync } from 'node:fs';
 import path from 'node:path';
 import { PNG } from 'pngjs';
+import { pngBytes } from './png.js';
 import { ARTIFACT_SCHEMA, currentFacts } from '../../core/artifact-schema.js';
-
-/** A picture ({ width, height, data }) as PNG bytes: RGB where every pixel is opaque (the same pixels read back), else RGBA. */
-function pngOf(img) {
-  const p = new PNG({ width: img.width, height: img.height });
-  p.data.set(img.data);
-  let opaque = true;
-  for (let k = 3; k < img.data.length && opaque; k += 4) opaque = img.data[k] === 255;
-  return PNG.sync.write(p, opaque ? { colorType: 2, inputHasAlpha: true } : { colorType: 6 });
-}
 
 /** Writes `artifact` ({ facts, images }) into `dir` (emptied first); returns the files by picture name. */
 export function writeArtifact(dir, { facts, images }) {
@@ -28,7 +21,7 @@ export function writeArtifact(dir, { facts, images }) {
     const hash = createHash('sha1').update(`${img.width}x${img.height}:`).update(img.data).digest('hex');
     if (!byHash.has(hash)) {
       const file = `${name}.png`;
-      writeFileSync(path.join(dir, file), pngOf(img));
+      writeFileSync(path.join(dir, file), pngBytes(img));
       byHash.set(hash, file);
     }
     files[name] = byHash.get(hash);

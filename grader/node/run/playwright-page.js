@@ -4,7 +4,7 @@
 // firefox-page.js opens in Firefox ESR. The check page has its own implementation of the same
 // interface for a part in an iframe; the core knows none of them.
 import { inflateSync } from 'node:zlib';
-import { PNG } from 'pngjs';
+import { decodePng } from './png.js';
 import { gradedPageScripts } from './graded-page-scripts.js';
 import { serveSubmission, urlOf } from './serve-submission.js';
 import { FRAME_MS } from '../../core/units.js';
@@ -86,13 +86,6 @@ export function partOpener(browser, host) {
   };
 }
 
-/** A PNG (bytes, or a data: URL as the page's toDataURL gives it) as { width, height, data }. */
-const decode = (png) => {
-  const bytes = typeof png === 'string' ? Buffer.from(png.slice(png.indexOf(',') + 1), 'base64') : Buffer.from(png);
-  const { width, height, data } = PNG.sync.read(bytes);
-  return { width, height, data: new Uint8Array(data.buffer, data.byteOffset, data.length) };
-};
-
 /**
  * A picture's two channels: the canvas as the page reads it back (its alpha kept), and as the
  * browser shows it, a screenshot of the canvas's box in view taken from outside the page (the
@@ -114,7 +107,7 @@ async function shownChannels(page) {
   if (x1 - x0 < box.width / 2 || y1 - y0 < box.height / 2) return { why: 'the canvas is mostly out of view' };
   const clip = { x: x0, y: y0, width: x1 - x0, height: y1 - y0 };
   const png = await page.screenshot({ clip, animations: 'disabled', caret: 'hide', timeout: 10_000 });
-  return { raw: decode(r.png), shown: decode(png), box, clip };
+  return { raw: decodePng(r.png), shown: decodePng(png), box, clip };
 }
 
 /**
@@ -134,8 +127,8 @@ export function pageDriver(page, log) {
         return window.__grade.pixels('png');
       });
       if (!r) return null;
-      const { data } = decode(r.png);
-      return { width: r.width, height: r.height, api: r.api, data };
+      // (the picture keeps the browser's PNG bytes: the artifact writes them as they are, png.js)
+      return Object.assign(decodePng(r.png), { api: r.api });
     },
     controls: () => page.evaluate(() => window.__grade.controls()),
     /** Clicks a control as a user would (window.__grade.click: the check page clicks the same way); { ok, why }. */

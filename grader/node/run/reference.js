@@ -4,9 +4,9 @@
 // (P1 and P2 ask the same of every student at one canvas size).
 import { writeFileSync } from 'node:fs';
 import path from 'node:path';
-import { PNG } from 'pngjs';
 import { LRUCache } from 'lru-cache';
 import { compareImages } from './compare.js';
+import { pngBytes } from './png.js';
 import { hrefOf } from '../../files/layout.js';
 import { referenceQuery, referenceStateOf, referencePicture, untilDrawn } from '../../core/reference-state.js';
 
@@ -71,7 +71,7 @@ export async function drawReference({ item, plan, openers, result, graded }) {
   const dir = path.dirname(item.resultFile);
   const stem = path.basename(item.resultFile, '.json');
   const reference = path.join(dir, `${stem}-reference.png`), diff = path.join(dir, `${stem}-diff.png`);
-  writeFileSync(reference, PNG.sync.write(cmp.reference));
-  writeFileSync(diff, PNG.sync.write(cmp.diff));
+  writeFileSync(reference, pngBytes(cmp.reference));
+  writeFileSync(diff, pngBytes(cmp.diff));
   Object.assign(result.images, { reference: hrefOf(plan.out, reference), diff: hrefOf(plan.out, diff) });
 }
