@@ -52,13 +52,15 @@ export function shadingChange(imgA, anA, imgB, anB, thresholds) {
 /** The share of pixels where two pictures differ by more than rounding (pixelChange, summed over the channels of 0–255). */
 export function pictureChange(a, b, thresholds) {
   if (!a || !b || a.width !== b.width || a.height !== b.height) return 1;
+  // (read once: the gathering's thresholds are a recorder, gather/reads.js, too slow to ask per pixel)
+  const { pixelChange } = thresholds;
   let diff = 0;
   for (let o = 0; o < a.data.length; o += 4) {
     if (
       Math.abs(a.data[o] - b.data[o]) +
         Math.abs(a.data[o + 1] - b.data[o + 1]) +
         Math.abs(a.data[o + 2] - b.data[o + 2]) >
-      thresholds.pixelChange
+      pixelChange
     ) {
       diff++;
     }

@@ -50,8 +50,9 @@ export function shownDifference(two, thresholds) {
   // a large picture is read at every other row and column (a quarter of the work; the share alike)
   const step = shown.width * shown.height > thresholds.shownFullPixels ? 2 : 1;
   let best = null;
-  for (let dy = -thresholds.shownShift; dy <= thresholds.shownShift; dy++) {
-    for (let dx = -thresholds.shownShift; dx <= thresholds.shownShift; dx++) {
+  // (the first shift that matches every pixel is the best: none after it can do better)
+  for (let dy = -thresholds.shownShift; dy <= thresholds.shownShift && !(best && best.differ === 0); dy++) {
+    for (let dx = -thresholds.shownShift; dx <= thresholds.shownShift && !(best && best.differ === 0); dx++) {
       const r = differing(raw, shown, box, clip, dx, dy, thresholds.shownPixelDiff, step);
       if (r.opaque && (!best || r.differ / r.opaque < best.differ / best.opaque)) best = r;
     }
