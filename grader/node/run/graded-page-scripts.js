@@ -1,16 +1,17 @@
 // The init scripts a graded page gets, in the order they must run, the same in either browser: the
 // browser's own functions kept first (natives.js), WebGPU's capture where the browser has WebGPU
 // (Chromium; Firefox ESR has none), then the draw batch, the instrumentation, the pixels, the
-// recorders, the frozen clock and the watch on the grader's hooks.
+// console (console.js), the recorders, the frozen clock and the watch on the grader's hooks.
 import { webgpuCaptureScript } from '../../browser/webgpu-capture.js';
 import { drawBatchScript } from '../../browser/draw-batch.js';
 import { instrumentScript } from '../../browser/instrument.js';
 import { recordersInit } from '../../browser/geometry.js';
 import { nativesInit } from '../../browser/natives.js';
 import { pixelsScript } from '../../browser/pixels.js';
+import { consoleScript } from '../../browser/console.js';
 import { tamperScript } from '../../browser/tamper.js';
 import { FROZEN, clockScript } from '../../browser/clock.js';
 
 /** The scripts' texts, in order; `webgpu`: the browser has WebGPU, and its frames are captured. */
 export const gradedPageScripts = ({ webgpu }) => [nativesInit, ...(webgpu ? [webgpuCaptureScript] : []),
-  drawBatchScript, instrumentScript, pixelsScript, recordersInit, clockScript(FROZEN), tamperScript];
+  drawBatchScript, instrumentScript, pixelsScript, consoleScript, recordersInit, clockScript(FROZEN), tamperScript];
