@@ -21,7 +21,7 @@ for (const item of plan.items) {
     continue;
   }
   test(`${item.name} ${item.part}`, async ({ browser }, testInfo) => {
-    openers ??= { student: partOpener(browser, 'submission.localhost'), reference: partOpener(browser, 'reference.localhost') };
+    openers ??= { student: partOpener(browser, 'submission.localhost'), reference: partOpener(browser, 'reference.localhost', { leaveFirst: false }) };
     const browserVersion = browserLabel(plan.browserName || 'Chromium', browser.version());
     const more = (seconds) => testInfo.setTimeout(testInfo.timeout + seconds * 1000);
     await runPart({ item, plan, openers, browserVersion, more });
