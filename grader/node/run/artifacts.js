@@ -7,8 +7,7 @@
 import { createHash } from 'node:crypto';
 import { existsSync, mkdirSync, readFileSync, readdirSync, rmSync, writeFileSync } from 'node:fs';
 import path from 'node:path';
-import { PNG } from 'pngjs';
-import { pngBytes } from './png.js';
+import { decodePng, pngBytes } from './png.js';
 import { ARTIFACT_SCHEMA, currentFacts } from '../../core/artifact-schema.js';
 
 /** Writes `artifact` ({ facts, images }) into `dir` (emptied first); returns the files by picture name. */
@@ -41,14 +40,7 @@ export function readArtifact(dir) {
   const images = {};
   const read = new Map();
   for (const [name, file] of Object.entries(files)) {
-    if (!read.has(file)) {
-      const png = PNG.sync.read(readFileSync(path.join(dir, file)));
-      read.set(file, {
-        width: png.width,
-        height: png.height,
-        data: new Uint8Array(png.data.buffer, png.data.byteOffset, png.data.length),
-      });
-    }
+    if (!read.has(file)) read.set(file, decodePng(readFileSync(path.join(dir, file))));
     images[name] = read.get(file);
   }
   return { facts, images, files };
