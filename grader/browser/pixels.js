@@ -35,7 +35,7 @@ export function pixelsScript() {
     const copy = N.createElement.call(document, 'canvas');
     N.width.set.call(copy, width);
     N.height.set.call(copy, height);
-    const c2 = N.getContext.call(copy, '2d');
+    const c2 = N.getContext.call(copy, '2d', { willReadFrequently: true });
     if (background) {
       N.fillStyle.set.call(c2, background);
       N.fillRect.call(c2, 0, 0, width, height);
