@@ -6,6 +6,7 @@
 // as named parts, in order (instrumentScript), which share what they record on window.__grade.
 
 import { watchInstancedDraws } from './instanced-draws.js';
+import { watchPresent } from './present.js';
 
 /** window.__grade: what the parts below record, and state(), what the page interface reads of it. */
 function gradeState() {
@@ -49,34 +50,8 @@ function watchContexts() {
 /** WebGL: shader sources and errors, the depth test and culling, draws counted, a present after each task that drew. */
 function watchWebGL() {
   const g = window.__grade;
-  // a WebGL canvas keeps its drawing buffer (preserveDrawingBuffer) so the last frame can be read
-  // at any time; where the page did not ask for that, its depth and stencil buffers are cleared
-  // after each task that drew, as the browser clears them when it presents the frame (a page that
-  // never clears its depth buffer draws each frame into a cleared one, not into the last frame's)
-  const presented = new WeakMap(); // context → a present is queued
-  const present = (gl) => {
-    presented.set(gl, false);
-    if (gl.isContextLost()) return;
-    const fb = gl.getParameter(gl.FRAMEBUFFER_BINDING), scissor = gl.isEnabled(gl.SCISSOR_TEST);
-    const depth = gl.getParameter(gl.DEPTH_CLEAR_VALUE), stencil = gl.getParameter(gl.STENCIL_CLEAR_VALUE);
-    const depthMask = gl.getParameter(gl.DEPTH_WRITEMASK), stencilMask = gl.getParameter(gl.STENCIL_WRITEMASK);
-    if (fb) gl.bindFramebuffer(gl.FRAMEBUFFER, null);
-    if (scissor) gl.disable(gl.SCISSOR_TEST);
-    gl.depthMask(true);
-    gl.stencilMask(0xffffffff);
-    gl.clearDepth(1);
-    gl.clearStencil(0);
-    gl.clear(gl.DEPTH_BUFFER_BIT | gl.STENCIL_BUFFER_BIT);
-    gl.clearDepth(depth); gl.clearStencil(stencil);
-    gl.depthMask(depthMask); gl.stencilMask(stencilMask);
-    if (scissor) gl.enable(gl.SCISSOR_TEST);
-    if (fb) gl.bindFramebuffer(gl.FRAMEBUFFER, fb);
-  };
-  const drew = (gl) => {
-    if (!gl.__gradeClearsOnPresent || presented.get(gl)) return;
-    presented.set(gl, true);
-    queueMicrotask(() => present(gl));
-  };
+  // (a present after each task that drew: grader/browser/present.js)
+  const drew = g.drew;
   const protos = [window.WebGLRenderingContext, window.WebGL2RenderingContext].filter(Boolean).map((c) => c.prototype);
   for (const proto of protos) {
     const { compileShader, linkProgram, shaderSource, drawArrays, drawElements } = proto;
@@ -339,8 +314,8 @@ function controlsInterface() {
 }
 
 /** The parts, in the order they are installed (window.__grade first; the listeners' wrapper after the waits' own use of addEventListener). */
-export const INSTRUMENT_PARTS = [gradeState, watchContexts, watchWebGL, watchInstancedDraws, watchWaits, watchListeners,
-  controlsInterface];
+export const INSTRUMENT_PARTS = [gradeState, watchContexts, watchPresent, watchWebGL, watchInstancedDraws, watchWaits,
+  watchListeners, controlsInterface];
 
 /** The init script, as source: each part called in order (for addInitScript, evaluateOnNewDocument or a frame's script). */
 export const instrumentScript = INSTRUMENT_PARTS.map((part) => `(${part})();`).join('\n');

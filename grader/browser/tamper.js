@@ -29,7 +29,8 @@ export function tamperScript() {
   };
   const names = {
     HTMLCanvasElement: ['getContext', 'toDataURL', 'toBlob'], CanvasRenderingContext2D: ['drawImage', 'getImageData'], Document: ['createElement', 'querySelectorAll'],
-    WebGLRenderingContext: ['drawArrays', 'drawElements', 'bufferData', 'bufferSubData', 'vertexAttribPointer', 'enable', 'disable', 'cullFace', 'frontFace', 'useProgram', 'uniformMatrix4fv', 'getExtension', 'shaderSource', 'compileShader', 'linkProgram'],
+    WebGLRenderingContext: ['drawArrays', 'drawElements', 'bufferData', 'bufferSubData', 'vertexAttribPointer', 'enable', 'disable', 'cullFace', 'frontFace', 'useProgram', 'uniformMatrix4fv', 'getExtension', 'shaderSource', 'compileShader', 'linkProgram',
+      'clearDepth', 'clearStencil', 'depthMask', 'stencilMask', 'stencilMaskSeparate'],
     EventTarget: ['addEventListener'],
     // WebGPU: what the instrumentation, the geometry's and the sent values' records and the frame capture wrap
     GPUAdapter: ['requestDevice'], GPUDevice: ['createBuffer', 'createShaderModule', 'createRenderPipeline', 'createRenderPipelineAsync', 'popErrorScope'],
