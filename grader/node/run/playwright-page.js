@@ -4,10 +4,15 @@
 // firefox-page.js opens in Firefox ESR. The check page has its own implementation of the same
 // interface for a part in an iframe; the core knows none of them.
 import { inflateSync } from 'node:zlib';
+import { LRUCache } from 'lru-cache';
 import { decodePng } from './png.js';
 import { gradedPageScripts } from './graded-page-scripts.js';
 import { serveSubmission, urlOf } from './serve-submission.js';
 import { FRAME_MS } from '../../core/units.js';
+
+// the pictures a part's driver remembers by their bytes (a picture snapped again unchanged is
+// mostly the one before or the one before that: ../shared/handins, 131 of 135)
+const SNAPS_KEPT = 4;
 
 /**
  * Opens the parts a worker grades, one after another, in one browser context and page: each part
@@ -118,6 +123,10 @@ async function shownChannels(page) {
  * and keyboard.press(key)).
  */
 export function pageDriver(page, log) {
+  // the last pictures snapped, by their bytes: a picture snapped again unchanged (after a control
+  // that changed nothing, of a stopped orbit) is the same picture, and what was measured of it
+  // (core/computed/memo.js) is not measured again
+  const snapped = new LRUCache({ max: SNAPS_KEPT });
   const driver = {
     /** What the instrumentation saw: the API, WebGPU frames, the adapter, draw calls, shader and GPU errors. */
     state: () => page.evaluate(() => window.__grade.state()),
@@ -129,8 +138,11 @@ export function pageDriver(page, log) {
         return window.__grade.pixels('png');
       });
       if (!r) return null;
+      const key = `${r.api}|${r.png}`;
+      let img = snapped.get(key);
       // (the picture keeps the browser's PNG bytes: the artifact writes them as they are, png.js)
-      return Object.assign(decodePng(r.png), { api: r.api });
+      if (!img) snapped.set(key, (img = Object.assign(decodePng(r.png), { api: r.api })));
+      return img;
     },
     controls: () => page.evaluate(() => window.__grade.controls()),
     /** Clicks a control as a user would (window.__grade.click: the check page clicks the same way); { ok, why }. */
