@@ -41,6 +41,35 @@ function fitDirection(F, l) {
 }
 
 /**
+ * fitDirection(F, l) for each l of `dirs`, four directions a pass over the samples (each sample's
+ * normal read once for four; each sum added in fitDirection's order, so the same numbers).
+ */
+function fitEach(F, dirs) {
+  const { m, nx, ny, nz, y } = F;
+  const fits = new Array(dirs.length);
+  let d = 0;
+  for (; d + 4 <= dirs.length; d += 4) {
+    const [p0, p1, p2] = dirs[d], [q0, q1, q2] = dirs[d + 1], [r0, r1, r2] = dirs[d + 2], [t0, t1, t2] = dirs[d + 3];
+    let ps = 0, pss = 0, psy = 0, qs = 0, qss = 0, qsy = 0, rs = 0, rss = 0, rsy = 0, ts = 0, tss = 0, tsy = 0;
+    for (let i = 0; i < m; i++) {
+      const a = nx[i], b = ny[i], c = nz[i], v = y[i];
+      const xp = a * p0 + b * p1 + c * p2, xq = a * q0 + b * q1 + c * q2;
+      const xr = a * r0 + b * r1 + c * r2, xt = a * t0 + b * t1 + c * t2;
+      if (xp > 0) { ps += xp; pss += xp * xp; psy += xp * v; }
+      if (xq > 0) { qs += xq; qss += xq * xq; qsy += xq * v; }
+      if (xr > 0) { rs += xr; rss += xr * xr; rsy += xr * v; }
+      if (xt > 0) { ts += xt; tss += xt * xt; tsy += xt * v; }
+    }
+    fits[d] = lineFit(m, F.sy, F.syy, ps, pss, psy);
+    fits[d + 1] = lineFit(m, F.sy, F.syy, qs, qss, qsy);
+    fits[d + 2] = lineFit(m, F.sy, F.syy, rs, rss, rsy);
+    fits[d + 3] = lineFit(m, F.sy, F.syy, ts, tss, tsy);
+  }
+  for (; d < dirs.length; d++) fits[d] = fitDirection(F, dirs[d]);
+  return fits;
+}
+
+/**
  * The two-sided line fits of brightness against |n·l| (lit on both sides: a + b |n·l|) of F and
  * of Fall at once, F being the samples of Fall that `use` picks, in the same order: |n·l|
  * computed once a sample, each sum added up in the order a fit of either alone would add it.
@@ -80,9 +109,10 @@ export function diffuseFit(pts, thresholds) {
   for (let pass = 0; pass < 2; pass++) {
     best = null;
     F = flat(pts, use);
-    for (const l of DIRS) {
-      const f = fitDirection(F, l);
-      if (f.b >= 0 && (!best || f.sse < best.sse)) best = { ...f, l };
+    const fits = fitEach(F, DIRS);
+    for (let j = 0; j < DIRS.length; j++) {
+      const f = fits[j];
+      if (f.b >= 0 && (!best || f.sse < best.sse)) best = { ...f, l: DIRS[j] };
     }
     // refine around the best direction
     for (let step = REFINE_FIRST; step > REFINE_LAST; step /= 2) {
