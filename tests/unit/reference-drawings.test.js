@@ -6,7 +6,7 @@ import assert from 'node:assert/strict';
 import { mkdtempSync, mkdirSync, readFileSync, rmSync } from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
-import { drawReference, forgetDrawings } from '../../grader/node/run/reference.js';
+import { drawReference, forgetDrawings, REFERENCE_STEP } from '../../grader/node/run/reference.js';
 import { mergeRubric } from '../../grader/core/rubric.js';
 
 const RUBRIC = mergeRubric(JSON.parse(readFileSync(new URL('../../grader/core/rubric.json', import.meta.url), 'utf8')), {});
@@ -59,12 +59,23 @@ test('a second part asking the same query is compared with the kept picture: our
   const second = await compared(opener, 'bob', 'WP04P1', 16);
   assert.equal(opener.opens, 1);
   assert.ok(Number.isFinite(first.rmse) && first.rmse > 0);
-  const withoutFiles = ({ images, ...rest }) => ({ ...rest, images: Object.keys(images) });
+  // (the time each took aside: result.steps)
+  const withoutFiles = ({ images, steps: _steps, ...rest }) => ({ ...rest, images: Object.keys(images) });
   assert.deepEqual(withoutFiles(second), withoutFiles(first), 'the same comparison, notes and reference state');
   assert.deepEqual(readFileSync(path.join(dir, 'bob', 'WP04P1-reference.png')), readFileSync(path.join(dir, 'ada', 'WP04P1-reference.png')));
   await compared(opener, 'cy', 'WP04P2', 16);
   await compared(opener, 'dan', 'WP04P1', 24);
   assert.equal(opener.opens, 3, 'another part or another canvas size is another query');
+});
+
+test("the time our reference took is a step of the part's, drawn or recalled, failed or not", async () => {
+  const opener = countingOpener(1);
+  for (const name of ['ada', 'bob', 'cy']) {
+    const result = await compared(opener, name, 'WP04P1', 16);
+    assert.deepEqual(Object.keys(result.steps), [REFERENCE_STEP], name);
+    assert.ok(result.steps[REFERENCE_STEP] >= 0, name);
+  }
+  assert.equal(opener.opens, 2, 'failed, drawn, recalled');
 });
 
 test('a drawing that failed is not kept: the next part asking the same opens our page again', async () => {

@@ -9,6 +9,7 @@ import { compareImages } from './compare.js';
 import { pngBytes } from './png.js';
 import { hrefOf } from '../../files/layout.js';
 import { referenceQuery, referenceStateOf, referencePicture, untilDrawn } from '../../core/reference-state.js';
+import { addStep } from '../../core/grade-part.js';
 
 // the pictures a worker keeps, in bytes of RGBA: 64 MiB holds 64 drawings at 512×512
 export const KEPT_BYTES = 64 * 1024 * 1024;
@@ -51,8 +52,23 @@ async function drawOurs({ item, plan, openers, query, judged, notes }) {
   }
 }
 
-/** Draws (or recalls) our reference for `item`, compares it with graded.images.judged and writes both pictures beside item.resultFile. */
-export async function drawReference({ item, plan, openers, result, graded }) {
+/** The step of a part's time (result.steps) that our reference takes: drawn after the part's own `seconds`, it is not in them. */
+export const REFERENCE_STEP = 'drawing and comparing our reference';
+
+/**
+ * Draws (or recalls) our reference for `item`, compares it with graded.images.judged and writes
+ * both pictures beside item.resultFile; the time it took goes into result.steps (REFERENCE_STEP).
+ */
+export async function drawReference(args) {
+  const t0 = Date.now();
+  try {
+    await compareWithOurs(args);
+  } finally {
+    addStep((args.result.steps ??= {}), REFERENCE_STEP, Date.now() - t0);
+  }
+}
+
+async function compareWithOurs({ item, plan, openers, result, graded }) {
   const judged = graded.images.judged;
   const query = referenceQuery(judged, result.numbers, plan.rubric.thresholds, item.referenceQuery);
   const key = `${plan.browser || 'chromium'}|${plan.repo}|${item.part}?${query}`;
