@@ -10,8 +10,8 @@ import { gradedPageScripts } from './graded-page-scripts.js';
 import { serveSubmission, urlOf } from './serve-submission.js';
 import { FRAME_MS } from '../../core/units.js';
 
-// the pictures a part's driver remembers by their bytes (a picture snapped again unchanged is
-// mostly the one before or the one before that: ../shared/handins, 131 of 135)
+// the pictures a part's driver remembers by their bytes (in ../shared/handins, 135 of 497 snaps
+// repeat an earlier one of the same part: 129 one of the last two, 132 one of the last four)
 const SNAPS_KEPT = 4;
 
 /**
