@@ -45,7 +45,7 @@ function countingOpener(failures = 0) {
 
 /** drawReference for `name`'s `part` judged at `size`: the result it fills in. */
 async function compared(opener, name, part, size) {
-  const result = { notes: [], numbers: {}, images: {} };
+  const result = { notes: [], numbers: {}, images: {}, steps: {} }; // (as run-part.js starts it)
   const item = { name, part, resultFile: path.join(dir, name, `${part}.json`) };
   rmSync(path.join(dir, name), { recursive: true, force: true });
   mkdirSync(path.join(dir, name), { recursive: true });

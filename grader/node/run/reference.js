@@ -64,7 +64,7 @@ export async function drawReference(args) {
   try {
     await compareWithOurs(args);
   } finally {
-    addStep((args.result.steps ??= {}), REFERENCE_STEP, Date.now() - t0);
+    addStep(args.result.steps, REFERENCE_STEP, Date.now() - t0);
   }
 }
 
