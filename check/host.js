@@ -70,7 +70,7 @@ async function onMessage(e) {
 }
 
 /**
- * A session serving `source` (serve.js: handInSource, siteSource) to frames under BASE + id + '/',
+ * A session serving `source` (serve.js: handInSource) to frames under BASE + id + '/',
  * its scripts' loops stopped after `loopSeconds` (the rubric's loadSeconds).
  * `log.webgpu`: a page or script served since the last clearLog() calls WebGPU.
  * @returns {{ id: string, url: (path: string) => string, log: { errors: string[], blocked: string[], notes: string[], webgpu: boolean }, clearLog: () => void, idle: (ms: number, max: number) => Promise<void>, close: () => void }}

@@ -19,7 +19,7 @@ import { webgpuCaptureScript } from '../grader/browser/webgpu-capture.js';
 import { gradePart } from '../grader/core/grade-part.js';
 import { judgement, notJudgedHere } from '../grader/core/part-result.js';
 import { timedOut, notOpened, asFail, graderTrouble } from '../grader/core/audits/page.js';
-import { referenceQuery, referencePicture, untilDrawn } from '../grader/core/reference-state.js';
+import { referenceQuery, referencePicture } from '../grader/core/reference-state.js';
 import { deadlineOf } from '../grader/core/deadline.js';
 import { NOT_CHECKED, notCheckedHere } from './not-checked.js';
 import { MS_PER_SECOND } from '../grader/core/units.js';
@@ -140,22 +140,12 @@ export async function checkPart({ part, page, session, rubric, stage, progress =
 }
 
 /**
- * Our own part beside the student's (as the grader's report has it): drawn at the student's canvas
- * size, lit from the light the judge fitted, in a frame served from our site. { width, height, data } or null.
+ * Our own part beside the student's, as the grader's report has it: the exact sphere our page shows
+ * at the student's canvas size, lit from the light the judge fitted (core/reference-state.js).
+ * { width, height, data } or null.
  */
-export async function drawReference({ result, rubric, session, stage }) {
+export function drawReference({ result, rubric }) {
   const judged = result.images.judged;
   if (!judged || result.verdict === 'fail') return null;
-  const query = referenceQuery(judged, result.numbers, rubric.thresholds, {});
-  const { frame, how } = await load(stage, `${session.url(`${result.part}/index.html`)}?${query}`, rubric.loadSeconds);
-  try {
-    if (how !== 'load') return null;
-    await session.idle();
-    const fp = framePage(frame, session.log);
-    // our pages publish window.scene after each frame drawn: wait for one (a loaded machine is slow)
-    const shows = () => frame.contentWindow.scene && frame.contentWindow.scene.frame >= 1;
-    return (await referencePicture(fp, judged, () => untilDrawn(shows, fp, rubric.firstFrameSeconds))).img;
-  } finally {
-    frame.remove();
-  }
+  return referencePicture(result.part, referenceQuery(judged, result.numbers, rubric.thresholds, {}), judged).img;
 }

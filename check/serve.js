@@ -60,17 +60,6 @@ export function handInSource(files) {
   return { paths, read: async (p) => files.get(p) ?? null };
 }
 
-/** Our own site as a source (for our reference part beside a student's): read from the server, never listed. */
-export function siteSource(root) {
-  return {
-    paths: [],
-    read: async (p) => {
-      const r = await fetch(new URL(p.split('/').map(encodeURIComponent).join('/'), root));
-      return r.ok ? r.blob() : null;
-    },
-  };
-}
-
 /**
  * The answer to a frame's request for `rel` (a path inside the source). `module`: the frame asked
  * for a module script (check/sw.js: a script fetched in cors mode, as a module's imports are).

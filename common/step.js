@@ -10,11 +10,12 @@
 //
 // A step's WebGPU twin (webgpu.js) opens with { webgpu: true } and gets page.gpu (device, context,
 // format) instead of page.gl; a lost device is its lost context: init(gpu) runs again on a new one.
-import { AT, EYE_DISTANCE, FOVY, ORBIT_SPEED, UP } from './course.js';
+import { EYE_DISTANCE, FOVY, ORBIT_SPEED } from './course.js';
 import { makeControls, showLevel, showValue } from './controls.js';
 import { requestGPU } from './gpu.js';
 import { createContext, notify, onContextLoss, showError, writeQuery } from './page.js';
 import { PARAMETERS, defaultOf, readParams, wrapAngle } from './params.js';
+import { cameraOf, describeScene } from './scene.js';
 import { MAX_LEVEL, chooseLevel } from './sphere.js';
 
 /**
@@ -47,9 +48,8 @@ export async function openStep({ exercise, params, shading = 'normals', rmse = n
   apiLinks(api);
 
   // The camera looks at the centre from e = (r sin α, 0, r cos α); a step that orbits moves e
-  const camera = { eye: [0, 0, EYE_DISTANCE], at: [...AT], up: [...UP], fovy: FOVY,
-    aspect: canvas.width / canvas.height, near: state.near ?? 0.1, far: state.far ?? 10 };
-  const scene = describe({ exercise, api, level: 0, vertices: 0, frame: 0, camera, shading }, state);
+  const camera = cameraOf(state, canvas.width / canvas.height);
+  const scene = describeScene({ exercise, api, level: 0, vertices: 0, frame: 0, camera, shading }, state);
 
   /**
    * Hands the step's GL code to the machinery and draws the first frame.
@@ -116,7 +116,7 @@ export async function openStep({ exercise, params, shading = 'normals', rmse = n
     }
     function frame() {
       if (gl ? gl.isContextLost() : lost) return;
-      describe(scene, state);
+      describeScene(scene, state);
       draw();
       scene.frame++;
       window.scene = scene;
@@ -186,43 +186,4 @@ function reportGPUErrors(device) {
 /** The parameters whose value follows `name`'s choice (the light's xyz follows its kind). */
 function followers(name) {
   return Object.keys(PARAMETERS).filter((p) => PARAMETERS[p].follows === name);
-}
-
-/** window.scene's fields from the step's parameters, in place; a step without one leaves it out. */
-function describe(scene, state) {
-  scene.level = state.level;
-  if ('depth' in state) {
-    scene.depthTest = state.depth;
-    scene.cullFace = state.cull;
-    scene.frontFace = state.cw ? 'cw' : 'ccw';
-  }
-  if ('orbit' in state) {
-    // the lit steps test depth and cull back faces, as WP04P2 taught
-    scene.depthTest = true;
-    scene.cullFace = true;
-    scene.frontFace = 'ccw';
-    scene.orbit = state.orbit;
-    scene.angle = state.angle;
-  }
-  if ('light' in state) {
-    scene.light ??= { position: [0, 0, 0, 0] };
-    const p = scene.light.position;
-    p[0] = state.lx;
-    p[1] = state.ly;
-    p[2] = state.lz;
-    p[3] = state.light === 'point' ? 1 : 0; // homogeneous: w = 1 a point, w = 0 a direction
-    scene.light.Le = state.Le;
-    if ('La' in state) scene.light.La = state.La;
-  }
-  if ('kd' in state) {
-    scene.material ??= {};
-    scene.material.kd = state.kd;
-    if ('La' in state) scene.material.ka = state.kd; // k_a = k_d
-    if ('ks' in state) {
-      scene.material.ks = state.ks;
-      scene.material.s = state.s;
-    }
-  }
-  if ('model' in state) scene.model = state.model;
-  return scene;
 }

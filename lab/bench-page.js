@@ -31,7 +31,7 @@
  * @property {() => string} capture draws once; returns the whole canvas, RGBA bytes, row 0 at the
  *   top, as base64
  * @property {() => object} scene the view as a page's window.scene gives it (camera, light,
- *   material, model, shading = the method, cullFace, level, canvas), for tools/reference/render.js
+ *   material, model, shading = the method, cullFace, level, canvas), for common/exact-render.js
  * @property {(level: number, repeats: number) => {ours: number[], cold: number[], classic: number[], bound: number[]}} levelChange
  *   times one level change `repeats` times four ways (ours, ours cold, the textbook's classic,
  *   the copy-only bound: see the function); ms per change. Leaves the mesh at `level` in the current layout.

@@ -17,7 +17,7 @@ import { mkdirSync, writeFileSync, copyFileSync } from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
-import { renderReference } from './reference/render.js';
+import { renderReference } from '../common/exact-render.js';
 import { compareToReference, shadingError, silhouetteErrorPx } from './reference/measure.js';
 import { toRGBA8 } from './reference/png.js';
 import { PNG } from 'pngjs';

@@ -12,7 +12,7 @@
 import { writeFileSync } from 'node:fs';
 import path from 'node:path';
 import { fileURLToPath, pathToFileURL } from 'node:url';
-import { renderReference } from './reference/render.js';
+import { renderReference } from '../common/exact-render.js';
 import { meshDeviation, shadingError } from './reference/measure.js';
 import { startServer } from './browser.js';
 import { CHROMIUM_ARGS, launchChromium } from '../grader/node/run/chromium.js';

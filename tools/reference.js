@@ -1,9 +1,9 @@
 #!/usr/bin/env node
 // node tools/reference.js: the exact reference of a saved window.scene as a PNG, and optionally its
-// comparison with a canvas screenshot. The renderer is tools/reference/render.js, the error
+// comparison with a canvas screenshot. The renderer is common/exact-render.js, the error
 // measures tools/reference/measure.js, the PNG files tools/reference/png.js.
 import { readFileSync } from 'node:fs';
-import { renderReference } from './reference/render.js';
+import { renderReference } from '../common/exact-render.js';
 import { compareToReference } from './reference/measure.js';
 import { readPNG, writePNG } from './reference/png.js';
 import { UsageError, isMainScript, parseOptions, runCommand, wholeNumber } from './cli.js';

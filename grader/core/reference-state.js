@@ -1,18 +1,19 @@
-// Our reference part drawn beside a student's: at the student's canvas size, lit from the light
-// the judge fitted to the student's picture. Plain data: the query for our page and what
-// report.json says of the state it was drawn at.
+// Our reference part beside a student's: at the student's canvas size, lit from the light the judge
+// fitted to the student's picture. The query our page would be opened with, the scene it would
+// show, that scene rendered exactly, and what report.json says of it. Pure: the grader (in Node)
+// and the check page (in the student's browser) draw the same reference.
 import { nearPointLight } from './measure/point-light.js';
 import { fmt } from './format.js';
-import { FRAME_MS, MS_PER_SECOND } from './units.js';
-
-/** A real wait between looks at our own reference page: our page, never a bound on a student's. */
-const LOOK_MS = 100;
+import { readParams } from '../../common/params.js';
+import { cameraOf, describeScene } from '../../common/scene.js';
+import { EYE_DISTANCE } from '../../common/course.js';
+import { renderReference, toRGBA8 } from '../../common/exact-render.js';
 
 /**
  * Our reference's light, as the judge fitted the student's (P3–P5): the fitted direction toward the
  * light is in view space, and our page at angle 0 has view = world (eye on +z), so a directional
  * light shines along −l; a near point light with 1/r² sits at d·l (our sphere is a unit sphere,
- * as the fit's). The level stays ours for the canvas size: a student's own level is not known.
+ * as the fit's).
  */
 export function referenceLight(numbers, thresholds) {
   const fit = numbers && numbers.fit;
@@ -39,47 +40,67 @@ export function referenceQuery({ width, height }, numbers, thresholds, extra = {
   });
 }
 
-/** The state our reference was drawn at, for report.json: its light (and where it came from) and level. */
-export function referenceStateOf(query, scene) {
+/**
+ * Our steps as their pages open them (each WP04Pk/main.js and webgpu.js: openStep): the parameters
+ * each reads, the shading its window.scene says and the shading errors its level weighs.
+ * tests/browser/reference-scene.spec.js holds each to its page's own window.scene.
+ */
+export const OUR_STEPS = {
+  WP04P1: { params: ['level'] },
+  WP04P2: { params: ['level', 'depth', 'cull', 'cw'] },
+  WP04P3: { shading: 'gouraud', rmse: 'diffuse',
+    params: ['height', 'near', 'far', 'level', 'orbit', 'angle', 'light', 'lx', 'ly', 'lz', 'kd', 'Le'] },
+  WP04P4: { shading: 'gouraud', rmse: 'gouraud',
+    params: ['height', 'near', 'far', 'level', 'orbit', 'angle', 'light', 'lx', 'ly', 'lz', 'kd', 'Le', 'ks', 's', 'La', 'model'] },
+  WP04P5: { shading: 'phong', rmse: 'phong',
+    params: ['height', 'near', 'far', 'level', 'orbit', 'angle', 'light', 'lx', 'ly', 'lz', 'kd', 'Le', 'ks', 's', 'La', 'model'] },
+};
+
+/**
+ * The window.scene our page for `part` publishes when opened with `query` (a URLSearchParams or
+ * its string): the same parameters read and clamped (common/params.js), the same fields
+ * (common/scene.js), the eye at (r sin α, 0, r cos α) as the orbiting steps put it. null for a
+ * part we have no step for.
+ */
+export function referenceScene(part, query) {
+  const step = OUR_STEPS[part];
+  if (!step) return null;
+  const { values } = readParams(['api', 'size', 'msaa', ...step.params], `?${query}`, { shading: step.rmse ?? null });
+  const camera = cameraOf(values, values.size / (values.height ?? values.size));
+  if ('angle' in values) {
+    camera.eye[0] = EYE_DISTANCE * Math.sin(values.angle);
+    camera.eye[2] = EYE_DISTANCE * Math.cos(values.angle);
+  }
+  const scene = describeScene({ exercise: part, api: values.api, level: 0, camera, shading: step.shading ?? 'normals' }, values);
+  return { scene, width: values.size, height: values.height ?? values.size };
+}
+
+/**
+ * Our reference for `part` beside the judged picture: the exact render of the scene our page
+ * shows for `query` (common/exact-render.js: the unit sphere hit per pixel centre, the slide's
+ * formula evaluated there; our pages agree with it within tests/browser/bounds.js's tolerances).
+ * The same in the grader and on the check page, in any browser or none. { img, scene, why }: img
+ * null where nothing comparable is drawn, `why` then says so.
+ */
+export function referencePicture(part, query, judged) {
+  const made = referenceScene(part, query);
+  if (!made) return { img: null, scene: null, why: `we have no step ${part} to draw beside it` };
+  const { scene, width, height } = made;
+  if (width !== judged.width || height !== judged.height) {
+    return { img: null, scene, why: `our ${part} draws ${width}×${height} for this canvas, not ${judged.width}×${judged.height}: not compared` };
+  }
+  const ref = renderReference(scene, width, height);
+  return { img: { width, height, data: toRGBA8(ref) }, scene, why: null };
+}
+
+/** The state our reference was drawn at, for report.json: its light (and where it came from); no level, the sphere is exact. */
+export function referenceStateOf(query) {
   const q = Object.fromEntries(query.entries());
   return {
-    level: scene && Number.isFinite(scene.level) ? scene.level : null,
-    levelFrom: 'ours: the least level that looks round and shades within tolerance at this canvas size (the student\'s level is not known)',
+    level: null,
+    levelFrom: 'none: the exact sphere, the slide\'s formula evaluated at each pixel (no mesh)',
     light: q.light ? { kind: q.light, xyz: [q.lx, q.ly, q.lz].map(Number) } : null,
     lightFrom: q.light ? 'the light direction (or near point light) the judge fitted to the judged picture, in our view at angle 0' : 'none (no lit step)',
     query: query.toString(),
   };
-}
-
-/** How long our reference runs before its picture is taken: the jump, then frames at 60 Hz (our own page, not a bound on a student's). */
-const SETTLE = { ms: 500, frames: 30 };
-
-/**
- * Waits until our reference shows a drawn frame (`shows()`: our pages publish window.scene after each
- * frame), a frame of frozen time at a time, within `seconds` of the wall clock: a loaded machine
- * takes longer to fetch our shaders, and a picture taken before the first frame is blank. Our page,
- * not a bound on a student's. Returns whether it shows one.
- */
-export async function untilDrawn(shows, driver, seconds) {
-  for (const until = Date.now() + MS_PER_SECOND * seconds; !(await shows()) && Date.now() < until;) {
-    await new Promise((resolve) => setTimeout(resolve, LOOK_MS));
-    await driver.tick(FRAME_MS);
-  }
-  return shows();
-}
-
-/**
- * Our reference's picture, drawn as the grader and the check page both draw it (opened by the
- * caller with referenceQuery's settings, through the page interface `driver`): run SETTLE, wait for
- * `drawn` (the check page polls our page's window.scene there), then read back. { img, why }: img
- * null where nothing comparable was drawn, `why` then says so where it is worth a note.
- */
-export async function referencePicture(driver, judged, drawn = async () => true) {
-  await driver.tick(SETTLE.ms, SETTLE.frames);
-  if (!(await drawn())) return { img: null, why: null };
-  const img = await driver.snap();
-  if (img && (img.width !== judged.width || img.height !== judged.height)) {
-    return { img: null, why: `our reference drew ${img.width}×${img.height}, not ${judged.width}×${judged.height}: not compared` };
-  }
-  return { img: img || null, why: null };
 }

@@ -5,7 +5,7 @@ import { readFileSync, mkdtempSync } from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
 import { test, expect, open, canvasPixels, andDraw, errorAgainstReference } from './fixtures.js';
-import { renderReference } from '../../tools/reference/render.js';
+import { renderReference } from '../../common/exact-render.js';
 import { silhouetteErrorPx } from '../../tools/reference/measure.js';
 import { chooseLevel } from '../../common/sphere.js';
 import { EDGE_CASES } from '../../tools/edge-cases.js';

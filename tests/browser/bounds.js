@@ -1,6 +1,6 @@
 // What a step's picture is held to against the exact sphere, in every engine and API: the colours
 // 0.5 p + 0.5 of the unlit steps (WP04P1, WP04P2), and each lit step's bound against the exact
-// render (tools/reference/render.js). Chromium's specs and the Firefox suite share them, so that
+// render (common/exact-render.js). Chromium's specs and the Firefox suite share them, so that
 // both engines are held to the same numbers.
 import { expect } from '@playwright/test';
 import { SHADING_RMSE } from '../../common/sphere.js';

@@ -10,7 +10,7 @@
 import { test as base, expect } from '@playwright/test';
 import { PNG } from 'pngjs';
 import { PIN_CANVAS_PATH, canvasScreenshot } from '../../tools/browser.js';
-import { renderReference } from '../../tools/reference/render.js';
+import { renderReference } from '../../common/exact-render.js';
 import { compareToReference } from '../../tools/reference/measure.js';
 import { readWebGPUFrame, webgpuCaptureScript } from '../../grader/browser/webgpu-capture.js';
 

@@ -1,5 +1,5 @@
 // The lit steps: WP04P3 Gouraud, WP04P4 Phong reflection model, WP04P5 Phong shading. Their
-// screenshots, their error against the exact reference renderer (tools/reference/render.js), and
+// screenshots, their error against the exact reference renderer (common/exact-render.js), and
 // their controls (sliders, Blinn-Phong, light type, Orbit, the address). WebGL 2 and WebGL 1.
 import { test, expect, open, scene, andDraw, canvasPixels, expectCanvasScreenshot, errorAgainstReference } from './fixtures.js';
 import { SHADING_RMSE } from '../../common/sphere.js';

@@ -1,7 +1,7 @@
 // What the surface specs share (surface.spec.js: our steps in WebGL 2 and WebGL 1;
 // surface-webgpu.spec.js: in WebGPU, and a page shaped as ours are not): reading a page's surface as
 // the grader reads it, and the test that holds one of our own steps to the exact sphere's normals
-// (tools/reference/render.js, with the page's own window.scene) and the camera to the scene's.
+// (common/exact-render.js, with the page's own window.scene) and the camera to the scene's.
 import { test, expect } from '@playwright/test';
 import { readFileSync } from 'node:fs';
 import { nativesInit } from '../../grader/browser/natives.js';
@@ -9,7 +9,7 @@ import { instrumentScript } from '../../grader/browser/instrument.js';
 import { recordersInit } from '../../grader/browser/geometry.js';
 import { webgpuCaptureScript } from '../../grader/browser/webgpu-capture.js';
 import { surfaceOf, degreesBetween, clipMatrix } from '../../grader/core/computed/surface.js';
-import { renderReference } from '../../tools/reference/render.js';
+import { renderReference } from '../../common/exact-render.js';
 
 const T = JSON.parse(readFileSync(new URL('../../grader/core/rubric.json', import.meta.url), 'utf8')).thresholds;
 export const SIZE = 128;

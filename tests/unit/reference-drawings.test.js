@@ -1,89 +1,98 @@
-// Our reference beside a student's picture: our page draws the same pixels for the same query, so a
-// worker opens it once per query and compares every later part that asks the same with the picture
-// it kept. A drawing that failed is never kept. drawReference over a fake opener that counts.
+// Our reference beside a student's picture: the exact render (common/exact-render.js) of the scene
+// our page shows for the query, at the student's canvas size, lit from the fitted light; kept per
+// query by a worker for the parts that ask again. The scenes here are written out from the slides'
+// defaults (common/params.js: kd 0.8, ks 0.5, s 40, Le 1, La 0.2; the eye at (0, 0, 3), 45°), not
+// read from the module under test.
 import { test, beforeEach, after } from 'node:test';
 import assert from 'node:assert/strict';
 import { mkdtempSync, mkdirSync, readFileSync, rmSync } from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
 import { drawReference, forgetDrawings, REFERENCE_STEP } from '../../grader/node/run/reference.js';
+import { decodePng } from '../../grader/node/run/png.js';
 import { mergeRubric } from '../../grader/core/rubric.js';
+import { renderReference, toRGBA8 } from '../../common/exact-render.js';
 
 const RUBRIC = mergeRubric(JSON.parse(readFileSync(new URL('../../grader/core/rubric.json', import.meta.url), 'utf8')), {});
 const dir = mkdtempSync(path.join(os.tmpdir(), 'reference-'));
 after(() => rmSync(dir, { recursive: true, force: true }));
-globalThis.window = { scene: { frame: 1, level: 4 } };
 beforeEach(() => forgetDrawings());
 
-/** A picture of `size`² on black with a square of `grey` in its middle half. */
-function picture(size, grey) {
-  const data = Buffer.alloc(4 * size * size, 255);
-  for (let p = 0; p < size * size; p++) {
-    const x = p % size, y = Math.floor(p / size);
-    const inside = x >= size / 4 && x < (3 * size) / 4 && y >= size / 4 && y < (3 * size) / 4;
+/** A picture of `width`×`height` on black with a square of `grey` in its middle half. */
+function picture(width, grey, height = width) {
+  const data = Buffer.alloc(4 * width * height, 255);
+  for (let p = 0; p < width * height; p++) {
+    const x = p % width, y = Math.floor(p / width);
+    const inside = x >= width / 4 && x < (3 * width) / 4 && y >= height / 4 && y < (3 * height) / 4;
     data[4 * p] = data[4 * p + 1] = data[4 * p + 2] = inside ? grey : 0;
   }
-  return { width: size, height: size, data };
+  return { width, height, data };
 }
 
-/** An opener of our page that draws a grey picture of the size asked for, counting its opens; `failures` opens throw first. */
-function countingOpener(failures = 0) {
-  const opener = { opens: 0, failed: 0 };
-  opener.open = async ({ query }) => {
-    opener.opens++;
-    if (opener.failed < failures) { opener.failed++; throw new Error('net::ERR_CONNECTION_RESET'); }
-    const size = Number(new URLSearchParams(query).get('size'));
-    return {
-      // (the page's functions read window.scene, which our page publishes after each frame)
-      page: { evaluate: async (fn) => fn() },
-      driver: { tick: async () => {}, snap: async () => picture(size, 128) },
-    };
-  };
-  opener.done = async () => {};
-  return opener;
-}
-
-/** drawReference for `name`'s `part` judged at `size`: the result it fills in. */
-async function compared(opener, name, part, size) {
-  const result = { notes: [], numbers: {}, images: {}, steps: {} }; // (as run-part.js starts it)
-  const item = { name, part, resultFile: path.join(dir, name, `${part}.json`) };
+/** drawReference for `name`'s `part` judged at `width`×`height` with `numbers`: the result it fills in. */
+async function compared(name, part, width, { height = width, numbers = {} } = {}) {
+  const result = { notes: [], numbers, images: {}, steps: {} }; // (as run-part.js starts it)
+  const item = { name, part, resultFile: path.join(dir, name, `${part}.json`), referenceQuery: {} };
   rmSync(path.join(dir, name), { recursive: true, force: true });
   mkdirSync(path.join(dir, name), { recursive: true });
-  await drawReference({ item, plan: { rubric: RUBRIC, repo: '/ours', out: dir }, openers: { reference: opener }, result, graded: { images: { judged: picture(size, 100) } } });
+  await drawReference({ item, plan: { rubric: RUBRIC, out: dir }, result, graded: { images: { judged: picture(width, 100, height) } } });
   return result;
 }
 
-test('a second part asking the same query is compared with the kept picture: our page is not opened again', async () => {
-  const opener = countingOpener();
-  const first = await compared(opener, 'ada', 'WP04P1', 16);
-  const second = await compared(opener, 'bob', 'WP04P1', 16);
-  assert.equal(opener.opens, 1);
-  assert.ok(Number.isFinite(first.rmse) && first.rmse > 0);
-  // (the time each took aside: result.steps)
+const referenceOf = (name, part) => decodePng(readFileSync(path.join(dir, name, `${part}-reference.png`)));
+const camera = (aspect) => ({ eye: [0, 0, 3], at: [0, 0, 0], up: [0, 1, 0], fovy: 45, aspect, near: 0.1, far: 10 });
+
+test('WP04P1: the exact sphere in the normals\' colours, at the judged canvas\'s size', async () => {
+  const r = await compared('ada', 'WP04P1', 40);
+  const expected = renderReference({ shading: 'normals', camera: camera(1) }, 40, 40);
+  assert.deepEqual(referenceOf('ada', 'WP04P1').data, new Uint8Array(toRGBA8(expected).buffer));
+  assert.ok(Number.isFinite(r.rmse) && r.rmse > 0);
+  assert.deepEqual(r.referenceState.level, null, 'no mesh, no level');
+  assert.equal(r.referenceState.light, null);
+});
+
+test('WP04P4: the slide\'s Phong reflection model with its defaults, lit from the fitted light', async () => {
+  const toward = [0.6, 0, 0.8]; // the fitted direction toward the light, in view space
+  const r = await compared('bob', 'WP04P4', 32, { numbers: { fit: { light: toward } } });
+  const expected = renderReference({
+    shading: 'gouraud', model: 'phong', camera: camera(1), cullFace: true, frontFace: 'ccw',
+    light: { position: [-0.6, 0, -0.8, 0], Le: 1, La: 0.2 }, material: { kd: 0.8, ka: 0.8, ks: 0.5, s: 40 },
+  }, 32, 32);
+  assert.deepEqual(referenceOf('bob', 'WP04P4').data, new Uint8Array(toRGBA8(expected).buffer));
+  assert.deepEqual(r.referenceState.light, { kind: 'directional', xyz: [-0.6, 0, -0.8] });
+  // a highlight where the slide puts it: the brightest pixel is not the diffuse peak alone
+  assert.ok(Math.max(...referenceOf('bob', 'WP04P4').data.filter((_, k) => k % 4 === 0)) > 0.8 * 255);
+});
+
+test('a second part asking the same query gets the same comparison and the same picture', async () => {
+  const first = await compared('ada', 'WP04P1', 16);
+  const second = await compared('bob', 'WP04P1', 16);
   const withoutFiles = ({ images, steps: _steps, ...rest }) => ({ ...rest, images: Object.keys(images) });
   assert.deepEqual(withoutFiles(second), withoutFiles(first), 'the same comparison, notes and reference state');
   assert.deepEqual(readFileSync(path.join(dir, 'bob', 'WP04P1-reference.png')), readFileSync(path.join(dir, 'ada', 'WP04P1-reference.png')));
-  await compared(opener, 'cy', 'WP04P2', 16);
-  await compared(opener, 'dan', 'WP04P1', 24);
-  assert.equal(opener.opens, 3, 'another part or another canvas size is another query');
+  assert.notDeepEqual(referenceOf('ada', 'WP04P1').data, (await compared('cy', 'WP04P1', 24), referenceOf('cy', 'WP04P1').data));
 });
 
-test("the time our reference took is a step of the part's, drawn or recalled, failed or not", async () => {
-  const opener = countingOpener(1);
-  for (const name of ['ada', 'bob', 'cy']) {
-    const result = await compared(opener, name, 'WP04P1', 16);
+test("the time our reference took is a step of the part's, drawn, recalled or not drawn", async () => {
+  for (const [name, size] of [['ada', 16], ['bob', 16], ['cy', 4000]]) {
+    const result = await compared(name, 'WP04P1', size);
     assert.deepEqual(Object.keys(result.steps), [REFERENCE_STEP], name);
     assert.ok(result.steps[REFERENCE_STEP] >= 0, name);
   }
-  assert.equal(opener.opens, 2, 'failed, drawn, recalled');
 });
 
-test('a drawing that failed is not kept: the next part asking the same opens our page again', async () => {
-  const opener = countingOpener(1);
-  const failed = await compared(opener, 'ada', 'WP04P1', 16);
-  assert.match(failed.notes.join('\n'), /our reference could not be drawn: net::ERR_CONNECTION_RESET/);
-  assert.equal(failed.rmse, undefined);
-  const drawn = await compared(opener, 'bob', 'WP04P1', 16);
-  assert.equal(opener.opens, 2);
-  assert.ok(Number.isFinite(drawn.rmse));
+test('WP04P3 at the judged canvas\'s aspect: Gouraud\'s diffuse light, no ambient, no highlight', async () => {
+  await compared('ada', 'WP04P3', 40, { height: 30, numbers: { fit: { light: [0, 0, 1] } } });
+  const expected = renderReference({ shading: 'gouraud', model: 'phong', camera: camera(40 / 30), cullFace: true,
+    light: { position: [0, 0, -1, 0], Le: 1 }, material: { kd: 0.8 } }, 40, 30);
+  assert.deepEqual(referenceOf('ada', 'WP04P3').data, new Uint8Array(toRGBA8(expected).buffer));
+});
+
+test('a canvas our page cannot draw at is not compared, and the note says why', async () => {
+  const r = await compared('ada', 'WP04P3', 4000, { height: 10 });
+  assert.equal(r.rmse, undefined);
+  assert.match(r.notes.join('\n'), /our WP04P3 draws 2048×16 for this canvas, not 4000×10: not compared/);
+  assert.deepEqual(Object.keys(r.images), []);
+  // WP04P1 and WP04P2 have square canvases only
+  assert.match((await compared('bob', 'WP04P2', 40, { height: 30 })).notes.join('\n'), /our WP04P2 draws 40×40 for this canvas, not 40×30/);
 });

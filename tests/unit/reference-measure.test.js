@@ -3,7 +3,7 @@
 // the reference itself. The scenes and helpers are in reference-scenes.js.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { renderReference } from '../../tools/reference/render.js';
+import { renderReference } from '../../common/exact-render.js';
 import { compareToReference, silhouetteErrorPx } from '../../tools/reference/measure.js';
 import { camera, lit, normals, at, close, asImage } from './reference-scenes.js';
 

@@ -1,4 +1,4 @@
-// The exact reference renderer (tools/reference/render.js), checked against values worked out by
+// The exact reference renderer (common/exact-render.js), checked against values worked out by
 // hand: colours at chosen points, the silhouette, highlights, point lights, clipping and culling,
 // bad scenes, speed; and its pictures as 8-bit RGBA and PNG (tools/reference/png.js).
 // The scenes and helpers are in reference-scenes.js.
@@ -8,7 +8,7 @@ import { mkdtempSync, readFileSync, rmSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import path from 'node:path';
 import { PNG } from 'pngjs';
-import { BACKGROUND, shadePoint, renderReference } from '../../tools/reference/render.js';
+import { BACKGROUND, shadePoint, renderReference } from '../../common/exact-render.js';
 import { toRGBA8, writePNG } from '../../tools/reference/png.js';
 import { camera, lit, normals, at, covered, close, grey } from './reference-scenes.js';
 

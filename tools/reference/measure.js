@@ -1,6 +1,6 @@
 // The error measures: how far a picture (a canvas screenshot, RGBA, row 0 at the top) is from the
 // exact reference of render.js, as coverage (the silhouette) and as shading error on the interior.
-import { BACKGROUND } from './render.js';
+import { BACKGROUND } from '../../common/exact-render.js';
 
 /** A pixel counts as sphere when it is more than this far from the background in some channel. */
 const COVERAGE_TOLERANCE = 3 / 255;

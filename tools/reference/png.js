@@ -1,22 +1,9 @@
 // The reference as a picture: 8-bit RGBA as a canvas stores it, and PNG files in and out.
 import { readFileSync, writeFileSync } from 'node:fs';
 import { PNG } from 'pngjs';
+import { toRGBA8 } from '../../common/exact-render.js';
 
-/**
- * The reference as 8-bit RGBA, row 0 at the top, as a canvas stores it: round(v · 255), alpha 255.
- * @returns {Uint8ClampedArray}
- */
-export function toRGBA8(ref) {
-  const n = ref.width * ref.height;
-  const out = new Uint8ClampedArray(4 * n);
-  for (let p = 0; p < n; p++) {
-    out[4 * p] = Math.round(ref.rgb[3 * p] * 255);
-    out[4 * p + 1] = Math.round(ref.rgb[3 * p + 1] * 255);
-    out[4 * p + 2] = Math.round(ref.rgb[3 * p + 2] * 255);
-    out[4 * p + 3] = 255;
-  }
-  return out;
-}
+export { toRGBA8 };
 
 /** Writes the reference to `path` as an 8-bit RGBA PNG. */
 export function writePNG(path, ref) {

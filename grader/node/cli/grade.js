@@ -27,8 +27,6 @@ import { runSimilarity, writeSimilarityReport, SIMILARITY_HELP, parseBound } fro
 const here = path.dirname(fileURLToPath(import.meta.url));
 const repo = path.resolve(here, '../../..');
 const RUN = path.join(here, '../run'); // (the Playwright run: its config, its harness)
-// the time our own reference page gets on top of the rubric's bound for the student's page
-const REFERENCE_SECONDS = 30;
 const HELP = `usage: npm run grade -- <submission-folder> [--part WP04P1=<path to html>]... [--rubric <file>] [--out <dir>]
        npm run grade -- --batch <download.zip | its folder | a folder a student> [--rubric <file>] [--out <dir>]
 --batch takes a course site's download as it comes (its .zip or the folder it unpacked into, either
@@ -262,12 +260,11 @@ async function runPlan(o, out, rubric, items, planFile) {
     browserPath: executable,
     rubric,
     timeoutSeconds: rubric.timeoutSeconds,
-    referenceSeconds: REFERENCE_SECONDS,
     items,
   };
   writeFileSync(planFile, JSON.stringify(plan, null, 1));
   const how = browser === 'chromium' ? `, found by ${CHROMIUM_HOW}` : '';
-  console.log(`grade: ${submissions.size} submission(s), ${items.length} parts in ${browserName} (${executable}${how}); ${o.workers || 2} at a time, at most ${rubric.timeoutSeconds} s for each student page, and ${REFERENCE_SECONDS} s more for our reference`);
+  console.log(`grade: ${submissions.size} submission(s), ${items.length} parts in ${browserName} (${executable}${how}); ${o.workers || 2} at a time, at most ${rubric.timeoutSeconds} s for each student page`);
   if (browser === 'firefox') {
     // (--shard I/N: every N-th part from the I-th, as a class is split over machines)
     const [i, n] = (o.shard || '1/1').split('/').map(Number);

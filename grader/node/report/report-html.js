@@ -130,7 +130,9 @@ function numbersHtml(r) {
   const st = r.referenceState;
   const light = st && st.light
     ? `, a ${esc(st.light.kind)} light at (${esc(st.light.xyz.join(', '))}) as fitted to the student's picture` : '';
-  const drawn = st ? `<p>Our reference drawn at level ${esc(String(st.level))}${light}.</p>` : '';
+  // (a result graded before our reference was the exact sphere names the level our page drew)
+  const how = st && st.level !== null ? `drawn at level ${esc(String(st.level))}` : 'the exact sphere, the slide\'s formula at each pixel';
+  const drawn = st ? `<p>Our reference: ${how}${light}.</p>` : '';
   return numbers + against + drawn;
 }
 

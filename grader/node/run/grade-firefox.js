@@ -2,7 +2,7 @@
 // same items as Chromium's harness.js runs, graded by run-part.js in a plain Node loop, with
 // pages opened by firefox-page.js; each worker drives a Firefox of its own. The same artifacts and
 // results are written, so report.js, --report-only and --audit-only read them as Chromium's. A
-// part's time bound is the rubric's (plus our reference's): a part it stops stays a timeout, and
+// part's time bound is the rubric's: a part it stops stays a timeout, and
 // its worker's Firefox is ended and started again for the next part.
 import { readFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
@@ -50,21 +50,19 @@ export async function gradeInFirefox(plan, { workers = 2, say = console.log, pro
         if (!browser && item.page) {
           browser = await launchFirefox({
             extraPrefsFirefox: NO_NETWORK,
-            protocolTimeout: 1000 * (plan.timeoutSeconds + plan.referenceSeconds + 60),
+            protocolTimeout: 1000 * (plan.timeoutSeconds + 60),
           });
-          openers = { student: firefoxOpener(browser, 'submission.localhost'), reference: firefoxOpener(browser, 'reference.localhost') };
+          openers = { student: firefoxOpener(browser, 'submission.localhost') };
           browserVersion = browserLabel(plan.browserName || 'Firefox', await browser.version().catch(() => ''));
         }
         const started = Date.now();
-        let limit = plan.timeoutSeconds * 1000, over = false;
+        const limit = plan.timeoutSeconds * 1000;
+        let over = false;
         const running = runPart({
           item,
           plan,
           openers,
           browserVersion: item.page ? browserVersion : null,
-          more: (seconds) => {
-            limit += seconds * 1000;
-          },
           over: () => over,
         }).then(
           (r) => (r && r.browserFailed ? 'browser failed' : 'done'),

@@ -25,10 +25,10 @@ const SNAPS_KEPT = 4;
  * page prints or is refused.
  * done(clean): the part is over; a part that did not end cleanly (the grader threw, or the page did
  * not finish loading) takes the context with it, and the next part gets a new one.
- * `leaveFirst`: the page before is left for an empty one first (a student's page, which may hold
- * on or run its frames once more); our reference pages go from one to the next directly.
+ * The page before is left for an empty one first (a student's page may hold on, or run its frames
+ * once more).
  */
-export function partOpener(browser, host, { leaveFirst = true } = {}) {
+export function partOpener(browser, host) {
   let kept = null; // { context, page, site }
   let n = 0;
   const keep = async () => {
@@ -69,7 +69,7 @@ export function partOpener(browser, host, { leaveFirst = true } = {}) {
     async open({ root, rel, query = '', loadSeconds, log }) {
       // the part before is left for an empty page first (its frames would run once as time is frozen
       // anew); a page that crashed, was closed or will not let go takes the context with it (its goto fails)
-      if (kept && leaveFirst && !await leave(kept)) await drop();
+      if (kept && !await leave(kept)) await drop();
       kept ??= await keep();
       const { page, site } = kept;
       serve(site, root, log);

@@ -23,13 +23,13 @@ const PHASE_STEPS = { open: 'opening the page', write: 'writing the artifact', c
 const CLOSED = /Test ended|Target page, context or browser has been closed/;
 
 /**
- * Grades `item` of `plan` with `openers` ({ student, reference }): writes item.resultFile (first
- * as a timeout, which stays if the part's time bound stops it) and item.artifactDir. `more(seconds)`
- * asks for more time for our reference; `over()` says the time bound has stopped the part (nothing
+ * Grades `item` of `plan` with `openers` ({ student }): writes item.resultFile (first as a
+ * timeout, which stays if the part's time bound stops it) and item.artifactDir. `over()` says the
+ * time bound has stopped the part (nothing
  * is written after that). `browserVersion` ("Chromium 156.0.8078.108") names the browser that grades it.
  * Returns { browserFailed }: the browser failed itself on this part (the next part wants a fresh one).
  */
-export async function runPart({ item, plan, openers, browserVersion = null, more = () => {}, over = () => false }) {
+export async function runPart({ item, plan, openers, browserVersion = null, over = () => false }) {
   const rubric = plan.rubric;
   const save = (result) => {
     if (over()) return;
@@ -109,8 +109,7 @@ export async function runPart({ item, plan, openers, browserVersion = null, more
   result.seconds = (Date.now() - started) / 1000;
   save(result);
   if (rubric.reference && graded.images.judged && !graded.fail && !graded.notGraded) {
-    more(plan.referenceSeconds);
-    await drawReference({ item, plan, openers, result, graded });
+    await drawReference({ item, plan, result, graded });
     save(result);
   }
   return { browserFailed: graded.notGradedId === 'browser-failed' };

@@ -2,9 +2,9 @@
 // unit sphere (centre 0, model matrix identity), in double precision, and evaluates the slides'
 // reflection model at the hit point, so that L_o = L_r,d + L_r,s + L_r,a with no mesh, no
 // interpolation and no float32 anywhere. Plain JavaScript; its one import is the course's clear
-// colour. The error measures (measure.js), the PNG files (png.js), the command (../reference.js),
-// the tests and the bench build on it.
-import { BACKGROUND as CLEAR } from '../../common/course.js';
+// colour. The error measures and PNG files (tools/reference/), the command (tools/reference.js),
+// the tests, the bench and the grader's reference picture (grader/core/reference-state.js) build on it.
+import { BACKGROUND as CLEAR } from './course.js';
 
 /** The course's clear colour, RGB (common/course.js). */
 export const BACKGROUND = CLEAR.slice(0, 3);
@@ -269,4 +269,20 @@ export function renderReference(scene, width, height) {
     }
   }
   return { width, height, rgb, coverage };
+}
+
+/**
+ * The reference as 8-bit RGBA, row 0 at the top, as a canvas stores it: round(v · 255), alpha 255.
+ * @returns {Uint8ClampedArray}
+ */
+export function toRGBA8(ref) {
+  const n = ref.width * ref.height;
+  const out = new Uint8ClampedArray(4 * n);
+  for (let p = 0; p < n; p++) {
+    out[4 * p] = Math.round(ref.rgb[3 * p] * 255);
+    out[4 * p + 1] = Math.round(ref.rgb[3 * p + 1] * 255);
+    out[4 * p + 2] = Math.round(ref.rgb[3 * p + 2] * 255);
+    out[4 * p + 3] = 255;
+  }
+  return out;
 }
