@@ -4,11 +4,13 @@ import { sphereMesh } from '../common/sphere.js';
 import { loadShaders, programFrom, setUniforms } from '../common/shaders.js';
 import { BACKGROUND } from '../common/course.js';
 import { openStep } from '../common/step.js';
+import { STEPS } from '../common/steps.js';
 import { run } from '../common/page.js';
 
 async function main() {
-  // The page: URL parameters, canvas and context, controls, window.scene (common/step.js)
-  const page = await openStep({ exercise: 'WP04P1', params: ['level'] });
+  // The page: URL parameters, canvas and context, controls, window.scene (common/step.js; the
+  // parameters this step reads: common/steps.js)
+  const page = await openStep(STEPS.WP04P1);
   const { gl, canvas, camera } = page;
   const shaders = await loadShaders('shader.vert', 'shader.frag');
 

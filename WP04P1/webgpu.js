@@ -5,11 +5,13 @@ import { MAX_LEVEL, sphereMesh, vertexBytes } from '../common/sphere.js';
 import { createShaderModule, createUniformBuffer, loadWGSL, setUniforms } from '../common/gpu.js';
 import { BACKGROUND } from '../common/course.js';
 import { openStep } from '../common/step.js';
+import { STEPS } from '../common/steps.js';
 import { run } from '../common/page.js';
 
 async function main() {
-  // The page: URL parameters, canvas and device, controls, window.scene (common/step.js)
-  const page = await openStep({ exercise: 'WP04P1', params: ['level'], webgpu: true });
+  // The page: URL parameters, canvas and device, controls, window.scene (common/step.js; the
+  // parameters this step reads: common/steps.js)
+  const page = await openStep(STEPS.WP04P1, { webgpu: true });
   const { camera } = page;
   const wgsl = await loadWGSL('shader.wgsl');
 

@@ -6,11 +6,13 @@ import { MAX_LEVEL, sphereMesh, vertexBytes } from '../common/sphere.js';
 import { createShaderModule, createUniformBuffer, loadWGSL, setUniforms } from '../common/gpu.js';
 import { BACKGROUND } from '../common/course.js';
 import { openStep } from '../common/step.js';
+import { STEPS } from '../common/steps.js';
 import { run } from '../common/page.js';
 
 async function main() {
-  // The page: URL parameters, canvas and device, controls, window.scene (common/step.js)
-  const page = await openStep({ exercise: 'WP04P2', params: ['level', 'depth', 'cull', 'cw'], webgpu: true });
+  // The page: URL parameters, canvas and device, controls, window.scene (common/step.js; the
+  // parameters this step reads: common/steps.js)
+  const page = await openStep(STEPS.WP04P2, { webgpu: true });
   const { canvas, state, camera } = page;
   const wgsl = await loadWGSL('shader.wgsl');
 

@@ -5,12 +5,13 @@ import { sphereMesh } from '../common/sphere.js';
 import { loadShaders, programFrom, setUniforms } from '../common/shaders.js';
 import { BACKGROUND, EYE_DISTANCE } from '../common/course.js';
 import { openStep } from '../common/step.js';
+import { STEPS } from '../common/steps.js';
 import { run } from '../common/page.js';
 
 async function main() {
-  // The page: URL parameters, canvas and context, controls, window.scene (common/step.js)
-  const page = await openStep({ exercise: 'WP04P4', shading: 'gouraud', rmse: 'gouraud',
-    params: ['height', 'near', 'far', 'level', 'orbit', 'angle', 'light', 'lx', 'ly', 'lz', 'kd', 'Le', 'ks', 's', 'La', 'model'] });
+  // The page: URL parameters, canvas and context, controls, window.scene (common/step.js; the
+  // parameters this step reads: common/steps.js)
+  const page = await openStep(STEPS.WP04P4);
   const { gl, canvas, state, camera, scene } = page;
   const shaders = await loadShaders('shader.vert', 'shader.frag');
 

@@ -5,12 +5,13 @@ import { MAX_LEVEL, sphereMesh, vertexBytes } from '../common/sphere.js';
 import { createShaderModule, createUniformBuffer, loadWGSL, setUniforms } from '../common/gpu.js';
 import { BACKGROUND, EYE_DISTANCE } from '../common/course.js';
 import { openStep } from '../common/step.js';
+import { STEPS } from '../common/steps.js';
 import { run } from '../common/page.js';
 
 async function main() {
-  // The page: URL parameters, canvas and device, controls, window.scene (common/step.js)
-  const page = await openStep({ exercise: 'WP04P5', shading: 'phong', rmse: 'phong', webgpu: true,
-    params: ['height', 'near', 'far', 'level', 'orbit', 'angle', 'light', 'lx', 'ly', 'lz', 'kd', 'Le', 'ks', 's', 'La', 'model'] });
+  // The page: URL parameters, canvas and device, controls, window.scene (common/step.js; the
+  // parameters this step reads: common/steps.js)
+  const page = await openStep(STEPS.WP04P5, { webgpu: true });
   const { canvas, state, camera, scene } = page;
   const wgsl = await loadWGSL('shader.wgsl');
 

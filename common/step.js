@@ -3,13 +3,14 @@
 // its WebGL context, the controls, the frame loop (the orbit's clock), the WebGL context's loss
 // and restoration, and window.scene, published after every frame (the page contract, DESIGN.md).
 //
-//   const page = await openStep({ exercise: 'WP04P1', params: ['level'] });
+//   const page = await openStep(STEPS.WP04P1);     // its entry in common/steps.js
 //   const { gl, canvas, state, camera } = page;
 //   ... set-up ...
 //   page.start({ init, setLevel, draw });
 //
-// A step's WebGPU twin (webgpu.js) opens with { webgpu: true } and gets page.gpu (device, context,
-// format) instead of page.gl; a lost device is its lost context: init(gpu) runs again on a new one.
+// A step's WebGPU twin (webgpu.js) opens with openStep(STEPS.WP04P1, { webgpu: true }) and gets
+// page.gpu (device, context, format) instead of page.gl; a lost device is its lost context:
+// init(gpu) runs again on a new one.
 import { EYE_DISTANCE, FOVY, ORBIT_SPEED } from './course.js';
 import { makeControls, showLevel, showValue } from './controls.js';
 import { requestGPU } from './gpu.js';
@@ -17,22 +18,23 @@ import { createContext, notify, onContextLoss, showError, writeQuery } from './p
 import { PARAMETERS, defaultOf, readParams, wrapAngle } from './params.js';
 import { cameraOf, describeScene } from './scene.js';
 import { MAX_LEVEL, chooseLevel } from './sphere.js';
+import { paramNames } from './steps.js';
 
 /**
  * Reads the step's parameters from the URL, sizes the canvas and creates its context.
- * @param {object} step
+ * @param {object} step the step's entry in common/steps.js
  * @param {string} step.exercise e.g. 'WP04P3'
- * @param {string[]} step.params the parameters it has besides api and size (common/params.js)
+ * @param {string[]} step.params the parameters it has besides api, size and msaa (common/params.js)
  * @param {'normals'|'gouraud'|'phong'} [step.shading] as window.scene says it (default 'normals')
  * @param {'diffuse'|'gouraud'|'phong'} [step.rmse] which shading errors chooseLevel weighs
  *   (common/sphere.js shadingRmse, at the material's shininess); none: the silhouette alone sets the level
- * @param {boolean} [step.webgpu] the step's WebGPU script: a device instead of a WebGL context
+ * @param {object} [how]
+ * @param {boolean} [how.webgpu] the step's WebGPU script: a device instead of a WebGL context
  * @returns {Promise<{gl: WebGLRenderingContext|WebGL2RenderingContext|null, gpu: object|null,
  *   api: string, canvas: HTMLCanvasElement, state: Object, camera: Object, scene: Object, start: Function}>}
  */
-export async function openStep({ exercise, params, shading = 'normals', rmse = null, webgpu = false }) {
-  const names = ['api', 'size', 'msaa', ...params];
-  const { values: state, notices } = readParams(names, location.search, { shading: rmse });
+export async function openStep({ exercise, params, shading = 'normals', rmse = null }, { webgpu = false } = {}) {
+  const { values: state, notices } = readParams(paramNames({ params }), location.search, { shading: rmse });
   for (const text of notices) notify(text);
 
   const canvas = document.getElementById('gl-canvas');

@@ -8,6 +8,7 @@ import { readParams } from '../../common/params.js';
 import { cameraOf, describeScene } from '../../common/scene.js';
 import { EYE_DISTANCE } from '../../common/course.js';
 import { renderReference, toRGBA8 } from '../../common/exact-render.js';
+import { STEPS, paramNames } from '../../common/steps.js';
 
 /**
  * Our reference's light, as the judge fitted the student's (P3–P5): the fitted direction toward the
@@ -41,31 +42,15 @@ export function referenceQuery({ width, height }, numbers, thresholds, extra = {
 }
 
 /**
- * Our steps as their pages open them (each WP04Pk/main.js and webgpu.js: openStep): the parameters
- * each reads, the shading its window.scene says and the shading errors its level weighs.
- * tests/browser/reference-scene.spec.js holds each to its page's own window.scene.
- */
-export const OUR_STEPS = {
-  WP04P1: { params: ['level'] },
-  WP04P2: { params: ['level', 'depth', 'cull', 'cw'] },
-  WP04P3: { shading: 'gouraud', rmse: 'diffuse',
-    params: ['height', 'near', 'far', 'level', 'orbit', 'angle', 'light', 'lx', 'ly', 'lz', 'kd', 'Le'] },
-  WP04P4: { shading: 'gouraud', rmse: 'gouraud',
-    params: ['height', 'near', 'far', 'level', 'orbit', 'angle', 'light', 'lx', 'ly', 'lz', 'kd', 'Le', 'ks', 's', 'La', 'model'] },
-  WP04P5: { shading: 'phong', rmse: 'phong',
-    params: ['height', 'near', 'far', 'level', 'orbit', 'angle', 'light', 'lx', 'ly', 'lz', 'kd', 'Le', 'ks', 's', 'La', 'model'] },
-};
-
-/**
  * The window.scene our page for `part` publishes when opened with `query` (a URLSearchParams or
- * its string): the same parameters read and clamped (common/params.js), the same fields
+ * its string): its parameters (common/steps.js) read and clamped (common/params.js), the same fields
  * (common/scene.js), the eye at (r sin α, 0, r cos α) as the orbiting steps put it. null for a
  * part we have no step for.
  */
 export function referenceScene(part, query) {
-  const step = OUR_STEPS[part];
+  const step = Object.hasOwn(STEPS, part) ? STEPS[part] : null;
   if (!step) return null;
-  const { values } = readParams(['api', 'size', 'msaa', ...step.params], `?${query}`, { shading: step.rmse ?? null });
+  const { values } = readParams(paramNames(step), `?${query}`, { shading: step.rmse ?? null });
   const camera = cameraOf(values, values.size / (values.height ?? values.size));
   if ('angle' in values) {
     camera.eye[0] = EYE_DISTANCE * Math.sin(values.angle);

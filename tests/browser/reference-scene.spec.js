@@ -3,7 +3,8 @@
 // queries and its own window.scene, as it published it after drawing, must be the scene the grader
 // builds, field for field (the frame and the vertex count aside: the grader draws no mesh).
 import { test, expect } from '@playwright/test';
-import { referenceQuery, referenceScene, OUR_STEPS } from '../../grader/core/reference-state.js';
+import { referenceQuery, referenceScene } from '../../grader/core/reference-state.js';
+import { STEPS } from '../../common/steps.js';
 
 const T = { nearPointDistance: 0 }; // (no point light fitted here: referenceLight reads the fit alone)
 
@@ -15,7 +16,7 @@ const QUERIES = [
   { size: { width: 80, height: 80 }, numbers: {}, extra: { light: 'point', lx: 0.5, ly: 1, lz: 2.5, Le: 4 } },
 ];
 
-for (const part of Object.keys(OUR_STEPS)) {
+for (const part of Object.keys(STEPS)) {
   test(`${part}: its window.scene is the scene the grader renders as our reference`, async ({ page }) => {
     for (const q of QUERIES) {
       const query = referenceQuery(q.size, q.numbers, T, q.extra);
