@@ -9,9 +9,9 @@ import { pageDriver } from '../../grader/node/run/playwright-page.js';
 const W = 4, H = 3;
 const picture = (seed) => Uint8Array.from({ length: W * H * 4 }, (_, i) => (i * seed) % 256);
 const b64 = (bytes) => Buffer.from(bytes).toString('base64');
-/** The driver over a page whose in-page reader gives `normals` and `points` as packed. */
+/** The driver over a page whose in-page reader gives `normals` and `points` as packed (the whole as one JSON string). */
 const surfaceOf = (normals, points) =>
-  pageDriver({ evaluate: async () => ({ width: W, height: H, position: 'vPosition', normal: null, fit: [], normals, points }) }, { errors: [] })
+  pageDriver({ evaluate: async () => JSON.stringify({ width: W, height: H, position: 'vPosition', normal: null, fit: [[0.5, -0.25, 1, 0.1, 0.2, 0.3, 1]], normals, points }) }, { errors: [] })
     .surface({ fitSamples: 4 });
 
 test('deflated or raw, each picture comes back as the page had it', async () => {
@@ -22,6 +22,7 @@ test('deflated or raw, each picture comes back as the page had it', async () => 
   assert.deepEqual(s.normals.data, n);
   assert.deepEqual(s.points.data, p);
   assert.equal(s.position, 'vPosition');
+  assert.deepEqual(s.fit, [[0.5, -0.25, 1, 0.1, 0.2, 0.3, 1]]);
 });
 
 test('a picture that is not whole is a reason: more bytes, fewer bytes, not deflate', async () => {
