@@ -14,7 +14,8 @@ export function pixelsScript() {
     querySelectorAll: D.querySelectorAll, createElement: D.createElement,
     getClientRects: E.getClientRects, getAttribute: E.getAttribute,
     getContext: C.getContext, toDataURL: C.toDataURL, width: property(C, 'width'), height: property(C, 'height'),
-    fillStyle: property(X, 'fillStyle'), fillRect: X.fillRect, drawImage: X.drawImage, getImageData: X.getImageData,
+    fillStyle: property(X, 'fillStyle'), fillRect: X.fillRect, clearRect: X.clearRect, drawImage: X.drawImage,
+    getImageData: X.getImageData,
     getBoundingClientRect: E.getBoundingClientRect, innerWidth: property(window, 'innerWidth'), innerHeight: property(window, 'innerHeight'),
     clientLeft: property(E, 'clientLeft'), clientTop: property(E, 'clientTop'), clientWidth: property(E, 'clientWidth'), clientHeight: property(E, 'clientHeight'),
   };
@@ -29,17 +30,25 @@ export function pixelsScript() {
       : null;
   };
 
-  /** A 2D canvas of `canvas`'s size with `canvas` drawn on it, over `background` if one is given: { copy, c2, width, height }. */
+  // the one 2D canvas the reads draw on, kept from read to read (out of the page's reach): a new one
+  // a read cost the page 10-20 ms more (its pixels made and cleared again), some 500 reads a class
+  let copy = null, c2 = null;
+
+  /** The kept 2D canvas at `canvas`'s size with `canvas` drawn on it, over `background` if one is given, else over nothing (as a new canvas): { copy, c2, width, height }. */
   const copyOf = (canvas, background) => {
     const { width, height } = size(canvas);
-    const copy = N.createElement.call(document, 'canvas');
-    N.width.set.call(copy, width);
-    N.height.set.call(copy, height);
-    const c2 = N.getContext.call(copy, '2d', { willReadFrequently: true });
+    if (!copy) {
+      copy = N.createElement.call(document, 'canvas');
+      c2 = N.getContext.call(copy, '2d', { willReadFrequently: true });
+    }
+    if (N.width.get.call(copy) !== width || N.height.get.call(copy) !== height) {
+      N.width.set.call(copy, width);
+      N.height.set.call(copy, height);
+    }
     if (background) {
       N.fillStyle.set.call(c2, background);
       N.fillRect.call(c2, 0, 0, width, height);
-    }
+    } else N.clearRect.call(c2, 0, 0, width, height);
     N.drawImage.call(c2, canvas, 0, 0);
     return { copy, c2, width, height };
   };
