@@ -33,8 +33,9 @@ import { paramNames } from './steps.js';
  * @returns {Promise<{gl: WebGLRenderingContext|WebGL2RenderingContext|null, gpu: object|null,
  *   api: string, canvas: HTMLCanvasElement, state: Object, camera: Object, scene: Object, start: Function}>}
  */
-export async function openStep({ exercise, params, shading = 'normals', rmse = null }, { webgpu = false } = {}) {
-  const { values: state, notices } = readParams(paramNames({ params }), location.search, { shading: rmse });
+export async function openStep(step, { webgpu = false } = {}) {
+  const { exercise, shading = 'normals', rmse = null } = step;
+  const { values: state, notices } = readParams(paramNames(step), location.search, { shading: rmse });
   for (const text of notices) notify(text);
 
   const canvas = document.getElementById('gl-canvas');

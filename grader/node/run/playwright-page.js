@@ -175,7 +175,7 @@ export function pageDriver(page, log) {
      * The surface the last frame drew, per pixel (grader/browser/surface.js): its two pictures as
      * { width, height, data }. They leave the page deflated (the browser's CompressionStream: mostly
      * background, a tenth of the bytes or less, lossless), else as they are; the whole as one JSON
-     * string (handed over as values, its fit's ten thousand numbers cost the grader 80 ms a part).
+     * string (handed over as values, its fit's ten thousand numbers cost the grader 60-70 ms a call).
      */
     surface: async (opts) => {
       const r = JSON.parse(await page.evaluate(async (o) => {
