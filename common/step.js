@@ -25,16 +25,16 @@ import { paramNames } from './steps.js';
  * @param {object} step the step's entry in common/steps.js
  * @param {string} step.exercise e.g. 'WP04P3'
  * @param {string[]} step.params the parameters it has besides api, size and msaa (common/params.js)
- * @param {'normals'|'gouraud'|'phong'} [step.shading] as window.scene says it (default 'normals')
- * @param {'diffuse'|'gouraud'|'phong'} [step.rmse] which shading errors chooseLevel weighs
- *   (common/sphere.js shadingRmse, at the material's shininess); none: the silhouette alone sets the level
+ * @param {'normals'|'gouraud'|'phong'} step.shading as window.scene says it
+ * @param {null|'diffuse'|'gouraud'|'phong'} step.rmse which shading errors chooseLevel weighs
+ *   (common/sphere.js shadingRmse, at the material's shininess); null: the silhouette alone sets the level
  * @param {object} [how]
  * @param {boolean} [how.webgpu] the step's WebGPU script: a device instead of a WebGL context
  * @returns {Promise<{gl: WebGLRenderingContext|WebGL2RenderingContext|null, gpu: object|null,
  *   api: string, canvas: HTMLCanvasElement, state: Object, camera: Object, scene: Object, start: Function}>}
  */
 export async function openStep(step, { webgpu = false } = {}) {
-  const { exercise, shading = 'normals', rmse = null } = step;
+  const { exercise, shading, rmse } = step;
   const { values: state, notices } = readParams(paramNames(step), location.search, { shading: rmse });
   for (const text of notices) notify(text);
 

@@ -10,13 +10,13 @@ const LIT = ['height', 'near', 'far', 'level', 'orbit', 'angle', 'light', 'lx', 
 const PHONG_MODEL = [...LIT, 'ks', 's', 'La', 'model'];
 
 /**
- * @type {Record<string, {exercise: string, params: string[], shading?: 'gouraud'|'phong', rmse?: 'diffuse'|'gouraud'|'phong'}>}
- * shading: as window.scene says it (none: 'normals'); rmse: the shading errors chooseLevel weighs
- * (none: the silhouette alone sets the level).
+ * @type {Record<string, {exercise: string, params: string[], shading: 'normals'|'gouraud'|'phong', rmse: null|'diffuse'|'gouraud'|'phong'}>}
+ * shading: as window.scene says it; rmse: the shading errors chooseLevel weighs (null: the
+ * silhouette alone sets the level).
  */
 export const STEPS = {
-  WP04P1: { exercise: 'WP04P1', params: ['level'] },
-  WP04P2: { exercise: 'WP04P2', params: ['level', 'depth', 'cull', 'cw'] },
+  WP04P1: { exercise: 'WP04P1', params: ['level'], shading: 'normals', rmse: null },
+  WP04P2: { exercise: 'WP04P2', params: ['level', 'depth', 'cull', 'cw'], shading: 'normals', rmse: null },
   WP04P3: { exercise: 'WP04P3', params: LIT, shading: 'gouraud', rmse: 'diffuse' },
   WP04P4: { exercise: 'WP04P4', params: PHONG_MODEL, shading: 'gouraud', rmse: 'gouraud' },
   WP04P5: { exercise: 'WP04P5', params: PHONG_MODEL, shading: 'phong', rmse: 'phong' },

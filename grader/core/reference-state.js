@@ -50,13 +50,13 @@ export function referenceQuery({ width, height }, numbers, thresholds, extra = {
 export function referenceScene(part, query) {
   const step = Object.hasOwn(STEPS, part) ? STEPS[part] : null;
   if (!step) return null;
-  const { values } = readParams(paramNames(step), `?${query}`, { shading: step.rmse ?? null });
+  const { values } = readParams(paramNames(step), `?${query}`, { shading: step.rmse });
   const camera = cameraOf(values, values.size / (values.height ?? values.size));
   if ('angle' in values) {
     camera.eye[0] = EYE_DISTANCE * Math.sin(values.angle);
     camera.eye[2] = EYE_DISTANCE * Math.cos(values.angle);
   }
-  const scene = describeScene({ exercise: part, api: values.api, level: 0, camera, shading: step.shading ?? 'normals' }, values);
+  const scene = describeScene({ exercise: part, api: values.api, level: 0, camera, shading: step.shading }, values);
   return { scene, width: values.size, height: values.height ?? values.size };
 }
 
