@@ -17,8 +17,8 @@ const MOST_RUNS = 9;
 const repo = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..');
 const HELP = `usage: npm run bench:grader -- [--handins DIR] [--labels FILE] [--out DIR] [--workers N] [--runs N] [--json FILE]
 Grades a labelled class with npm run grade (Chromium) and prints seconds a part (median, p90,
-slowest), the wall time, the parts past the time bound, where the parts' time went and the
-agreement with the labels.
+slowest), the wall time, the parts past the time bound, where the parts' time went (by step and by
+page call) and the agreement with the labels.
   --handins DIR  the class (default ../shared/handins, or HANDINS_DIR)
   --labels FILE  its labels (default DIR/labels.tsv)
   --out DIR      where the grading goes (default a new temporary folder)

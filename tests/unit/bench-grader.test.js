@@ -39,7 +39,17 @@ test('where the time went: each step\'s seconds added up over the parts, most fi
     { name: 'a', part: 'WP04P3', verdict: 'fail', status: 'missing' },
   ] }] });
   assert.deepEqual(st.steps, [{ step: 'sampling the orbit', seconds: 2.5 }, { step: 'judging', seconds: 1.5 }, { step: 'waiting for the first frame', seconds: 1 }]);
-  assert.equal(statsLines(st, 10)[2], 'where the parts\' 5.0 s went: sampling the orbit 2.5 s, judging 1.5 s, waiting for the first frame 1.0 s');
+  assert.equal(statsLines(st, 10)[2], 'where the parts\' 5.0 s went: sampling the orbit 2.5 s, judging 1.5 s, waiting for the first frame 1.0 s');});
+
+test('where the time went by page call: each call\'s seconds and count added up over the parts, most seconds first', () => {
+  const part = (timing) => ({ name: 'a', part: 'WP04P1', seconds: 3, verdict: 'pass', status: 'graded', timing });
+  const st = gradingStats({ submissions: [{ parts: [
+    part({ snap: { ms: 500, calls: 8 }, tick: { ms: 900, calls: 10 } }),
+    part({ snap: { ms: 1000, calls: 12 }, open: { ms: 600, calls: 1 } }),
+    { name: 'a', part: 'WP04P3', verdict: 'fail', status: 'missing', timing: { open: { ms: 5000, calls: 1 } } },
+  ] }] });
+  assert.deepEqual(st.calls, [{ call: 'snap', calls: 20, seconds: 1.5 }, { call: 'tick', calls: 10, seconds: 0.9 }, { call: 'open', calls: 1, seconds: 0.6 }]);
+  assert.equal(statsLines(st, 10)[2], 'by page call: snap 1.5 s in 20, tick 0.9 s in 10, open 0.6 s in 1');
 });
 
 test('runs of the same grading: the median run\'s numbers (the lower middle of an even count), every run\'s wall time in the order run', () => {

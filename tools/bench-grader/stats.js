@@ -15,10 +15,11 @@ export function quantile(xs, q) {
 }
 
 /**
- * { parts, median, p90, max, slowest: [{ name, part, seconds }], notGraded, agreement, steps } from
- * a report (report.json). A part with no `seconds` (missing, linked) is not counted. `steps`: the
- * seconds of each step of the parts' gathering and judging, added up over the parts (their
- * `steps`), most first: [{ step, seconds }].
+ * { parts, median, p90, max, slowest: [{ name, part, seconds }], notGraded, agreement, steps, calls }
+ * from a report (report.json). A part with no `seconds` (missing, linked) is not counted. `steps`:
+ * the seconds of each step of the parts' gathering and judging, added up over the parts (their
+ * `steps`), most first: [{ step, seconds }]. `calls`: the same by page call (their `timing`: open,
+ * tick, snap, surface, ...), with how many: [{ call, calls, seconds }], most seconds first.
  */
 export function gradingStats(report) {
   const parts = report.submissions.flatMap((s) => s.parts).filter((p) => Number.isFinite(p.seconds));
@@ -36,7 +37,16 @@ export function gradingStats(report) {
   const bySteps = new Map();
   for (const p of parts) for (const [k, ms] of Object.entries(p.steps || {})) bySteps.set(k, (bySteps.get(k) || 0) + ms / MS_PER_SECOND);
   const steps = [...bySteps].map(([step, s]) => ({ step, seconds: s })).sort((a, b) => b.seconds - a.seconds);
-  return { parts: parts.length, median: quantile(seconds, 0.5), p90: quantile(seconds, 0.9), max: quantile(seconds, 1), slowest, notGraded, agreement, steps };
+  const byCall = new Map();
+  for (const p of parts) {
+    for (const [call, t] of Object.entries(p.timing || {})) {
+      const c = byCall.get(call) || byCall.set(call, { call, calls: 0, seconds: 0 }).get(call);
+      c.calls += t.calls;
+      c.seconds += t.ms / MS_PER_SECOND;
+    }
+  }
+  const calls = [...byCall.values()].sort((a, b) => b.seconds - a.seconds);
+  return { parts: parts.length, median: quantile(seconds, 0.5), p90: quantile(seconds, 0.9), max: quantile(seconds, 1), slowest, notGraded, agreement, steps, calls };
 }
 
 /**
@@ -57,6 +67,9 @@ export function statsLines(st, wallSeconds) {
   if (st.steps && st.steps.length) {
     const all = st.steps.reduce((t, s) => t + s.seconds, 0);
     lines.push(`where the parts' ${f(all)} s went: ${st.steps.slice(0, STEPS_SAID).map((s) => `${s.step} ${f(s.seconds)} s`).join(', ')}`);
+  }
+  if (st.calls && st.calls.length) {
+    lines.push(`by page call: ${st.calls.slice(0, STEPS_SAID).map((c) => `${c.call} ${f(c.seconds)} s in ${c.calls}`).join(', ')}`);
   }
   const a = st.agreement;
   if (a) lines.push(`labels: ${a.exact} of ${a.of} exact, correct parts passed ${a.correctPassed} of ${a.correct}, partial parts passed ${a.partialPassed}, broken parts passed ${a.brokenPassed}`);
