@@ -39,7 +39,8 @@ test('where the time went: each step\'s seconds added up over the parts, most fi
     { name: 'a', part: 'WP04P3', verdict: 'fail', status: 'missing' },
   ] }] });
   assert.deepEqual(st.steps, [{ step: 'sampling the orbit', seconds: 2.5 }, { step: 'judging', seconds: 1.5 }, { step: 'waiting for the first frame', seconds: 1 }]);
-  assert.equal(statsLines(st, 10)[2], 'where the parts\' 5.0 s went: sampling the orbit 2.5 s, judging 1.5 s, waiting for the first frame 1.0 s');});
+  assert.equal(statsLines(st, 10)[2], 'where the parts\' 5.0 s went: sampling the orbit 2.5 s, judging 1.5 s, waiting for the first frame 1.0 s');
+});
 
 test('where the time went by page call: each call\'s seconds and count added up over the parts, most seconds first', () => {
   const part = (timing) => ({ name: 'a', part: 'WP04P1', seconds: 3, verdict: 'pass', status: 'graded', timing });
