@@ -7,6 +7,7 @@
 
 import { watchInstancedDraws } from './instanced-draws.js';
 import { watchPresent } from './present.js';
+import { watchUnseenFrames } from './unseen-frames.js';
 
 /** window.__grade: what the parts below record, and state(), what the page interface reads of it. */
 function gradeState() {
@@ -85,6 +86,7 @@ function watchWebGL() {
     // the grader's experiment (g.noCull): the same frames drawn with culling off, so that with the
     // depth test on the faces nearest the viewer show, whichever way the mesh is wound
     const bare = (gl, draw, a) => {
+      if (g.unseen.skip(gl)) return undefined; // (a frame nobody looks at: unseen-frames.js)
       if (!(g.noCull && g.cullOn)) return draw.apply(gl, a);
       disable.call(gl, gl.CULL_FACE);
       try {
@@ -314,8 +316,8 @@ function controlsInterface() {
 }
 
 /** The parts, in the order they are installed (window.__grade first; the listeners' wrapper after the waits' own use of addEventListener). */
-export const INSTRUMENT_PARTS = [gradeState, watchContexts, watchPresent, watchWebGL, watchInstancedDraws, watchWaits,
-  watchListeners, controlsInterface];
+export const INSTRUMENT_PARTS = [gradeState, watchContexts, watchPresent, watchUnseenFrames, watchWebGL,
+  watchInstancedDraws, watchWaits, watchListeners, controlsInterface];
 
 /** The init script, as source: each part called in order (for addInitScript, evaluateOnNewDocument or a frame's script). */
 export const instrumentScript = INSTRUMENT_PARTS.map((part) => `(${part})();`).join('\n');

@@ -12,6 +12,15 @@ import { consoleScript } from '../../browser/console.js';
 import { tamperScript } from '../../browser/tamper.js';
 import { FROZEN, clockScript } from '../../browser/clock.js';
 
-/** The scripts' texts, in order; `webgpu`: the browser has WebGPU, and its frames are captured. */
-export const gradedPageScripts = ({ webgpu }) => [nativesInit, ...(webgpu ? [webgpuCaptureScript] : []),
-  drawBatchScript, instrumentScript, pixelsScript, consoleScript, recordersInit, clockScript(FROZEN), tamperScript];
+// the draws of WebGL frames nobody looks at left undone (grader/browser/unseen-frames.js)
+const skipUnseenScript = 'window.__grade.unseen.on = true;';
+
+/**
+ * The scripts' texts, in order; `webgpu`: the browser has WebGPU, and its frames are captured;
+ * `skipUnseen`: the draws of a frame another follows before the canvas is read are left undone.
+ */
+export const gradedPageScripts = ({ webgpu, skipUnseen = false }) => [
+  nativesInit, ...(webgpu ? [webgpuCaptureScript] : []), drawBatchScript, instrumentScript,
+  ...(skipUnseen ? [skipUnseenScript] : []), pixelsScript, consoleScript, recordersInit, clockScript(FROZEN),
+  tamperScript,
+];

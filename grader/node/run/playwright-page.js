@@ -28,14 +28,14 @@ const SNAPS_KEPT = 4;
  * The page before is left for an empty one first (a student's page may hold on, or run its frames
  * once more).
  */
-export function partOpener(browser, host) {
+export function partOpener(browser, host, { skipUnseen = false } = {}) {
   let kept = null; // { context, page, site }
   let n = 0;
   const keep = async () => {
     const site = { root: null, origin: null, log: { errors: [], blocked: [], notes: [] }, former: new Set() };
     const context = await browser.newContext({ viewport: { width: 1000, height: 1000 }, deviceScaleFactor: 1 });
     await serveSubmission(context, site);
-    for (const script of gradedPageScripts({ webgpu: true })) await context.addInitScript(script);
+    for (const script of gradedPageScripts({ webgpu: true, skipUnseen })) await context.addInitScript(script);
     const page = await context.newPage();
     page.on('popup', (popup) => {
       site.log.blocked.push(`popup: ${popup.url()}`);
@@ -85,13 +85,21 @@ export function partOpener(browser, host) {
       if (!response || !response.ok()) return { page, why: `the page answered ${response ? response.status() : 'nothing'}` };
       // (no wait for the network to go quiet: drive.js waits for the first draw call, which comes after
       // any shaders or models a page fetches)
-      return { page, driver: { ...pageDriver(page, log), shown: () => shownChannels(page) } };
+      const driver = { ...pageDriver(page, log), shown: () => shownChannels(page), unseen: () => unseenFrames(page) };
+      return { page, driver };
     },
     async done(clean) {
       if (!clean) await drop();
     },
   };
 }
+
+/** The frames' draws left undone so far ({ skipped, unsafe }: grader/browser/unseen-frames.js), or null. */
+const unseenFrames = (page) =>
+  page.evaluate(() => {
+    const u = window.__grade && window.__grade.unseen;
+    return u && u.on ? { skipped: u.skipped, unsafe: u.unsafe } : null;
+  });
 
 /**
  * A picture's two channels: the canvas as the page reads it back (its alpha kept), and as the

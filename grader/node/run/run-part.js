@@ -18,9 +18,43 @@ import { gradePart, addTime, addStep } from '../../core/grade-part.js';
 
 // the part's phases around its gathering and judging, as steps (result.steps)
 const PHASE_STEPS = { open: 'opening the page', write: 'writing the artifact', close: 'closing the page' };
+/** The step of a part gathered again with every frame drawn (its skipped frames could have shown: unseen-frames.js). */
+export const EVERY_FRAME_STEP = 'gathering again with every frame drawn';
 
 // the message of an error thrown because Playwright's time bound closed the part's page (the result stays 'timeout')
 const CLOSED = /Test ended|Target page, context or browser has been closed/;
+
+/**
+ * What stays if the time bound stops the part at the gathering's step `what`: past its first frame
+ * the page draws, and a page that draws is too slow here, not broken (the rubric's tooSlowVerdict).
+ */
+const progressOf = (result, rubric, save) => (what) => {
+  if (what === FIRST_FRAME) withFindings(result, [stoppedAtFirstFrame(rubric, what)]);
+  else {
+    const slow = tooSlow(rubric, tooSlowWords(rubric, what));
+    withFindings(Object.assign(result, { verdict: slow.level, status: 'too slow' }), [slow]);
+  }
+  save(result);
+};
+
+/**
+ * The part gathered and judged on `opened`'s page (`gather`: gradePart), and, where draws of frames
+ * left undone could have shown (grader/browser/unseen-frames.js), gathered again on a page of
+ * openers.everyFrame with every frame drawn (`open`: the part opened by an opener), so that what is
+ * gathered never depends on the skipping. { graded, opener }: the opener whose page is open now.
+ */
+export async function gatherDrawn({ opened, opener, openers, open, gather, steps }) {
+  const graded = await gather(opened.driver);
+  const unseen = openers.everyFrame && opened.driver.unseen ? await opened.driver.unseen() : null;
+  if (!(unseen && unseen.unsafe)) return { graded, opener };
+  const t0 = Date.now();
+  await opener.done(true);
+  const again = await open(openers.everyFrame);
+  if (again.why) throw new Error(`the page could not be opened again to draw every frame: ${again.why}`);
+  const drawn = await gather(again.driver);
+  addStep(steps, EVERY_FRAME_STEP, Date.now() - t0);
+  return { graded: drawn, opener: openers.everyFrame };
+}
 
 /**
  * Grades `item` of `plan` with `openers` ({ student }): writes item.resultFile (first as a
@@ -63,25 +97,25 @@ export async function runPart({ item, plan, openers, browserVersion = null, over
   const phase = (what, t0, ms = Date.now() - t0) => {
     addTime(timing, what, ms); addStep(steps, PHASE_STEPS[what], ms);
   };
+  let opener = openers && openers.student;
   try {
     const t0 = Date.now();
     const { root, page: rel } = item;
-    const opened = await openers.student.open({ root, rel, loadSeconds: rubric.loadSeconds, log: result });
+    // what the page has said so far (a page opened again says it again)
+    const said = { errors: result.errors.length, blocked: result.blocked.length, notes: result.notes.length };
+    const open = (o) => {
+      for (const k of Object.keys(said)) result[k].length = said[k];
+      return o.open({ root, rel, loadSeconds: rubric.loadSeconds, log: result });
+    };
+    const opened = await open(opener);
     phase('open', t0);
     if (opened.why) Object.assign(graded, asFail(notOpened(opened.why)));
     else {
       // what has been done so far stays in the result if the time bound stops the part
       const deadline = deadlineOf(started, rubric);
-      graded = await gradePart(opened.driver, { part: item.part, rubric, deadline, timing, steps, progress: (what) => {
-        // what stays if the time bound stops the part now: past its first frame the page draws, and
-        // a page that draws is too slow here, not broken (the rubric's tooSlowVerdict)
-        if (what === FIRST_FRAME) withFindings(result, [stoppedAtFirstFrame(rubric, what)]);
-        else {
-          const slow = tooSlow(rubric, tooSlowWords(rubric, what));
-          withFindings(Object.assign(result, { verdict: slow.level, status: 'too slow' }), [slow]);
-        }
-        save(result);
-      } });
+      const progress = progressOf(result, rubric, save);
+      const gather = (driver) => gradePart(driver, { part: item.part, rubric, deadline, timing, steps, progress });
+      ({ graded, opener } = await gatherDrawn({ opened, opener, openers, open, gather, steps }));
       const t0 = Date.now();
       const { facts, images } = graded.artifact;
       if (over()) return;
@@ -102,7 +136,7 @@ export async function runPart({ item, plan, openers, browserVersion = null, over
     if (process.env.GRADE_DEBUG) console.error(err);
   } finally {
     const t0 = Date.now();
-    if (!over()) await openers.student.done(clean);
+    if (!over()) await opener.done(clean);
     phase('close', t0);
   }
   applyAudit(result, graded, files);
