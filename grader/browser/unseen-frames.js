@@ -21,11 +21,11 @@
 /** window.__grade.unseen: { on, skipped, unsafe, frame(at, unseen), endFrame(), endRun(), skip(gl) }. */
 export function watchUnseenFrames() {
   const g = window.__grade;
-  const state = new WeakMap(); // context → { clearedAt, drewAt, clearsFirst, dirty }
+  const state = new WeakMap(); // context → { clearedAt, drewAt, clearsFirst }
   const dirty = new Set(); // contexts with skipped draws not yet cleared away
   const stateOf = (gl) => {
     let s = state.get(gl);
-    if (!s) state.set(gl, (s = { clearedAt: null, drewAt: null, clearsFirst: null, dirty: false }));
+    if (!s) state.set(gl, (s = { clearedAt: null, drewAt: null, clearsFirst: null }));
     return s;
   };
   const U = {
@@ -53,7 +53,6 @@ export function watchUnseenFrames() {
       }
       if (U.unseen && U.at !== null && s.clearsFirst && s.clearedAt === U.at) {
         U.skipped++;
-        s.dirty = true;
         dirty.add(gl);
         return true;
       }
@@ -63,8 +62,7 @@ export function watchUnseenFrames() {
   };
   // a draw to the canvas, or a read of it, over skipped draws: what skipping changed could show
   const seen = (gl, what) => {
-    const s = state.get(gl);
-    if (s && s.dirty && !U.unsafe) U.unsafe = `${what} after skipped draws with no whole clear between`;
+    if (dirty.has(gl) && !U.unsafe) U.unsafe = `${what} after skipped draws with no whole clear between`;
   };
   Object.defineProperty(g, 'unseen', { value: U });
   const protos = [window.WebGLRenderingContext, window.WebGL2RenderingContext].filter(Boolean).map((c) => c.prototype);
@@ -79,7 +77,6 @@ export function watchUnseenFrames() {
         const s = stateOf(this);
         if (whole) {
           if (U.at !== null && s.drewAt !== U.at) s.clearedAt = U.at;
-          s.dirty = false;
           dirty.delete(this);
         }
       }
