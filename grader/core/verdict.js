@@ -9,12 +9,17 @@ import { MILLION } from './units.js';
  */
 export const NOT_GRADED = 'not graded here';
 
+/** What the words of a part past a bound say was judged, unless a mistake was found before it. */
+const NOTHING_JUDGED = 'nothing was judged';
+
 /** Why a part past the rubric's wall-clock bound while `doing` was not judged. */
-export const tooSlowWords = (rubric, doing) => `too slow on this machine: the rubric's bound of ${rubric.timeoutSeconds} s ran out while ${doing}; nothing was judged (what was done is listed under what the grader did; grade it again on a faster machine, or with a larger timeoutSeconds)`;
+export const tooSlowWords = (rubric, doing, judged = NOTHING_JUDGED) => `too slow on this machine: the rubric's bound of ${rubric.timeoutSeconds} s ran out while ${doing}; ${judged} (what was done is listed under what the grader did; grade it again on a faster machine, or with a larger timeoutSeconds)`;
 
 /** Why a part whose own work passed the rubric's gatherWork (a count: the same on every machine) is not judged. */
-export const tooHeavyWords = (rubric, doing, work) =>
-  `too heavy to grade: the page's own work over the grading (${(work / MILLION).toFixed(0)} million vertices, draw calls at ${rubric.thresholds.drawCallWork} each) passed the rubric's budget of ${(rubric.thresholds.gatherWork / MILLION).toFixed(0)} million (gatherWork) while ${doing}; nothing was judged (what was done is listed under what the grader did; grade it with a larger gatherWork, or at a level the sphere needs)`;
+export const tooHeavyWords = (rubric, doing, work, judged = NOTHING_JUDGED) => {
+  const { drawCallWork, gatherWork } = rubric.thresholds;
+  return `too heavy to grade: the page's own work over the grading (${(work / MILLION).toFixed(0)} million vertices, draw calls at ${drawCallWork} each) passed the rubric's budget of ${(gatherWork / MILLION).toFixed(0)} million (gatherWork) while ${doing}; ${judged} (what was done is listed under what the grader did; grade it with a larger gatherWork, or at a level the sphere needs)`;
+};
 
 /**
  * A list of checks with the rubric's cost of a mistake: sayAs(id) gives the audit `id`'s

@@ -4,10 +4,13 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
+import path from 'node:path';
 import { auditPart } from '../../grader/core/audit.js';
 import { applyAudit } from '../../grader/core/part-result.js';
 import { mergeRubric } from '../../grader/core/rubric.js';
 import { NOT_GRADED } from '../../grader/core/verdict.js';
+import { readArtifact } from '../../grader/node/run/artifacts.js';
+import { RECORDED } from '../fixtures/record.js';
 
 const rubric = JSON.parse(readFileSync(new URL('../../grader/core/rubric.json', import.meta.url), 'utf8'));
 const artifact = { facts: { part: 'WP04P5', tooSlow: 'sampling the orbit', errors: [] }, images: {} };
@@ -48,4 +51,31 @@ test('too heavy: the page\'s own work over the gathering passes gatherWork at th
   assert.equal(result.verdict, NOT_GRADED);
   assert.equal(result.status, 'too heavy');
   assert.match(result.reasons[0], /^not graded here: too heavy to grade: the page's own work over the grading \(1012 million vertices, draw calls at 80 each\) passed the rubric's budget of 1000 million \(gatherWork\) while climbing the levels/);
+});
+
+// What a gathering holds when it stops on the work budget while looking all round, taken from a
+// recorded fixture part: its first frames, its controls and the mesh it sent then (the orbit's first
+// watch reads it); nothing of the views, levels and trials that come later.
+const EARLY = ['schema', 'part', 'api', 'canvas', 'actions', 'controls', 'first', 'shown', 'frameDraws', 'geometryAtFirst', 'sources', 'errors', 'blocked', 'notes'];
+function stoppedEarly(name, part) {
+  const { facts } = readArtifact(path.join(RECORDED, name, part));
+  const early = Object.fromEntries(EARLY.filter((k) => k in facts).map((k) => [k, facts[k]]));
+  return { facts: { ...early, tooSlow: 'looking all round', tooHeavy: 1044e6 }, images: {} };
+}
+
+test('a mistake read from what the page sent before the bound stands: review with it, and the rest said not judged', () => {
+  // ronja's P3 appends its sphere to its array every frame (tests/fixtures/handins/ronja)
+  const result = applyAudit({ errors: [] }, auditPart(stoppedEarly('ronja', 'WP04P3'), rubric));
+  assert.equal(result.verdict, 'review');
+  assert.equal(result.status, 'too heavy');
+  const asked = result.findings.filter((f) => f.level === 'review');
+  assert.deepEqual(asked.map((f) => f.id), ['growth', 'too-slow']);
+  assert.match(asked[0].reason, /the page draws more every frame/);
+  assert.match(asked[1].reason, /^REVIEW: the rest was not judged: too heavy to grade: the page's own work over the grading \(1044 million vertices.* while looking all round; only what the page sent before was read \(growth\)/);
+});
+
+test('nothing wrong in what the page sent before the bound: not graded here, as before', () => {
+  const result = applyAudit({ errors: [] }, auditPart(stoppedEarly('anna', 'WP04P3'), rubric));
+  assert.equal(result.verdict, NOT_GRADED);
+  assert.match(result.reasons[0], /^not graded here: too heavy to grade: .* while looking all round; nothing was judged/);
 });
