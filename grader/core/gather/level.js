@@ -122,6 +122,31 @@ async function levelKeys(session, levelBy) {
   }
 }
 
+/**
+ * Buttons that change how much the page draws a frame: a subdivision draws four times the triangles
+ * of the level before, a coarsening a quarter. Each click's frame is held to the frame before it
+ * (the vertices it drew, session.frameVertices), so a page that
+ * never stands still, or whose mesh grows a little every frame, shows its level controls all the
+ * same. Named for the level first; the rubric's maxControlTrials bounds the clicks.
+ */
+async function levelButtonsByDraws(session, clickables, levelBy) {
+  const { thresholds, patterns } = session;
+  const ratio = thresholds.levelWorkRatio;
+  let tried = 0;
+  for (const c of trialOrder(clickables, 'subdivide', patterns, session.taken).filter((x) => x.type !== 'checkbox')) {
+    if ((levelBy.subdivide && levelBy.coarsen) || tried >= thresholds.maxControlTrials) break;
+    tried++;
+    const before = session.frameVertices;
+    if (!await session.press(c, 'a control') || !(before > 0)) continue;
+    const after = session.frameVertices;
+    const role = after >= ratio * before ? 'subdivide' : after * ratio <= before ? 'coarsen' : null;
+    session.act(`  → the page draws ${Math.round(before)} → ${Math.round(after)} vertices a frame${role ? ` (${role === 'subdivide' ? 'finer' : 'coarser'})` : ''}`);
+    if (!role || levelBy[role]) continue;
+    levelBy[role] = { c, act: () => session.press(c, 'a control') };
+    session.assign(role, c, role === 'subdivide' ? 'more-drawn' : 'less-drawn');
+  }
+}
+
 /** Finds the level controls: session.level = { subdivide, coarsen } ({ act }) and session.levelSlider. */
 export async function findLevel(session, controls) {
   const { patterns } = session;
@@ -136,15 +161,17 @@ export async function findLevel(session, controls) {
     if (!levelBy.subdivide) session.levelSlider = await levelSliderByEffect(session, valued);
     if (!levelBy.subdivide && !session.levelSlider) await levelKeys(session, levelBy);
   } else {
-    // the picture never stood still: the level controls are taken by their names (the ladder
-    // shows whether the sphere gets rounder)
+    // the picture never stood still: the level controls are found by what a click changes in the
+    // page's draws, whatever the picture does, and else taken by their names (the ladder shows
+    // whether the sphere gets rounder)
+    await levelButtonsByDraws(session, clickables, levelBy);
     for (const c of clickables) {
       const role = nameRole(c, patterns);
       if ((role === 'subdivide' || role === 'coarsen') && !levelBy[role] && !session.taken.has(c.index)) {
         levelBy[role] = { c, act: () => session.press(c, 'a control') };
+        session.assign(role, c, 'by-name');
       }
     }
-    for (const role of ['subdivide', 'coarsen']) if (levelBy[role]) session.assign(role, levelBy[role].c, 'by-name');
     const c = levelBy.subdivide ? null : valued.find((x) => !session.taken.has(x.index) && nameRole(x, patterns) === 'levelSlider');
     if (c) {
       session.levelSlider = c;

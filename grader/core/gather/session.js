@@ -86,8 +86,8 @@ export function openSession(page, { part, rubric, progress = () => {}, deadline 
     trialsMade: 0,
     values: new Map(), // control index → the value we left it at (a slider lowered to make the shading visible stays lowered)
     // what a frame of this page costs, in its own work (vertices, and draw calls at drawCallWork
-    // vertices each), from the last frames run
-    frameWork: 0,
+    // vertices each), from the last frames run; and its vertices alone (what a level changes)
+    frameWork: 0, frameVertices: 0,
     // the page's draws an animation frame and its animation loops, from the last frames run (the clock's
     // count of frames, where the driver has it): { loops, draws } or null
     frameDraws: null,
@@ -105,7 +105,8 @@ export function openSession(page, { part, rubric, progress = () => {}, deadline 
       session.outOfTime();
       const s = await page.tick(ms, frames); // (the state the frames left)
       const w = facts.work;
-      session.frameWork = ((s.vertices - w.vertices) + thresholds.drawCallWork * (s.draws - w.draws)) / (frames + 1);
+      const n = frames + 1, v = (s.vertices - w.vertices) / n;
+      Object.assign(session, { frameVertices: v, frameWork: v + (thresholds.drawCallWork * (s.draws - w.draws)) / n });
       const a = s.animation, ran = a ? a.count - session.animationFrames : 0;
       if (ran > 0) {
         const perFrame = (HUNDREDTHS * (s.draws - w.draws)) / ran;
