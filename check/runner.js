@@ -147,5 +147,6 @@ export async function checkPart({ part, page, session, rubric, stage, progress =
 export function drawReference({ result, rubric }) {
   const judged = result.images.judged;
   if (!judged || result.verdict === 'fail') return null;
-  return referencePicture(result.part, referenceQuery(judged, result.numbers, rubric.thresholds, {}), judged).img;
+  const query = referenceQuery(judged, result.numbers, rubric.thresholds, {}, result.part);
+  return referencePicture(result.part, query, judged).img;
 }

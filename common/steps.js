@@ -10,12 +10,14 @@ const LIT = ['height', 'near', 'far', 'level', 'orbit', 'angle', 'light', 'lx', 
 const PHONG_MODEL = [...LIT, 'ks', 's', 'La', 'model'];
 
 /**
- * @type {Record<string, {exercise: string, params: string[], shading: 'normals'|'gouraud'|'phong', rmse: null|'diffuse'|'gouraud'|'phong'}>}
+ * @type {Record<string, {exercise: string, params: string[], shading: 'normals'|'gouraud'|'phong', rmse: null|'diffuse'|'gouraud'|'phong', inOrder?: true}>}
  * shading: as window.scene says it; rmse: the shading errors chooseLevel weighs (null: the
- * silhouette alone sets the level).
+ * silhouette alone sets the level); inOrder: the page draws with neither the depth test nor
+ * culling (the slides' WP04P1), so the face that shows is the last one drawn and its reference is
+ * its mesh drawn in order (common/mesh-render.js), not the exact sphere.
  */
 export const STEPS = {
-  WP04P1: { exercise: 'WP04P1', params: ['level'], shading: 'normals', rmse: null },
+  WP04P1: { exercise: 'WP04P1', params: ['level'], shading: 'normals', rmse: null, inOrder: true },
   WP04P2: { exercise: 'WP04P2', params: ['level', 'depth', 'cull', 'cw'], shading: 'normals', rmse: null },
   WP04P3: { exercise: 'WP04P3', params: LIT, shading: 'gouraud', rmse: 'diffuse' },
   WP04P4: { exercise: 'WP04P4', params: PHONG_MODEL, shading: 'gouraud', rmse: 'gouraud' },

@@ -8,7 +8,22 @@ import { readParams } from '../../common/params.js';
 import { cameraOf, describeScene } from '../../common/scene.js';
 import { EYE_DISTANCE } from '../../common/course.js';
 import { renderReference, toRGBA8 } from '../../common/exact-render.js';
+import { renderMeshInOrder } from '../../common/mesh-render.js';
+import { sphereMesh, MAX_LEVEL } from '../../common/sphere.js';
 import { STEPS, paramNames } from '../../common/steps.js';
+
+/** Our step for `part` (common/steps.js), or null. */
+const stepOf = (part) => (Object.hasOwn(STEPS, part) ? STEPS[part] : null);
+
+/**
+ * The level of our sphere with as many triangles as the page sent at its judged level (numbers.geometry,
+ * from its calls: 4·4^level), as { level }; {} where its mesh is not one of ours.
+ */
+export function meshLevel(numbers) {
+  const triangles = numbers && numbers.geometry ? numbers.geometry.triangles : null;
+  for (let level = 0; level <= MAX_LEVEL; level++) if (triangles === 4 * 4 ** level) return { level };
+  return {};
+}
 
 /**
  * Our reference's light, as the judge fitted the student's (P3–P5): the fitted direction toward the
@@ -27,9 +42,13 @@ export function referenceLight(numbers, thresholds) {
   return { light: 'directional', ...xyz(fit.light.map((v) => -v)) };
 }
 
-/** The query our part is opened with: the student's canvas size, no orbit, the fitted light, and the rubric's own extras. */
-export function referenceQuery({ width, height }, numbers, thresholds, extra = {}) {
+/**
+ * The query our part is opened with: the student's canvas size, no orbit, the fitted light, for a
+ * step drawn in order (WP04P1) the level of the page's own mesh, and the rubric's own extras.
+ */
+export function referenceQuery({ width, height }, numbers, thresholds, extra = {}, part = null) {
   const fitted = referenceLight(numbers, thresholds);
+  const step = stepOf(part);
   return new URLSearchParams({
     api: 'webgl2',
     size: width,
@@ -37,6 +56,7 @@ export function referenceQuery({ width, height }, numbers, thresholds, extra = {
     orbit: 0,
     ...(fitted.light ? { angle: 0 } : {}),
     ...fitted,
+    ...(step && step.inOrder ? meshLevel(numbers) : {}),
     ...extra,
   });
 }
@@ -48,7 +68,7 @@ export function referenceQuery({ width, height }, numbers, thresholds, extra = {
  * part we have no step for.
  */
 export function referenceScene(part, query) {
-  const step = Object.hasOwn(STEPS, part) ? STEPS[part] : null;
+  const step = stepOf(part);
   if (!step) return null;
   const { values } = readParams(paramNames(step), `?${query}`, { shading: step.rmse });
   const camera = cameraOf(values, values.size / (values.height ?? values.size));
@@ -63,7 +83,9 @@ export function referenceScene(part, query) {
 /**
  * Our reference for `part` beside the judged picture: the exact render of the scene our page
  * shows for `query` (common/exact-render.js: the unit sphere hit per pixel centre, the slide's
- * formula evaluated there; our pages agree with it within tests/browser/bounds.js's tolerances).
+ * formula evaluated there; our pages agree with it within tests/browser/bounds.js's tolerances),
+ * or, for a step drawn with neither the depth test nor culling (WP04P1), our mesh at the query's
+ * level drawn in order, as the browser draws it (common/mesh-render.js).
  * The same in the grader and on the check page, in any browser or none. { img, scene, why }: img
  * null where nothing comparable is drawn, `why` then says so.
  */
@@ -74,16 +96,23 @@ export function referencePicture(part, query, judged) {
   if (width !== judged.width || height !== judged.height) {
     return { img: null, scene, why: `our ${part} draws ${width}×${height} for this canvas, not ${judged.width}×${judged.height}: not compared` };
   }
-  const ref = renderReference(scene, width, height);
+  const ref = stepOf(part).inOrder
+    ? renderMeshInOrder(scene, sphereMesh(scene.level), width, height) : renderReference(scene, width, height);
   return { img: { width, height, data: toRGBA8(ref) }, scene, why: null };
 }
 
-/** The state our reference was drawn at, for report.json: its light (and where it came from); no level, the sphere is exact. */
-export function referenceStateOf(query) {
+/**
+ * The state our reference was drawn at, for report.json: its light (and where it came from); no
+ * level where the sphere is exact, else the level of the mesh drawn in order (`scene`'s).
+ */
+export function referenceStateOf(query, scene = null) {
   const q = Object.fromEntries(query.entries());
+  const inOrder = scene && stepOf(scene.exercise) && stepOf(scene.exercise).inOrder;
   return {
-    level: null,
-    levelFrom: 'none: the exact sphere, the slide\'s formula evaluated at each pixel (no mesh)',
+    level: inOrder ? scene.level : null,
+    levelFrom: inOrder
+      ? `our mesh drawn in order with no depth test, as our ${scene.exercise} draws it, at ${q.level !== undefined ? 'the level of the page\'s own mesh (the triangles it sent)' : 'our page\'s own level for this size'}`
+      : 'none: the exact sphere, the slide\'s formula evaluated at each pixel (no mesh)',
     light: q.light ? { kind: q.light, xyz: [q.lx, q.ly, q.lz].map(Number) } : null,
     lightFrom: q.light ? 'the light direction (or near point light) the judge fitted to the judged picture, in our view at angle 0' : 'none (no lit step)',
     query: query.toString(),

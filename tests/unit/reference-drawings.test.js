@@ -1,6 +1,6 @@
-// Our reference beside a student's picture: the exact render (common/exact-render.js) of the scene
-// our page shows for the query, at the student's canvas size, lit from the fitted light; kept per
-// query by a worker for the parts that ask again. The scenes here are written out from the slides'
+// Our reference beside a student's picture: the exact render (common/exact-render.js; WP04P1: our
+// mesh drawn in order, common/mesh-render.js) of the scene our page shows for the query, at the
+// student's canvas size, lit from the fitted light; kept per query by a worker for the parts that ask again. The scenes here are written out from the slides'
 // defaults (common/params.js: kd 0.8, ks 0.5, s 40, Le 1, La 0.2; the eye at (0, 0, 3), 45°), not
 // read from the module under test.
 import { test, beforeEach, after } from 'node:test';
@@ -12,6 +12,8 @@ import { drawReference, forgetDrawings, REFERENCE_STEP } from '../../grader/node
 import { decodePng } from '../../grader/node/run/png.js';
 import { mergeRubric } from '../../grader/core/rubric.js';
 import { renderReference, toRGBA8 } from '../../common/exact-render.js';
+import { renderMeshInOrder } from '../../common/mesh-render.js';
+import { sphereMesh } from '../../common/sphere.js';
 
 const RUBRIC = mergeRubric(JSON.parse(readFileSync(new URL('../../grader/core/rubric.json', import.meta.url), 'utf8')), {});
 const dir = mkdtempSync(path.join(os.tmpdir(), 'reference-'));
@@ -42,13 +44,24 @@ async function compared(name, part, width, { height = width, numbers = {} } = {}
 const referenceOf = (name, part) => decodePng(readFileSync(path.join(dir, name, `${part}-reference.png`)));
 const camera = (aspect) => ({ eye: [0, 0, 3], at: [0, 0, 0], up: [0, 1, 0], fovy: 45, aspect, near: 0.1, far: 10 });
 
-test('WP04P1: the exact sphere in the normals\' colours, at the judged canvas\'s size', async () => {
-  const r = await compared('ada', 'WP04P1', 40);
-  const expected = renderReference({ shading: 'normals', camera: camera(1) }, 40, 40);
+test('WP04P1: our mesh at the level of the page\'s own, drawn in order with no depth test, in the normals\' colours', async () => {
+  // the page sent 4·4^3 triangles: our level 3, drawn as our WP04P1 draws it (the last face drawn shows)
+  const r = await compared('ada', 'WP04P1', 40, { numbers: { geometry: { triangles: 256 } } });
+  const expected = renderMeshInOrder({ camera: camera(1) }, sphereMesh(3), 40, 40);
   assert.deepEqual(referenceOf('ada', 'WP04P1').data, new Uint8Array(toRGBA8(expected).buffer));
   assert.ok(Number.isFinite(r.rmse) && r.rmse > 0);
-  assert.deepEqual(r.referenceState.level, null, 'no mesh, no level');
+  assert.deepEqual(r.referenceState.level, 3);
+  assert.match(r.referenceState.levelFrom, /the level of the page's own mesh/);
   assert.equal(r.referenceState.light, null);
+  // not the exact sphere: the depth test is what the slides' first step leaves out
+  assert.notDeepEqual(referenceOf('ada', 'WP04P1').data, new Uint8Array(toRGBA8(renderReference({ shading: 'normals', camera: camera(1) }, 40, 40)).buffer));
+});
+
+test('WP04P2: the exact sphere in the normals\' colours, no level', async () => {
+  const r = await compared('ada', 'WP04P2', 40, { numbers: { geometry: { triangles: 256 } } });
+  const expected = renderReference({ shading: 'normals', camera: camera(1) }, 40, 40);
+  assert.deepEqual(referenceOf('ada', 'WP04P2').data, new Uint8Array(toRGBA8(expected).buffer));
+  assert.deepEqual(r.referenceState.level, null, 'no mesh, no level');
 });
 
 test('WP04P4: the slide\'s Phong reflection model with its defaults, lit from the fitted light', async () => {

@@ -41,17 +41,19 @@ export async function drawReference(args) {
 
 function compareWithOurs({ item, plan, result, graded }) {
   const judged = graded.images.judged;
-  const query = referenceQuery(judged, result.numbers, plan.rubric.thresholds, item.referenceQuery);
+  const query = referenceQuery(judged, result.numbers, plan.rubric.thresholds, item.referenceQuery, item.part);
   const key = `${item.part}?${query}`;
   let drawing = drawings.get(key);
   if (!drawing) drawings.set(key, (drawing = referencePicture(item.part, query, judged)));
   if (drawing.why) result.notes.push(drawing.why);
-  if (drawing.scene) result.referenceState = referenceStateOf(query);
+  if (drawing.scene) result.referenceState = referenceStateOf(query, drawing.scene);
   if (!drawing.img) return;
   const cmp = compareImages(drawing.img, judged);
   const { mismatch, rmse, comparison, mismatchFull, mismatchObject } = cmp;
   Object.assign(result, { mismatch, rmse, comparison, mismatchFull, mismatchObject });
-  result.notes.push(...cmp.notes, `the reference is the exact sphere our page shows at the same canvas size${result.referenceState && result.referenceState.light ? ', lit from the fitted light' : ''}; the difference is evidence, the verdict comes from the checks`);
+  const ours = result.referenceState && result.referenceState.level !== null
+    ? `our ${item.part} as it draws (its mesh at level ${result.referenceState.level}, in order, no depth test)` : 'the exact sphere our page shows';
+  result.notes.push(...cmp.notes, `the reference is ${ours} at the same canvas size${result.referenceState && result.referenceState.light ? ', lit from the fitted light' : ''}; the difference is evidence, the verdict comes from the checks`);
   const dir = path.dirname(item.resultFile);
   const stem = path.basename(item.resultFile, '.json');
   const reference = path.join(dir, `${stem}-reference.png`), diff = path.join(dir, `${stem}-diff.png`);
