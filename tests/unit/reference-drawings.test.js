@@ -1,8 +1,8 @@
 // Our reference beside a student's picture: the exact render (common/exact-render.js; WP04P1: our
 // mesh drawn in order, common/mesh-render.js) of the scene our page shows for the query, at the
-// student's canvas size, lit from the fitted light; kept per query by a worker for the parts that ask again. The scenes here are written out from the slides'
-// defaults (common/params.js: kd 0.8, ks 0.5, s 40, Le 1, La 0.2; the eye at (0, 0, 3), 45°), not
-// read from the module under test.
+// student's canvas size, lit from the fitted light; kept per query by a worker for the parts that
+// ask again. The scenes here are written out from the slides' defaults (common/params.js: kd 0.8,
+// ks 0.5, s 40, Le 1, La 0.2; the eye at (0, 0, 3), 45°), not read from the module under test.
 import { test, beforeEach, after } from 'node:test';
 import assert from 'node:assert/strict';
 import { mkdtempSync, mkdirSync, readFileSync, rmSync } from 'node:fs';
