@@ -36,6 +36,7 @@ import { UNIT as orbitLight } from './units/orbit-light.js';
 import { UNIT as pointLight } from './units/point-light.js';
 import { UNIT as highlight } from './units/highlight.js';
 import { UNIT as sliders } from './units/sliders.js';
+import { UNIT as termControls } from './units/term-controls.js';
 import { UNIT as leastS } from './units/least-s.js';
 import { UNIT as perFragment } from './units/per-fragment.js';
 import { UNIT as highlightPlace } from './units/highlight-place.js';
@@ -79,6 +80,7 @@ const ORDER = [
   pointLight,
   highlight,
   sliders,
+  termControls,
   leastS,
   perFragment,
   highlightPlace,
