@@ -65,3 +65,18 @@ test('the normal colour as the material, multiplying the lighting, is named as s
   assert.equal(times.best.tint, 'times', times.best.name);
   assert.ok(degreesBetween(times.best.wi, wi) < 3);
 });
+
+test('where the page\'s surface could not be read, the part says its lighting was judged on the outline, and why', async () => {
+  const { auditPart } = await import('../../grader/core/audit.js');
+  const { readArtifact } = await import('../../grader/node/run/artifacts.js');
+  const { RECORDED } = await import('../fixtures/record.js');
+  const path = await import('node:path');
+  const rubric = JSON.parse(readFileSync(new URL('../../grader/core/rubric.json', import.meta.url), 'utf8'));
+  // quinn's P3 makes its positions in the vertex shader: its geometry is not drawn again
+  const said = auditPart(readArtifact(path.join(RECORDED, 'quinn', 'WP04P3')), rubric).checks.filter((c) => c.id === 'surface-fit');
+  assert.deepEqual(said.map((c) => c.level), ['pass']);
+  assert.match(said[0].reason, /^note: the lighting was judged on the outline \(a sphere assumed from the silhouette\), not on the page's own surface: the page's geometry could not be drawn again/);
+  // a part whose surface was read says nothing of the kind
+  const read = auditPart(readArtifact(path.join(RECORDED, 'anna', 'WP04P3')), rubric).checks.filter((c) => /judged on the outline/.test(c.reason));
+  assert.deepEqual(read, []);
+});

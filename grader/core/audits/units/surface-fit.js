@@ -7,7 +7,7 @@ import { unit } from '../unit.js';
 
 /** The audit this unit says: id → title, the slide's sentence it checks, the artifacts it reads. */
 export const META = {
-  'surface-fit': { title: 'The lighting on the page\'s own surface', slide: SLIDE.eye, failureTitle: 'A known misreading explains the lighting on the page\'s own surface', description: 'Fits the slide\'s model and its known misreadings on each pixel\'s normal and position as the page drew them; a note where a misreading explains the picture better by the rubric\'s margin.', reads: ['facts.surface', 'images.judged'] },
+  'surface-fit': { title: 'The lighting on the page\'s own surface', slide: SLIDE.eye, failureTitle: 'A known misreading explains the lighting on the page\'s own surface', description: 'Fits the slide\'s model and its known misreadings on each pixel\'s normal and position as the page drew them; a note where a misreading explains the picture better by the rubric\'s margin, and where the surface could not be read, a note that the lighting was judged on the outline and why.', reads: ['facts.surface', 'images.judged'] },
 };
 
 /** How many of the fitted variants the numbers keep: what the report shows, not a bound. */
@@ -28,9 +28,13 @@ function inWords(best) {
   return out.join('; ');
 }
 
-/** Says, as a note, which misreading the page's own surface shows, where one explains the picture better than the slide's formula. */
+/** Says, as a note, which misreading the page's own surface shows, where one explains the picture better than the slide's formula; or that the lighting was judged on the outline, and why. */
 export function auditSurfaceFit({ sayAs }, exact) {
-  if (!exact || exact.why || !exact.slide) return;
+  if (exact && exact.why) {
+    sayAs('surface-fit')('pass', `note: the lighting was judged on the outline (a sphere assumed from the silhouette), not on the page's own surface: ${exact.why}`);
+    return;
+  }
+  if (!exact || !exact.slide) return;
   const { best, slide } = exact;
   if (best.name === slide.name) return;
   sayAs('surface-fit')('pass', `note: on the page's own surface (its normals and positions as it drew them), ${inWords(best)}: that explains the picture with a residual of ${fmt(best.rms)}, the slide's formula with ${fmt(slide.rms)}`);
