@@ -1,7 +1,8 @@
 #!/usr/bin/env node
 // The grader's benchmark: grades a labelled class (the course's real hand-ins beside this checkout,
 // ../shared/handins, by default) in Chromium and prints what it cost (seconds a part: median, p90,
-// slowest; the whole run's wall time) and how far it agrees with the labels. A benchmark, never a
+// slowest; the whole run's wall time), how far it agrees with the labels and on how many lit parts
+// the page's own surface was read (each part's artifact, facts.surface). A benchmark, never a
 // test: run it on a quiet machine, and compare runs made on the same one.
 import { spawnSync } from 'node:child_process';
 import { existsSync, mkdtempSync, readFileSync, writeFileSync } from 'node:fs';
@@ -14,11 +15,18 @@ import { gradingStats, statsLines, medianRun } from './bench-grader/stats.js';
 /** The most runs --runs takes (each grades the whole class). */
 const MOST_RUNS = 9;
 
+/** surfaceOf(part): the part's facts.surface in the grading `out`'s artifacts (undefined where it has none). */
+const surfacesIn = (out) => (p) => {
+  const file = path.join(out, 'artifacts', p.name, p.part, 'facts.json');
+  return existsSync(file) ? JSON.parse(readFileSync(file, 'utf8')).surface : undefined;
+};
+
 const repo = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..');
 const HELP = `usage: npm run bench:grader -- [--handins DIR] [--labels FILE] [--out DIR] [--workers N] [--runs N] [--json FILE]
 Grades a labelled class with npm run grade (Chromium) and prints seconds a part (median, p90,
 slowest), the wall time, the parts past the time bound, where the parts' time went (by step and by
-page call) and the agreement with the labels.
+page call), on how many lit parts the page's own surface was read (why not, on the rest) and the
+agreement with the labels.
   --handins DIR  the class (default ../shared/handins, or HANDINS_DIR)
   --labels FILE  its labels (default DIR/labels.tsv)
   --out DIR      where the grading goes (default a new temporary folder)
@@ -62,7 +70,7 @@ function main() {
       console.error(`bench:grader: the grading failed (exit ${run.status}); its output is in ${out}`);
       process.exit(1);
     }
-    measured.push({ wall, st: gradingStats(JSON.parse(readFileSync(reportFile, 'utf8'))) });
+    measured.push({ wall, st: gradingStats(JSON.parse(readFileSync(reportFile, 'utf8')), surfacesIn(out)) });
     if (runs > 1) console.error(`bench:grader: run ${k} of ${runs}: ${wall.toFixed(1)} s`);
   }
   const { wall, st, walls } = medianRun(measured);

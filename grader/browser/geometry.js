@@ -7,7 +7,10 @@
 // until the grader asks: window.__geometry.read() sums up the last frame's triangles (analyseMesh,
 // grader/browser/mesh.js, a pure function also run by the unit tests).
 // The same script starts grader/browser/sent.js's record (the uniforms), which shares its helpers.
+// Every WebGL call is recorded as WebGL took it (grader/browser/webgl-args.js: WebIDL's conversions,
+// so `gl.vPosition`, undefined, as an index is attribute 0, as it is to WebGL).
 import { meshAnalysisScript } from './mesh.js';
+import { webglArgsScript } from './webgl-args.js';
 import { webgpuRecorderScript } from './geometry-webgpu.js';
 import { sentScript } from './sent.js';
 import { surfaceReaderScript, picturesScript } from './surface.js';
@@ -15,14 +18,15 @@ import { webgpuSurfaceReaderScript } from './surface-webgpu.js';
 
 /** The init script as text: the recorders of what a page sends (its geometry, WebGL and WebGPU, and its uniforms) with the analysis in it. */
 const recorders = [meshAnalysisScript, webgpuRecorderScript, sentScript, geometryStore, frameRecorder, recordWebGL,
-  extensionsOf, geometryReader, programInfoOf, surfaceReaderScript, webgpuSurfaceReaderScript(picturesScript)];
+  extensionsOf, geometryReader, programInfoOf, surfaceReaderScript, webgpuSurfaceReaderScript(picturesScript),
+  webglArgsScript];
 export const recordersInit = `(${geometryScript})(${recorders.join(', ')});`;
 
 /** The init script's body (its parts are passed in as arguments: the script is their text). */
 function geometryScript(analyseMesh, recordWebGPU, recordSent, geometryStore, frameRecorder, recordWebGL,
-  extensionsOf, geometryReader, programInfoOf, surfaceReader, webgpuSurfaceReader) {
+  extensionsOf, geometryReader, programInfoOf, surfaceReader, webgpuSurfaceReader, webglArgs) {
   if (window.__geometry || !window.WebGLRenderingContext) return;
-  const G = geometryStore();
+  const G = geometryStore(webglArgs());
   Object.defineProperty(window, '__geometry', { value: G.rec, enumerable: false });
   Object.assign(G, frameRecorder(G, window.__grade)); // (instrument.js: the culling state the page set)
   recordWebGL(G, extensionsOf);
@@ -48,9 +52,10 @@ function geometryScript(analyseMesh, recordWebGPU, recordSent, geometryStore, fr
 
 /**
  * What the record keeps: the bytes each buffer holds, each context's and vertex array's state, each
- * program's attributes, the frames (rec), and the helpers that read an upload and wrap a method.
+ * program's attributes, the frames (rec), and the helpers that read an upload and wrap a method
+ * (`taken(name, args)`: a WebGL call's arguments as WebGL took them, webgl-args.js).
  */
-function geometryStore() {
+function geometryStore(taken) {
   const TRIANGLES = 4, FLOAT = 0x1406, COLOR_BUFFER_BIT = 0x4000;
   const MAX_DRAWS = 512, HISTORY = 32;
   const bytesOf = new WeakMap(); // WebGLBuffer → Uint8Array: what the page uploaded last
@@ -88,13 +93,16 @@ function geometryStore() {
     const view = bytesIn(src, offset, length);
     return view && view.slice();
   };
-  /** Wraps proto[name] so that `after(this, args, result)` hears each call after it ran (its errors never reach the page). */
+  /**
+   * Wraps proto[name] so that `after(this, args, result)` hears each call after it ran, its
+   * arguments as WebGL took them (its errors never reach the page). Every record hears its calls here.
+   */
   const wrap = (proto, name, after) => {
     const real = proto && proto[name];
     if (typeof real !== 'function') return;
     proto[name] = function (...a) {
       const out = real.apply(this, a);
-      try { after(this, a, out); } catch { /* the record never breaks the page */ }
+      try { after(this, taken(name, a), out); } catch { /* the record never breaks the page */ }
       return out;
     };
   };
@@ -208,7 +216,7 @@ function recordWebGL(
     });
     wrap(proto, 'vertexAttribPointer', (gl, [index, size, type, normalized, stride, offset]) => {
       const st = stateOf(gl), a = st.vao.attribs[index] || {};
-      st.vao.attribs[index] = { ...a, buffer: st.array, size, type, normalized: !!normalized, stride, offset };
+      st.vao.attribs[index] = { ...a, buffer: st.array, size, type, normalized, stride, offset };
       changed(st.vao);
     });
     wrap(proto, 'enableVertexAttribArray', (gl, [index]) => {
@@ -226,7 +234,7 @@ function recordWebGL(
     // (an attribute read once an instance: its divisor, which the grader's redraw sets again)
     const divisor = (gl, [index, n]) => {
       const st = stateOf(gl);
-      st.vao.attribs[index] = { ...(st.vao.attribs[index] || {}), divisor: n >>> 0 };
+      st.vao.attribs[index] = { ...(st.vao.attribs[index] || {}), divisor: n };
       changed(st.vao);
     };
     wrap(proto, 'vertexAttribDivisor', divisor);
@@ -238,11 +246,11 @@ function recordWebGL(
       closeFrame();
     });
     // (an instanced draw: its instance count kept, which the grader's redraw draws again)
-    const instanced = (n) => (n === undefined ? {} : { instances: Math.max(0, n | 0) });
+    const instanced = (n) => (n === undefined ? {} : { instances: Math.max(0, n) });
     const arrays = (gl, [mode, first, count], instances) =>
-      draw(gl, { mode, first: first | 0, count: Math.max(0, count | 0), indexed: false, ...instanced(instances) });
+      draw(gl, { mode, first, count: Math.max(0, count), indexed: false, ...instanced(instances) });
     const elements = (gl, [mode, count, type, offset], instances) => draw(gl,
-      { mode, count: Math.max(0, count | 0), type, offset: offset | 0, indexed: true, ...instanced(instances) });
+      { mode, count: Math.max(0, count), type, offset, indexed: true, ...instanced(instances) });
     wrap(proto, 'drawArrays', (gl, a) => arrays(gl, a));
     wrap(proto, 'drawElements', (gl, a) => elements(gl, a));
     const arraysInstanced = (gl, a) => arrays(gl, a, a[3]), elementsInstanced = (gl, a) => elements(gl, a, a[4]);

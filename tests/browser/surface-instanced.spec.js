@@ -5,6 +5,8 @@
 // one (grader/browser/instanced-draws.js counts the page's). Each pixel's normal (n = p: the
 // position in the model's space) is within 1° of the moved sphere's normal where its ray meets it.
 // And the grader's experiment with culling off reaches an instanced draw as it reaches a plain one.
+// Each way again with the position's index written as `gl.aPos`, a property never set: WebGL takes
+// undefined as 0, and so must the recorder (grader/browser/webgl-args.js), in WebGL 1 and 2 alike.
 import { test, expect } from '@playwright/test';
 import { surfaceOfFixture, onFixture, SIZE } from './surface-helpers.js';
 import { degreesBetween } from '../../grader/core/computed/surface.js';
@@ -16,7 +18,8 @@ const WAYS = [
   ['two instances, drawArraysInstancedANGLE', '?draw=angle', 2],
   ['two instances, WebGL 2\'s drawElementsInstanced', '?draw=webgl2', 2],
 ];
-for (const [way, query, instances] of WAYS) {
+const LOOSE = WAYS.map(([way, query, n]) => [`${way}, the position's index gl.aPos (undefined)`, `${query}${query ? '&' : '?'}loose`, n]);
+for (const [way, query, instances] of [...WAYS, ...LOOSE]) {
   test(`a model matrix as an instanced mat4 attribute (divisor 1, ${way}): the surface is the page's own sphere, its vertices counted`, async ({ browser, baseURL }, testInfo) => {
     const surface = await surfaceOfFixture(browser, baseURL, 'webgl', `surface-instanced.html${query}`);
     expect(surface.why).toBeUndefined();

@@ -59,3 +59,24 @@ test('runs of the same grading: the median run\'s numbers (the lower middle of a
   assert.deepEqual(medianRun([run(70), run(66)]), { wall: 66, st: { tag: 66 }, walls: [70, 66] });
   assert.deepEqual(medianRun([run(5)]), { wall: 5, st: { tag: 5 }, walls: [5] });
 });
+
+test('the page\'s own surface: read on how many graded lit parts (P3-P5), and why not on the rest, most parts first', () => {
+  const part = (name, p, verdict = 'pass') => ({ name, part: p, seconds: 3, verdict, status: 'graded' });
+  const report = { submissions: [
+    { parts: [part('a', 'WP04P1'), part('a', 'WP04P3'), part('a', 'WP04P4'), part('a', 'WP04P5', 'fail')] },
+    { parts: [part('b', 'WP04P2'), part('b', 'WP04P3'), part('b', 'WP04P4'), { name: 'b', part: 'WP04P5', verdict: 'fail', status: 'missing' }] },
+    { parts: [part('c', 'WP04P3')] },
+  ] };
+  const COVERS = 'the page\'s triangles cover no pixel when drawn again';
+  const facts = {
+    'a WP04P1': undefined, 'a WP04P3': { width: 64 }, 'a WP04P4': { why: COVERS }, 'a WP04P5': undefined,
+    'b WP04P2': undefined, 'b WP04P3': { why: COVERS }, 'b WP04P4': { width: 64 }, 'c WP04P3': { why: 'no separate triangles' },
+  };
+  const st = gradingStats(report, (p) => facts[`${p.name} ${p.part}`]);
+  assert.deepEqual(st.surface, { read: 2, of: 6, why: [{ why: COVERS, parts: 2 }, { why: 'none gathered (fail)', parts: 1 }, { why: 'no separate triangles', parts: 1 }] });
+  assert.ok(statsLines(st, 10).includes(`the page's own surface read on 2 of 6 lit parts (P3-P5); not on 4: ${COVERS} (2); none gathered (fail) (1); no separate triangles (1)`),
+    statsLines(st, 10).join('\n'));
+  const all = gradingStats(report, () => ({ width: 64 }));
+  assert.ok(statsLines(all, 10).includes('the page\'s own surface read on 6 of 6 lit parts (P3-P5)'));
+  assert.equal(gradingStats(report).surface, null);
+});

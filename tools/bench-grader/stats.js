@@ -1,8 +1,10 @@
 // What a grading of a labelled class costs and how far it agrees, read from its report.json (the
 // grader's own record): seconds a part (median, p90, slowest), the parts past the time bound, and
-// the labels' agreement. Pure: the benchmark command (tools/bench-grader.js) reads and prints.
+// the labels' agreement; and on how many lit parts the page's own surface was read, from the
+// parts' artifacts (facts.surface). Pure: the benchmark command (tools/bench-grader.js) reads and prints.
 import { NOT_GRADED } from '../../grader/core/verdict.js';
 import { MS_PER_SECOND } from '../../grader/core/units.js';
+import { STEPS } from '../../common/steps.js';
 
 /** How many of the steps that took the most time the lines name. */
 const STEPS_SAID = 8;
@@ -14,14 +16,38 @@ export function quantile(xs, q) {
   return sorted[Math.min(sorted.length - 1, Math.max(0, Math.ceil(q * sorted.length) - 1))];
 }
 
+/** How many of the reasons the surface was not read the line names. */
+const WHYS_SAID = 6;
+
 /**
- * { parts, median, p90, max, slowest: [{ name, part, seconds }], notGraded, agreement, steps, calls }
- * from a report (report.json). A part with no `seconds` (missing, linked) is not counted. `steps`:
+ * On how many lit parts (the steps that light the sphere: P3-P5, common/steps.js) that were graded the
+ * grader read the page's own surface: { read, of, why: [{ why, parts }] (most parts first) }.
+ * `surfaceOf(part)` is the part's facts.surface (its artifact): { why } where it could not be read,
+ * undefined where none was gathered (the grading stopped before it, or the page could not be opened).
+ */
+export function surfaceStats(parts, surfaceOf) {
+  const lit = parts.filter((p) => STEPS[p.part] && STEPS[p.part].shading !== 'normals');
+  const whys = new Map();
+  let read = 0;
+  for (const p of lit) {
+    const s = surfaceOf(p);
+    if (s && !s.why) { read++; continue; }
+    const why = s ? s.why : `none gathered (${p.verdict})`;
+    whys.set(why, (whys.get(why) || 0) + 1);
+  }
+  const why = [...whys].map(([w, n]) => ({ why: w, parts: n })).sort((a, b) => b.parts - a.parts);
+  return { read, of: lit.length, why };
+}
+
+/**
+ * { parts, median, p90, max, slowest: [{ name, part, seconds }], notGraded, agreement, steps, calls,
+ * surface } from a report (report.json) and its parts' facts.surface (`surfaceOf(part)`, optional:
+ * without it no `surface`, surfaceStats). A part with no `seconds` (missing, linked) is not counted. `steps`:
  * the seconds of each step of the parts' gathering and judging, added up over the parts (their
  * `steps`), most first: [{ step, seconds }]. `calls`: the same by page call (their `timing`: open,
  * tick, snap, surface, ...), with how many: [{ call, calls, seconds }], most seconds first.
  */
-export function gradingStats(report) {
+export function gradingStats(report, surfaceOf = null) {
   const parts = report.submissions.flatMap((s) => s.parts).filter((p) => Number.isFinite(p.seconds));
   const seconds = parts.map((p) => p.seconds);
   const slowest = [...parts].sort((a, b) => b.seconds - a.seconds).slice(0, 3).map((p) => ({ name: p.name, part: p.part, seconds: p.seconds }));
@@ -46,7 +72,8 @@ export function gradingStats(report) {
     }
   }
   const calls = [...byCall.values()].sort((a, b) => b.seconds - a.seconds);
-  return { parts: parts.length, median: quantile(seconds, 0.5), p90: quantile(seconds, 0.9), max: quantile(seconds, 1), slowest, notGraded, agreement, steps, calls };
+  const surface = surfaceOf ? surfaceStats(parts, surfaceOf) : null;
+  return { parts: parts.length, median: quantile(seconds, 0.5), p90: quantile(seconds, 0.9), max: quantile(seconds, 1), slowest, notGraded, agreement, steps, calls, surface };
 }
 
 /**
@@ -70,6 +97,12 @@ export function statsLines(st, wallSeconds) {
   }
   if (st.calls && st.calls.length) {
     lines.push(`by page call: ${st.calls.slice(0, STEPS_SAID).map((c) => `${c.call} ${f(c.seconds)} s in ${c.calls}`).join(', ')}`);
+  }
+  const sf = st.surface;
+  if (sf) {
+    const rest = sf.of - sf.read, whys = sf.why.slice(0, WHYS_SAID).map((w) => `${w.why} (${w.parts})`);
+    if (sf.why.length > WHYS_SAID) whys.push(`${sf.why.length - WHYS_SAID} reasons more`);
+    lines.push(`the page's own surface read on ${sf.read} of ${sf.of} lit parts (P3-P5)${rest ? `; not on ${rest}: ${whys.join('; ')}` : ''}`);
   }
   const a = st.agreement;
   if (a) lines.push(`labels: ${a.exact} of ${a.of} exact, correct parts passed ${a.correctPassed} of ${a.correct}, partial parts passed ${a.partialPassed}, broken parts passed ${a.brokenPassed}`);
