@@ -41,6 +41,11 @@ export function framePage(frame, log) {
     const s = win().__webgpuCapture;
     if (s) await s.settled();
   };
+  /** What the frame's recorder `name` (window.__tamper, __stay, __sent) read, out of the frame's realm; `none` without it. */
+  const recorded = (name, none) => {
+    const r = win()[name];
+    return r ? plain(r.read()) : none;
+  };
   const newTask = () => { const w = watch(); if (w.newTask) w.newTask(); }; // check/frame-watch.js's loop guard
 
   return {
@@ -82,15 +87,11 @@ export function framePage(frame, log) {
       g().noCull = on;
     },
     /** The grader's hooks the page replaced (grader/browser/tamper.js). */
-    async tampered() {
-      const r = win().__tamper;
-      return r ? plain(r.read()) : [];
-    },
+    tampered: async () => recorded('__tamper', []),
+    /** What the page tried that would have closed or left it, kept open instead (grader/browser/stay.js). */
+    stayed: async () => recorded('__stay', []),
     /** What the page last sent for its shaders (grader/browser/sent.js). */
-    async sent() {
-      const r = win().__sent;
-      return r ? plain(r.read()) : null;
-    },
+    sent: async () => recorded('__sent', null),
     /** The geometry of the last frame drawn, summed up (grader/browser/geometry.js). */
     async geometry(limits) {
       const r = win().__geometry;

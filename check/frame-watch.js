@@ -22,8 +22,8 @@ export function frameWatchScript(options) {
   const json = (x) => { try { return JSON.stringify(x); } catch { return String(x); } };
   const text = (x) => (x instanceof Error ? x.message : typeof x === 'string' ? x : json(x));
   if (typeof window.__checkLoop === 'function') watch.broken.push('a script of the page ran before the self-check\'s own script');
-  // the frame script's globals (here, grader/browser/clock.js, grader/browser/instrument.js, grader/browser/webgpu-capture.js)
-  const OURS = /\b__(check\w*|grade\w*|webgpuCapture)\b/;
+  // the frame script's globals (here, grader/browser/clock.js, instrument.js, webgpu-capture.js, stay.js)
+  const OURS = /\b__(check\w*|grade\w*|webgpuCapture|stay)\b/;
   const pageError = (message) => {
     watch.errors.push(`page error: ${message}`);
     if (OURS.test(message)) watch.broken.push(message);

@@ -13,6 +13,7 @@ import { drawBatchScript } from '../grader/browser/draw-batch.js';
 import { instrumentScript } from '../grader/browser/instrument.js';
 import { recordersInit } from '../grader/browser/geometry.js';
 import { nativesInit } from '../grader/browser/natives.js';
+import { stayInit } from '../grader/browser/stay.js';
 import { pixelsScript } from '../grader/browser/pixels.js';
 import { tamperScript } from '../grader/browser/tamper.js';
 import { webgpuCaptureScript } from '../grader/browser/webgpu-capture.js';
@@ -30,6 +31,7 @@ export const VIEWPORT = 1000;
 export function frameScript(rubric) {
   return [
     nativesInit, // (first: the browser's own WebGL functions)
+    stayInit, // (the page kept open where it is: no close, no leaving once loaded)
     `(${frameWatchScript})(${JSON.stringify({ loopSeconds: rubric.loadSeconds })});`,
     webgpuCaptureScript,
     drawBatchScript,

@@ -5,6 +5,7 @@
 // under units/ and its place in ORDER below (with its import).
 import { UNIT as notGraded } from './units/not-graded.js';
 import { UNIT as tamper } from './units/tamper.js';
+import { UNIT as stays } from './units/stays.js';
 import { UNIT as tooSlow } from './units/too-slow.js';
 import { UNIT as shownChannels } from './units/shown-channels.js';
 import { UNIT as firstFrame } from './units/first-frame.js';
@@ -43,10 +44,12 @@ import { UNIT as highlightPlace } from './units/highlight-place.js';
 import { UNIT as orbitNotStopped } from './units/orbit-not-stopped.js';
 
 const ORDER = [
-  // can the part be judged: this browser runs it, it left the grader's hooks alone, it was
-  // gathered within the bounds, it drew a first frame, the level ladder was climbed
+  // can the part be judged: this browser runs it, it left the grader's hooks alone (and what it
+  // tried that would close or leave it), it was gathered within the bounds, it drew a first frame,
+  // the level ladder was climbed
   notGraded,
   tamper,
+  stays,
   tooSlow,
   shownChannels,
   firstFrame,

@@ -7,7 +7,8 @@
 //
 // It drives the page only through the page interface (grader/node/run/playwright-page.js for the
 // grader, check/frame-page.js for the check page): state(), snap(), controls(), click(c),
-// setValue(c, v, events), press(key), tick(ms, frames) → state(), setNoCull(on), sources(), errors().
+// setValue(c, v, events), press(key), tick(ms, frames) → state(), setNoCull(on), sources(), errors(),
+// tampered(), stayed().
 import { openSession, TooSlow, TooHeavy, FIRST_FRAME, addStep } from './session.js';
 import { findOrbit, sampleOrbit, keepIfLit, startOrbitToSee } from './orbit.js';
 import { findLevel, climbLevelLadder } from './level.js';
@@ -42,6 +43,9 @@ export async function gatherPart(page, options) {
   // the grader's hooks the page replaced (a hand-in is untrusted code): the audit names them
   const tampered = page.tampered ? await page.tampered().catch(() => null) : null;
   if (tampered && tampered.length) session.facts.tampered = tampered;
+  // what the page tried that would have closed or left it (kept open: grader/browser/stay.js)
+  const stayed = page.stayed ? await page.stayed().catch(() => null) : null;
+  if (stayed && stayed.length) session.facts.stayed = stayed;
   return { facts: session.facts, images: session.images };
 }
 

@@ -175,6 +175,8 @@ export function pageDriver(page, log) {
     sources: () => page.evaluate(() => ({ glsl: window.__grade.glsl, wgsl: window.__grade.wgsl })),
     /** The grader's hooks the page replaced (grader/browser/tamper.js), by name. */
     tampered: () => page.evaluate(() => (window.__tamper ? window.__tamper.read() : [])),
+    /** What the page tried that would have closed or left it, kept open instead (grader/browser/stay.js). */
+    stayed: () => page.evaluate(() => (window.__stay ? window.__stay.read() : [])),
     /** What the page last sent for its shaders, a digest a key (grader/browser/sent.js): uniforms, constant attributes, vertex buffers. */
     sent: () => page.evaluate(() => (window.__sent ? window.__sent.read() : null)),
     /** The geometry of the last frame drawn, summed up (grader/browser/geometry.js): triangles, winding, closed, per-face attributes. */
