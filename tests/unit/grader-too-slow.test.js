@@ -79,3 +79,29 @@ test('nothing wrong in what the page sent before the bound: not graded here, as 
   assert.equal(result.verdict, NOT_GRADED);
   assert.match(result.reasons[0], /^not graded here: too heavy to grade: .* while looking all round; nothing was judged/);
 });
+
+test('the browser failing itself (its renderer crashed) after a mistake on record: review with it; with none: not graded here', () => {
+  const crashed = (name) => {
+    const a = stoppedEarly(name, 'WP04P3');
+    delete a.facts.tooSlow;
+    delete a.facts.tooHeavy;
+    return { ...a, facts: { ...a.facts, browserFailed: { message: 'Target crashed', doing: 'looking all round' } } };
+  };
+  const ronja = applyAudit({ errors: [] }, auditPart(crashed('ronja'), rubric));
+  assert.equal(ronja.verdict, 'review');
+  assert.deepEqual(ronja.findings.filter((f) => f.level === 'review').map((f) => f.id), ['growth', 'too-slow']);
+  assert.match(ronja.reasons.join('\n'), /REVIEW: the rest was not judged: the browser failed while looking all round, not the page \("Target crashed"\); only what the page sent before was read \(growth\)/);
+  const anna = applyAudit({ errors: [] }, auditPart(crashed('anna'), rubric));
+  assert.equal(anna.verdict, NOT_GRADED);
+  assert.match(anna.reasons[0], /^not graded here: the browser failed while grading this page, not the page \("Target crashed"\)/);
+});
+
+test('the gathering keeps what it gathered when the browser fails itself, and says where', async () => {
+  const { gatherPart } = await import('../../grader/core/gather/index.js');
+  const page = { state: async () => { throw new Error('page.evaluate: Target crashed'); }, errors: () => [] };
+  const { facts } = await gatherPart(page, { part: 'WP04P3', rubric });
+  assert.deepEqual(facts.browserFailed, { message: 'page.evaluate: Target crashed', doing: 'waiting for the first frame' });
+  // the grader's own trouble is not the browser's: it goes on up
+  const broken = { state: async () => { throw new Error('cannot read x of undefined'); }, errors: () => [] };
+  await assert.rejects(gatherPart(broken, { part: 'WP04P3', rubric }), /cannot read x/);
+});

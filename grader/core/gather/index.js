@@ -20,6 +20,7 @@ import { readGeometry, readSurface } from './geometry.js';
 import { lookAllRound } from './all-round.js';
 import { sphereView, shadingOf, viewFits, highlightEvidence } from '../computed/evidence.js';
 import { shownDifference } from '../measure/shown.js';
+import { browserFailed } from '../audits/page.js';
 
 export { FIRST_FRAME, addStep };
 
@@ -33,8 +34,11 @@ export async function gatherPart(page, options) {
   try {
     await gather(session);
   } catch (err) {
-    if (!(err instanceof TooSlow)) throw err;
-    session.facts.tooSlow = err.doing;
+    // a bound, or the browser failing itself (its renderer crashed): what was gathered before stays
+    const message = String(err && err.message).split('\n')[0];
+    if (browserFailed(err)) session.facts.browserFailed = { message, doing: session.doing };
+    else if (!(err instanceof TooSlow)) throw err;
+    else session.facts.tooSlow = err.doing;
     if (err instanceof TooHeavy) session.facts.tooHeavy = err.work;
   } finally {
     session.mark(null);

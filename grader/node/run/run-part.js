@@ -10,7 +10,9 @@ import { writeArtifact } from './artifacts.js';
 import { drawReference } from './reference.js';
 import { hrefOf } from '../../files/layout.js';
 import { applyAudit, withFindings } from '../../core/part-result.js';
-import { missingPage, timedOut, stoppedAtFirstFrame, tooSlow, linkedPage, notOpened, asFail, troubleWith } from '../../core/audits/page.js';
+import {
+  missingPage, timedOut, stoppedAtFirstFrame, tooSlow, linkedPage, notOpened, asFail, troubleWith, browserFailure,
+} from '../../core/audits/page.js';
 import { tooSlowWords } from '../../core/verdict.js';
 import { deadlineOf } from '../../core/deadline.js';
 import { FIRST_FRAME } from '../../core/gather/index.js';
@@ -37,6 +39,17 @@ const progressOf = (result, rubric, save) => (what) => {
   save(result);
 };
 
+/** Did the browser fail itself while `graded` was gathered (its renderer crashed: gather/index.js keeps what came before)? */
+const failedItself = (graded) => !!(graded.artifact && graded.artifact.facts && graded.artifact.facts.browserFailed);
+
+/** `graded` with the browser that failed itself while gathering named in its reason (the judging in core/ does not know it). */
+function namedBrowser(graded, browserVersion) {
+  if (failedItself(graded) && graded.notGradedId === 'browser-failed') {
+    graded.notGraded = browserFailure({ message: graded.artifact.facts.browserFailed.message }, browserVersion).reason;
+  }
+  return graded;
+}
+
 /**
  * The part gathered and judged on `opened`'s page (`gather`: gradePart), and, where draws of frames
  * left undone could have shown (grader/browser/unseen-frames.js), gathered again on a page of
@@ -45,6 +58,7 @@ const progressOf = (result, rubric, save) => (what) => {
  */
 export async function gatherDrawn({ opened, opener, openers, open, gather, steps }) {
   const graded = await gather(opened.driver);
+  if (failedItself(graded)) return { graded, opener }; // (its page is gone: nothing more to ask it)
   const unseen = openers.everyFrame && opened.driver.unseen ? await opened.driver.unseen() : null;
   if (!(unseen && unseen.unsafe)) return { graded, opener };
   const t0 = Date.now();
@@ -128,7 +142,8 @@ export async function runPart({ item, plan, openers, browserVersion = null, over
       }
       phase('write', t0);
     }
-    clean = true;
+    // (a browser that failed itself while gathering: what it gathered is judged, and the next part gets a fresh one)
+    clean = !failedItself(graded);
   } catch (err) {
     if (over() || CLOSED.test(err.message)) throw err; // the time bound: stays 'timeout'
     // the browser's own failure: not graded here; the grader's own trouble with this page: a review
@@ -139,12 +154,12 @@ export async function runPart({ item, plan, openers, browserVersion = null, over
     if (!over()) await opener.done(clean);
     phase('close', t0);
   }
-  applyAudit(result, graded, files);
+  applyAudit(result, namedBrowser(graded, browserVersion), files);
   result.seconds = (Date.now() - started) / 1000;
   save(result);
   if (rubric.reference && graded.images.judged && !graded.fail && !graded.notGraded) {
     await drawReference({ item, plan, result, graded });
     save(result);
   }
-  return { browserFailed: graded.notGradedId === 'browser-failed' };
+  return { browserFailed: graded.notGradedId === 'browser-failed' || failedItself(graded) };
 }

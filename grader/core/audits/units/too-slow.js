@@ -4,7 +4,7 @@
 // record stands, and the rest is said not to have been judged.
 import { NOT_GRADED, tooSlowWords, tooHeavyWords } from '../../verdict.js';
 import { unit, end } from '../unit.js';
-import { tooSlow } from '../page.js';
+import { tooSlow, browserFailure } from '../page.js';
 import { UNIT as growth } from './growth.js';
 import { UNIT as winding } from './winding.js';
 
@@ -32,7 +32,7 @@ function mistakesOnRecord(context, results) {
 
 /** The audit this unit says: id → title, the slide's sentence it checks, the artifacts it reads. */
 export const META = {
-  'too-slow': { title: 'Gathered within the rubric\'s bounds', slide: null, failureTitle: 'Too slow to judge here', description: 'Gathers within counted budgets and the rubric\'s time and work bounds; a part past them is not graded here (or the rubric\'s tooSlowVerdict), never failed for being slow, unless a mistake was already read from what the page sent (its mesh growing every frame, its winding against its culling): then that mistake stands and the rest is said not judged.', reads: ['facts.tooSlow', 'facts.tooHeavy'] },
+  'too-slow': { title: 'Gathered within the rubric\'s bounds', slide: null, failureTitle: 'Too slow to judge here', description: 'Gathers within counted budgets and the rubric\'s time and work bounds; a part past them is not graded here (or the rubric\'s tooSlowVerdict), never failed for being slow, and a part whose browser failed itself is not graded here, unless a mistake was already read from what the page sent (its mesh growing every frame, its winding against its culling): then that mistake stands and the rest is said not judged.', reads: ['facts.tooSlow', 'facts.tooHeavy', 'facts.browserFailed'] },
 };
 
 /**
@@ -44,15 +44,32 @@ export const META = {
  */
 function auditTooSlow(context, results) {
   const { facts, rubric, sayAs } = context;
+  if (facts.browserFailed) return auditBrowserFailed(context, results);
   if (!facts.tooSlow) return null;
   const words = (judged) => (facts.tooHeavy != null
     ? tooHeavyWords(rubric, facts.tooSlow, facts.tooHeavy, judged) : tooSlowWords(rubric, facts.tooSlow, judged));
   const slow = tooSlow(rubric, words());
   const found = mistakesOnRecord(context, results);
   if (found.length && slow.level === NOT_GRADED) {
-    sayAs(slow.id)('mistake', `the rest was not judged: ${words(`only what the page sent before was read (${found.map((f) => f.id).join(', ')})`)}`);
+    sayAs(slow.id)('mistake', `the rest was not judged: ${words(onlyBefore(found))}`);
   } else if (slow.level === NOT_GRADED) context.notGraded = { reason: slow.reason, id: slow.id };
   else sayAs(slow.id)(slow.level, slow.reason);
+  return end();
+}
+
+/** What was judged of a part stopped after `found` (the mistakes on record), in words. */
+const onlyBefore = (found) => `only what the page sent before was read (${found.map((f) => f.id).join(', ')})`;
+
+/**
+ * The browser failed itself while gathering (its renderer crashed: facts.browserFailed, { message,
+ * doing }): not the page's doing, so not graded here, unless a mistake was read on record before.
+ */
+function auditBrowserFailed(context, results) {
+  const { message, doing } = context.facts.browserFailed;
+  const found = mistakesOnRecord(context, results);
+  const failed = `the browser failed while ${doing}, not the page ("${message}")`;
+  if (found.length) context.sayAs('too-slow')('mistake', `the rest was not judged: ${failed}; ${onlyBefore(found)}`);
+  else context.notGraded = { reason: browserFailure({ message }, null).reason, id: 'browser-failed' };
   return end();
 }
 
