@@ -43,3 +43,29 @@ test('several sliders put back elsewhere are named together, each with the value
   assert.ok(notes.includes('note: putting 2 sliders back to their values on the page (kd to 0.5, La to 0.2) changed the picture: the page starts with other values than its sliders show (each slider was tried from the picture just before it)'), notes.join('\n'));
 });
 
+
+test('ks at 0 on a picture clipped to white is not judged: the clipped white is no highlight that stayed', async () => {
+  const { renderReference, toRGBA8 } = await import('../../common/exact-render.js');
+  const { fullFit } = await import('../../grader/core/computed/views.js');
+  const camera = { eye: [0, 0, 3], at: [0, 0, 0], up: [0, 1, 0], fovy: 45, aspect: 1, near: 0.1, far: 10 };
+  const picture = (ks, kd, La) => {
+    const scene = { shading: 'phong', model: 'phong', camera, cullFace: true, frontFace: 'ccw',
+      light: { position: [-1, -1, -1, 0], Le: 1, La }, material: { kd, ka: kd, ks, s: 20 } };
+    return { width: 96, height: 96, data: toRGBA8(renderReference(scene, 96, 96)) };
+  };
+  // the trial of ks from 1 to 0, read as the sliders' audit reads it
+  const ksTrial = (kd, La) => {
+    const images = { before: picture(1, kd, La), after: picture(0, kd, La) };
+    const { checks, sayAs } = checkList(rubric);
+    const trial = { control: 0, role: 'ks', levelSlider: false, target: 0, how: 'input', changed: { input: 0.2, change: null }, image: 'after', before: 'before' };
+    auditSliders({ facts: { sliders: [trial], slidersFound: 1 }, images, thresholds, must: new Set(['sliders']), sayAs, rubric, part: 'WP04P4' },
+      null, { judgedFit: fullFit(images.before, thresholds) });
+    return checks.filter((c) => c.id === 'ks-used');
+  };
+  // kd = ka = 1 with La = 0.6: two thirds of the sphere white, with ks at 1 and at 0 alike
+  const clipped = ksTrial(1, 0.6);
+  assert.deepEqual(clipped.map((c) => c.level), ['pass'], clipped.map((c) => c.reason).join('\n'));
+  assert.match(clipped[0].reason, /^note: ks at 0 is not judged: the picture clips to white over \d+% of the sphere/);
+  // a material that does not clip: ks at 0 took the highlight away, and nothing is said
+  assert.deepEqual(ksTrial(0.6, 0.3).map((c) => c.level), []);
+});

@@ -65,11 +65,14 @@ export function auditSliders({ facts, images, thresholds, must, sayAs, rubric, p
               ),
             }
           : fullFit(after, thresholds);
-      if (
-        f &&
-        f.highlightPeak >= base.highlightPeak * thresholds.ksLeftShare &&
-        f.highlightPeak >= thresholds.highlightPeak
-      ) {
+      // (a picture clipped to white over much of the sphere, ks at 0 or not, reads as a highlight
+      // that stays: the clipped pixels are no evidence of one, and whether it stayed cannot be told)
+      const clips = f && !a.blank ? clippedShare(after, a, thresholds) : 0;
+      const left = f && f.highlightPeak >= base.highlightPeak * thresholds.ksLeftShare &&
+        f.highlightPeak >= thresholds.highlightPeak;
+      if (left && clips >= thresholds.clippedShare) {
+        sayKs('pass', `note: ks at ${target} is not judged: the picture clips to white over ${Math.round(PERCENT * clips)}% of the sphere (the material and light saturate it), so whether the highlight stayed cannot be told there`);
+      } else if (left) {
         sayKs(
           'review',
           `ks${s.controls ? ` (its ${s.controls.length} sliders)` : ''} at ${target} leaves the highlight as it was (${fmt(f.highlightPeak)}): is ks used in the specular term?`,
