@@ -54,8 +54,8 @@ test('ks at 0 on a picture clipped to white is not judged: the clipped white is 
     return { width: 96, height: 96, data: toRGBA8(renderReference(scene, 96, 96)) };
   };
   // the trial of ks from 1 to 0, read as the sliders' audit reads it
-  const ksTrial = (kd, La) => {
-    const images = { before: picture(1, kd, La), after: picture(0, kd, La) };
+  const ksTrial = (kd, La, ksAfter = 0) => {
+    const images = { before: picture(1, kd, La), after: picture(ksAfter, kd, La) };
     const { checks, sayAs } = checkList(rubric);
     const trial = { control: 0, role: 'ks', levelSlider: false, target: 0, how: 'input', changed: { input: 0.2, change: null }, image: 'after', before: 'before' };
     auditSliders({ facts: { sliders: [trial], slidersFound: 1 }, images, thresholds, must: new Set(['sliders']), sayAs, rubric, part: 'WP04P4' },
@@ -68,4 +68,11 @@ test('ks at 0 on a picture clipped to white is not judged: the clipped white is 
   assert.match(clipped[0].reason, /^note: ks at 0 is not judged: the picture clips to white over \d+% of the sphere/);
   // a material that does not clip: ks at 0 took the highlight away, and nothing is said
   assert.deepEqual(ksTrial(0.6, 0.3).map((c) => c.level), []);
+  // kd = 1 with no ambient: the diffuse term reaches white at its peak, a sliver above the diffuse
+  // fit far toward white but not as high as the highlight was: no highlight left
+  assert.deepEqual(ksTrial(1, 0).map((c) => c.level), []);
+  // a page whose ks slider changes nothing in the specular term: the highlight stays as it was
+  const unused = ksTrial(0.6, 0.3, 1);
+  assert.deepEqual(unused.map((c) => c.level), ['review']);
+  assert.match(unused[0].reason, /^ks at 0 leaves the highlight as it was \(1\.00\): is ks used in the specular term\?/);
 });

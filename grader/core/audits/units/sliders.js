@@ -68,8 +68,12 @@ export function auditSliders({ facts, images, thresholds, must, sayAs, rubric, p
       // (a picture clipped to white over much of the sphere, ks at 0 or not, reads as a highlight
       // that stays: the clipped pixels are no evidence of one, and whether it stayed cannot be told)
       const clips = f && !a.blank ? clippedShare(after, a, thresholds) : 0;
+      // as it was: as far toward white, and as high above the diffuse fit (a diffuse term that reaches
+      // white at its peak leaves a sliver over the fit that is far toward white, and is no highlight)
+      const risen = (x) => Number.isFinite(x.highlightRise);
       const left = f && f.highlightPeak >= base.highlightPeak * thresholds.ksLeftShare &&
-        f.highlightPeak >= thresholds.highlightPeak;
+        f.highlightPeak >= thresholds.highlightPeak &&
+        (!risen(f) || !risen(base) || f.highlightRise >= base.highlightRise * thresholds.ksLeftShare);
       if (left && clips >= thresholds.clippedShare) {
         sayKs('pass', `note: ks at ${target} is not judged: the picture clips to white over ${Math.round(PERCENT * clips)}% of the sphere (the material and light saturate it), so whether the highlight stayed cannot be told there`);
       } else if (left) {
