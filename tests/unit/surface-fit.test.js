@@ -16,12 +16,12 @@ const wi = (() => { const l = [0.3, 0.5, 1], n = Math.hypot(...l); return l.map(
 const dot = (a, b) => a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
 const unit = (v) => { const l = Math.hypot(...v); return v.map((x) => x / l); };
 
-/** L_o of the slides at p (n = p), w_o from `woOf(p)`, Phong with s = 40; the normal colour added with weight `tint`. */
-const model = ({ woOf = (p) => unit(eye.map((e, k) => e - p[k])), tint = 0, kd = [0.7, 0.5, 0.3] } = {}) => (p, k) => {
+/** L_o of the slides at p (n = p), w_o from `woOf(p)`, Phong with s = 40 and ks; the normal colour added with weight `tint`. */
+const model = ({ woOf = (p) => unit(eye.map((e, k) => e - p[k])), tint = 0, kd = [0.7, 0.5, 0.3], ks = 0.4 } = {}) => (p, k) => {
   const c = dot(p, wi), wo = woOf(p);
   const wr = p.map((n, j) => 2 * c * n - wi[j]);
   const spec = c > 0 ? Math.max(dot(wr, wo), 0) ** 40 : 0;
-  return 0.1 + kd[k] * Math.max(c, 0) * 0.8 + 0.4 * spec + tint * (0.5 * p[k] + 0.5);
+  return 0.1 + kd[k] * Math.max(c, 0) * 0.8 + ks * spec + tint * (0.5 * p[k] + 0.5);
 };
 
 function fitOf(shade) {
@@ -79,4 +79,26 @@ test('where the page\'s surface could not be read, the part says its lighting wa
   // a part whose surface was read says nothing of the kind
   const read = auditPart(readArtifact(path.join(RECORDED, 'anna', 'WP04P3')), rubric).checks.filter((c) => /judged on the outline/.test(c.reason));
   assert.deepEqual(read, []);
+});
+
+test('w_o with the view matrix applied twice is named, and a w_o misread past the margin is a review', async () => {
+  const V = mat4.lookAt(mat4.create(), eye, [0, 0, 0], [0, 1, 0]);
+  // the page's w_o: −normalize(V·(V·p)) in the eye's space, i.e. normalize(e − V·p) in the model's
+  const twice = (p) => {
+    const q = [0, 1, 2].map((r) => V[r] * p[0] + V[4 + r] * p[1] + V[8 + r] * p[2] + V[12 + r]);
+    return unit(eye.map((e, k) => e - q[k]));
+  };
+  // (a highlight as bright as a student's default: the slide's formula then leaves a visible residual)
+  const f = fitOf(model({ woOf: twice, kd: [0.5, 0.4, 0.3], ks: 0.9 }));
+  assert.equal(f.best.view, 'with the view matrix applied twice', [f.slide.rms, ...f.variants.slice(0, 4).map((v) => `${v.name} ${v.rms}`)].join('\n'));
+  const { auditSurfaceFit } = await import('../../grader/core/audits/units/surface-fit.js');
+  const said = [];
+  auditSurfaceFit({ sayAs: () => (level, reason) => said.push({ level, reason }) }, f);
+  assert.deepEqual(said.map((x) => x.level), ['mistake']);
+  assert.match(said[0].reason, /w_o is built with the view matrix applied twice/);
+  // the normal colour kept in the material is the page's choice: a note, not a mistake
+  const tinted = [];
+  auditSurfaceFit({ sayAs: () => (level, reason) => tinted.push({ level, reason }) }, fitOf(model({ tint: 0.5, kd: [0.3, 0.3, 0.3] })));
+  assert.deepEqual(tinted.map((x) => x.level), ['pass']);
+  assert.match(tinted[0].reason, /^note: /);
 });

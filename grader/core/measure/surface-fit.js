@@ -6,7 +6,8 @@
 // once w_i, s and the form are chosen, so solved by least squares), channels that clip left out.
 // Beside it, the known misreadings, each fitted the same way and named: the normal colour of
 // WP04P1 added as a term of its own (0.5·n + 0.5, c = t·(0.5·n + 0.5) + …), and w_o taken as a fixed
-// direction (the eye space's (0, 0, 1)) or from the world origin (−p). Which explains the picture
+// direction (the eye space's (0, 0, 1)), from the world origin (−p), with the view matrix applied
+// twice, or with its sign turned. Which explains the picture
 // best, and by how much, is evidence for the audits; a reason rests on it only past the rubric's margin.
 import { solveNormal } from './linear.js';
 import { DIRS } from './directions.js';
@@ -105,11 +106,27 @@ const SPECULAR = {
   },
 };
 
-/** w_o as the slide says, and as it is got wrong. */
+/** p in the eye's space (its coordinates along the camera's right, up and back, from its centre), or null. */
+function inEye(p, camera) {
+  if (!camera.eye) return null;
+  const d = [p[0] - camera.eye[0], p[1] - camera.eye[1], p[2] - camera.eye[2]];
+  return [dot(camera.right, d), dot(camera.up, d), dot(camera.back, d)];
+}
+
+/**
+ * w_o as the slide says, and as it is got wrong, in the model's space (null: the camera cannot say).
+ * The view matrix applied twice: w_o = −normalize((V·(V·p)).xyz) in the eye's space is, turned back
+ * into the model's, normalize(e − V·p) with V·p's coordinates read as a point of the model's space.
+ */
 const VIEW = {
   'the slide': (s) => s.w_o,
   'fixed at the eye space\'s (0, 0, 1)': (s, camera) => camera.back,
   'from the world origin (−p)': (s) => unit(s.p.map((v) => -v)) || [0, 0, 0],
+  'with the view matrix applied twice': (s, camera) => {
+    const q = inEye(s.p, camera);
+    return q && (unit([camera.eye[0] - q[0], camera.eye[1] - q[1], camera.eye[2] - q[2]]) || [0, 0, 0]);
+  },
+  'pointing away from the eye (its sign)': (s) => s.w_o.map((v) => -v),
 };
 
 const SHININESS = [5, 10, 20, 40, 80, 160, 320];
@@ -180,6 +197,7 @@ export function surfaceFit(surface, img, thresholds) {
     const D = diffuseTerm(cols, b.wi), S = new Float64Array(cols.m);
     for (const [form, spec] of Object.entries(SPECULAR)) {
       for (const [view, wo] of Object.entries(VIEW)) {
+        if (!wo(use[0], surface.camera)) continue;
         const cosines = use.map((q) => Math.max(spec(q.n, b.wi, wo(q, surface.camera)), 0));
         for (const sh of SHININESS) {
           for (let i = 0; i < cols.m; i++) S[i] = cosines[i] ** sh;
