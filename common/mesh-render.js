@@ -42,7 +42,8 @@ export function renderMeshInOrder(scene, positions, width, height) {
   const clip = toClip(cam, cam.aspect ?? width / height, positions);
   const rgb = new Float64Array(width * height * 3);
   const coverage = new Uint8Array(width * height);
-  for (let p = 0; p < width * height; p++) rgb.set(BACKGROUND.slice(0, 3), 3 * p);
+  const background = BACKGROUND.slice(0, 3);
+  for (let p = 0; p < width * height; p++) rgb.set(background, 3 * p);
   // each vertex in the window (row 0 at the top), snapped as the GPU snaps it, with 1/w
   const n = clip.length / 4;
   const sx = new Float64Array(n), sy = new Float64Array(n), iw = new Float64Array(n);

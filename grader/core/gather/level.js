@@ -125,9 +125,9 @@ async function levelKeys(session, levelBy) {
 /**
  * Buttons that change how much the page draws a frame: a subdivision draws four times the triangles
  * of the level before, a coarsening a quarter. Each click's frame is held to the frame before it
- * (the vertices it drew, session.frameVertices), so a page that
- * never stands still, or whose mesh grows a little every frame, shows its level controls all the
- * same. Named for the level first; the rubric's maxControlTrials bounds the clicks.
+ * (the vertices it drew, session.frameVertices), so a page that never stands still, or whose mesh
+ * grows a little every frame, shows its level controls all the same. Named for the level first;
+ * the rubric's maxControlTrials bounds the clicks.
  */
 async function levelButtonsByDraws(session, clickables, levelBy) {
   const { thresholds, patterns } = session;

@@ -37,10 +37,15 @@ function inWords(best) {
   return out.join('; ');
 }
 
-/** Says, as a note, which misreading the page's own surface shows, where one explains the picture better than the slide's formula; or that the lighting was judged on the outline, and why. */
+/**
+ * Says which misreading the page's own surface shows, where one explains the picture better than
+ * the slide's formula (a w_o misread: a mistake; the normal colour in the material: a note); or that
+ * the lighting was judged on the outline, and why.
+ */
 export function auditSurfaceFit({ sayAs }, exact) {
+  const say = sayAs('surface-fit');
   if (exact && exact.why) {
-    sayAs('surface-fit')('pass', `note: the lighting was judged on the outline (a sphere assumed from the silhouette), not on the page's own surface: ${exact.why}`);
+    say('pass', `note: the lighting was judged on the outline (a sphere assumed from the silhouette), not on the page's own surface: ${exact.why}`);
     return;
   }
   if (!exact || !exact.slide) return;
@@ -49,8 +54,8 @@ export function auditSurfaceFit({ sayAs }, exact) {
   // a misreading of w_o that explains the picture better by the rubric's margin is a mistake; the
   // normal colour kept in the material or added is the page's choice of material: a note
   const said = `on the page's own surface (its normals and positions as it drew them), ${inWords(best)}: that explains the picture with a residual of ${fmt(best.rms)}, the slide's formula with ${fmt(slide.rms)}`;
-  if (misread(best)) sayAs('surface-fit')('mistake', `${said} (w_o = normalize(e − p), from the point to the eye, in the space of n and w_i)`);
-  else sayAs('surface-fit')('pass', `note: ${said}`);
+  if (misread(best)) say('mistake', `${said} (w_o = normalize(e − p), from the point to the eye, in the space of n and w_i)`);
+  else say('pass', `note: ${said}`);
 }
 
 /** The lighting fitted on the page's own surface (its normals and positions as it drew them): evidence in the numbers, and the note. */

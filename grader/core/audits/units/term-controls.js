@@ -60,4 +60,4 @@ export function auditTermControls({ facts, images, thresholds, must, sayAs }) {
 }
 
 /** The unit (audits/list.js runs it in its order). */
-export const UNIT = unit(META, 'term-controls', (context) => auditTermControls(context));
+export const UNIT = unit(META, 'term-controls', auditTermControls);
