@@ -64,13 +64,14 @@ export function webgpuGeometry(recorder, recordBindings, drawResolver) {
   });
   after(P, 'setIndexBuffer', (pass, [buffer, format, offset = 0]) => { stateOf(pass).index = { buffer, format, offset }; });
   const resolver = drawResolver({ pipes, bytesOf, FLOAT, TRIANGLES });
+  const { topologyMode } = resolver;
   const push = (pass, d) => {
     const f = frameOf(d.count);
     if (f.draws.length >= MAX_DRAWS) { f.over++; return; }
     const st = stateOf(pass);
     const snap = { pipeline: st.pipeline, vertex: [...st.vertex], index: st.index && { ...st.index } };
     const pipe = pipes.get(st.pipeline);
-    f.draws.push({ mode: pipe && pipe.topology === 'triangle-list' ? TRIANGLES : -1, count: d.count, resolve: resolver(snap, d),
+    f.draws.push({ mode: topologyMode(pipe), count: d.count, resolve: resolver(snap, d),
       gpu: pipe && { desc: pipe.desc, vertex: snap.vertex, index: snap.index, groups: [...st.groups], size: st.size,
         call: d } });
   };
@@ -84,11 +85,15 @@ export function webgpuGeometry(recorder, recordBindings, drawResolver) {
 /**
  * A draw resolved, when the grader asks, into the form grader/browser/mesh.js sums up: (the pass's
  * state as the draw saw it, the draw) → () → { mode, count, indexed, cull, indices, attributes, ... },
- * from the pipelines seen (`pipes`) and the buffers' bytes (`bytesOf`).
+ * from the pipelines seen (`pipes`) and the buffers' bytes (`bytesOf`); its topologyMode(pipeline
+ * seen) is the WebGL mode a draw is recorded with.
  */
 export function webgpuDrawResolver({ pipes, bytesOf, FLOAT, TRIANGLES }) {
+  // (WebGL's mode for a topology: lines as LINES and LINE_STRIP, so that a wireframe is told as in WebGL)
+  const MODES = { 'triangle-list': TRIANGLES, 'line-list': 1, 'line-strip': 3 };
+  const topologyMode = (pipe) => (pipe && pipe.topology in MODES ? MODES[pipe.topology] : -1);
   const SIZES = { float32x2: 2, float32x3: 3, float32x4: 4 };
-  return (st, d) => () => {
+  const resolve = (st, d) => () => {
     const pipe = pipes.get(st.pipeline);
     if (!pipe) return { mode: 0, count: d.count, attributes: [] };
     const attributes = [];
@@ -105,11 +110,12 @@ export function webgpuDrawResolver({ pipes, bytesOf, FLOAT, TRIANGLES }) {
     });
     const index = d.indexed && st.index;
     const bytes = index && index.format === 'uint32' ? 4 : 2;
-    return { mode: pipe.topology === 'triangle-list' ? TRIANGLES : -1, first: d.first, count: d.count, indexed: d.indexed,
+    return { mode: topologyMode(pipe), first: d.first, count: d.count, indexed: d.indexed,
       cull: pipe.cull,
       type: bytes === 4 ? 0x1405 : 0x1403, offset: index ? index.offset + d.first * bytes : 0, base: d.base || 0,
       indices: index ? bytesOf.get(index.buffer) || null : null, attributes };
   };
+  return Object.assign(resolve, { topologyMode });
 }
 
 /**

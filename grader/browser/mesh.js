@@ -20,6 +20,8 @@ function analysis(vertexShader, vertexInputs, reader, indexer, meshesOf, walker,
       draws: draws.length,
       triangles,
       otherVertices: draws.filter((d) => d.mode !== TRIANGLES).reduce((n, d) => n + d.count, 0),
+      // drawn as lines (LINES, LINE_LOOP, LINE_STRIP: modes 1 to 3): a wireframe, not a surface
+      lineVertices: draws.filter((d) => d.mode >= 1 && d.mode <= 3).reduce((n, d) => n + d.count, 0),
     };
     if (!tris.length) return { ...out, why: 'no separate triangles (gl.TRIANGLES) were drawn' };
     const largest = tris.reduce((a, b) => (b.count > a.count ? b : a));

@@ -18,3 +18,4 @@ export { silhouetteChange, outlineFlips, shadingChange, pictureChange } from './
 export { pointLightFit, pointLightPredict, highlightAbove, nearPointLight, clearlyBetter, clearlyNearFalloff } from './measure/point-light.js';
 export { darkSpots } from './measure/dark-spots.js';
 export { unnormalisedInputs } from './measure/fragment-normals.js';
+export { drawnPixels } from './measure/drawn.js';
