@@ -173,8 +173,9 @@ async function orbitAndLevel(session, controls) {
   facts.judgedLevel = j;
   session.mark('reading the geometry and the surface');
   facts.geometry = await readGeometry(session);
-  // the judged view's surface per pixel, where the lighting is judged: each pixel's position and normal as the page drew them
-  if (must.has('diffuse') || must.has('highlight')) facts.surface = await readSurface(session);
+  // the judged view's surface per pixel, where the lighting or the side seen is judged: each pixel's
+  // position and normal as the page drew them
+  if (must.has('diffuse') || must.has('highlight') || must.has('front-faces')) facts.surface = await readSurface(session);
   facts.judged = facts.ladder[j].image;
   return ladder[j].an.blank ? null : ladder[j];
 }

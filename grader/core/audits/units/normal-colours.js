@@ -1,14 +1,16 @@
 // The audit unit 'normal-colours' (Colours that are the normals, 0.5·n + 0.5): Reads the colours
 // inside the outline as normals (colour = 0.5·n + 0.5) and fits them to a sphere's.
 import { analyse, samples, normalColours, facesViewer, pictureChange } from '../../measure.js';
-import { fmt } from '../../format.js';
+import { fmt, pct } from '../../format.js';
+import { surfaceOf } from '../../computed/surface.js';
+import { sideSeen } from '../../measure/near-side.js';
 import { SLIDE } from '../slides.js';
 import { unit } from '../unit.js';
 
 /** The audits this unit says: id → title, the slide's sentence it checks, the artifacts it reads. */
 export const META = {
   'normal-colours': { title: 'Colours that are the normals, 0.5·n + 0.5', slide: SLIDE.normalColour, failureTitle: 'The colours are not the normals, 0.5·n + 0.5', description: 'Reads the colours inside the outline as normals (colour = 0.5·n + 0.5) and fits them to a sphere\'s.', reads: ['images.judged', 'facts.facesImage', 'facts.api'] },
-  'front-faces': { title: 'The normals facing the viewer: front faces only', slide: SLIDE.depthCulling, failureTitle: 'The normals shown do not face the viewer', description: 'Checks that the colours show normals facing the viewer, and draws once with culling off to see what culling hides.', reads: ['images.judged', 'facts.noCull', 'facts.faces'] },
+  'front-faces': { title: 'The normals facing the viewer: front faces only', slide: SLIDE.depthCulling, failureTitle: 'The normals shown do not face the viewer', description: 'Reads on the page\'s own surface, after its own projection, whether the visible pixels are the near half\'s outside (each pixel\'s normal facing the camera its matrices set up) and, where not, what in the projection turns it; where the surface was not read, checks that the colours show normals facing the viewer, and draws once with culling off to see what culling hides.', reads: ['facts.surface', 'images.judged', 'facts.noCull', 'facts.faces'] },
 };
 
 /**
@@ -45,6 +47,7 @@ export function auditNormals({ facts, images, thresholds, must, sayAs, numbers }
     say('mistake', `the colours are not 0.5·n + 0.5: 2c − 1 is not a unit vector (off by ${fmt(nc.unitError)} on average)`);
   } else say('pass', `colours decode to unit normals 2c − 1 (off by ${fmt(nc.unitError, 3)})`);
   const sayFaces = sayAs('front-faces');
+  if (must.has('front-faces') && surfaceFaces(facts, images, thresholds, sayFaces)) return { img, an, nc };
   if (must.has('front-faces') && nc && nc.spread >= thresholds.normalsSpread) {
     if (facesViewer(nc, thresholds)) sayFaces('pass', 'the visible colours are the normals facing the viewer: front faces only');
     else if (nearest) sayFaces('pass', 'the visible faces are the nearest ones (the depth test is on, and culling off draws the same picture): the view looks along +z (clip space without a view matrix?), so their normals point away from +z');
@@ -54,6 +57,29 @@ export function auditNormals({ facts, images, thresholds, must, sayAs, numbers }
     } else sayFaces('mistake', `back faces show through the front (normals do not vary smoothly across the picture, misfit ${fmt(nc.residual)}): depth test or culling missing`);
   }
   return { img, an, nc };
+}
+
+/** What makes the far side show, as the page's own matrices say (measure/near-side.js's farSideCause). */
+const FAR_SIDE_CAUSE = {
+  mirrored: 'its projection turns the picture over (a face toward the camera is wound clockwise on the screen: two projections multiplied, or a negative scale?), so culling the back faces takes away the near ones',
+  depth: 'its projection gives nearer points a greater depth, so the depth test keeps the far ones',
+};
+
+/**
+ * The side seen, read per pixel on the page's own surface after its own projection (where it was
+ * read): the near half's outside, or not. Says front-faces and returns true; false where the
+ * surface was not read (the colours decide, as before).
+ */
+function surfaceFaces(facts, images, thresholds, say) {
+  const s = facts.surface && surfaceOf(facts.surface, images, thresholds);
+  const side = s && !s.why ? sideSeen(s) : null;
+  if (!side) return false;
+  const read = `read on the page's own surface: ${pct(side.share)} of the ${side.samples} pixels read have a normal that faces the camera its matrices (P·V·M) set up`;
+  if (side.share >= thresholds.nearSideShare) say('pass', `the visible pixels are the near half's outside (${read})`);
+  else if (clockwiseExperiment(facts)) say('pass', `note: the back side of the sphere shows, as the slide's clockwise experiment asks ("You should now see the back side of the sphere"): ${facts.api === 'webgpu' ? "frontFace: 'cw'" : 'gl.frontFace(gl.CW)'} with back-face culling on (${read})`);
+  else if (side.share <= 1 - thresholds.nearSideShare) say('mistake', `the inside of the far half shows, not the near half's outside (${read})${side.cause ? `: ${FAR_SIDE_CAUSE[side.cause]}` : ''}`);
+  else say('mistake', `part of the far side shows through the near side (${read}): the depth test off, or culling that takes away some near faces?`);
+  return true;
 }
 
 /** The page set clockwise front faces (gl.frontFace(gl.CW), WebGPU's frontFace: 'cw') with back faces culled. */

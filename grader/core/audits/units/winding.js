@@ -40,7 +40,7 @@ export function auditWinding({ facts, thresholds, must, sayAs, numbers }) {
     say('mistake', `the near side of the sphere is culled and the inside of the far side shows: ${pct(g.cw)} of its triangles are wound clockwise seen from outside (${read}; the textbook's tetrahedron winds its faces so), and ${setting} culls the faces that point toward the viewer`);
   } else if (share >= thresholds.windingHoleShare) {
     say('mistake', `a hole shows from some side: ${pct(share)} of the triangles are wound the other way from the rest (${read}), and ${setting} takes them away where they face the viewer`);
-  } else say('pass', `the triangles are wound so that the culling keeps the near side: ${pct(1 - g.cw)} of them counter-clockwise seen from outside (${read})`);
+  } else say('pass', `the triangles are wound so that the culling keeps the near side, in the model's space: ${pct(1 - g.cw)} of them counter-clockwise seen from outside (${read})`);
 }
 
 /** The unit (audits/list.js runs it in its order). */
