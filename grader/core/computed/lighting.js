@@ -6,10 +6,13 @@ import { surfaceOf } from './surface.js';
 import { surfaceFit } from '../measure/surface-fit.js';
 import { pct } from '../format.js';
 
-/** The fits on the judged picture (`judged`: { img, an }) and its surface, or null / { why }. */
-export function exactLighting(facts, images, judged, thresholds) {
-  if (!facts.surface) return null;
-  const s = surfaceOf(facts.surface, images, thresholds);
+/**
+ * The fits on the judged picture (`judged`: { img, an }) and its surface (facts.surface, or the
+ * `surface` read with another picture: the highlight's place view's), or null / { why }.
+ */
+export function exactLighting(facts, images, judged, thresholds, surface = facts.surface) {
+  if (!surface) return null;
+  const s = surfaceOf(surface, images, thresholds);
   if (s.why) return { why: s.why };
   const { img, an } = judged;
   if (s.width !== img.width || s.height !== img.height) return { why: `the page's surface (${s.width}×${s.height}) is not the picture's size (${img.width}×${img.height})` };

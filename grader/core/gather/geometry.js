@@ -27,10 +27,11 @@ export async function readSent(session) {
 
 /**
  * The surface the last frame drew, per pixel (grader/browser/surface.js): facts (names, box, the
- * clip matrix P·V·M) with its two pictures kept as `surface-normals` and `surface-points`; { why }
+ * clip matrix P·V·M) with its two pictures kept as `surface-normals` and `surface-points` (after
+ * `prefix`); { why }
  * where it could not be drawn again; null where the page interface cannot.
  */
-export async function readSurface(session) {
+export async function readSurface(session, prefix = '') {
   if (!session.page.surface) return null;
   session.outOfTime();
   const r = await session.page.surface({ fitSamples: session.thresholds.surfaceFitSamples });
@@ -42,7 +43,7 @@ export async function readSurface(session) {
   return {
     ...facts,
     clip: clip.map((row) => row.map((v) => Math.round(v * MILLIONTHS) / MILLIONTHS)),
-    normals: session.keep('surface-normals', normals),
-    points: session.keep('surface-points', points),
+    normals: session.keep(`${prefix}surface-normals`, normals),
+    points: session.keep(`${prefix}surface-points`, points),
   };
 }

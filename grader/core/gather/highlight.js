@@ -6,6 +6,7 @@ import { describeGroup } from '../controls.js';
 import { lightAngle, fullFit } from '../computed/views.js';
 import { highlightIn } from '../computed/evidence.js';
 import { searchOrbit } from './orbit.js';
+import { readSurface } from './geometry.js';
 import { groupsOf, setGroup, greatestValue, groupFacts } from './params.js';
 
 /**
@@ -63,7 +64,7 @@ export async function placeFarther(session, controls) {
     }
   };
   await each((x, k) => (x.values ? x.values[k] : x.value));
-  let far = { img: null, k: 0 };
+  let far = { img: null, k: 0 }, surface = null;
   if (await session.tryClick(orbit.start, 'the orbit control', { watchMotion: true }) === 'starts') {
     far = await searchOrbit(session, (img, an) => {
       if (an.blank || an.roundness >= thresholds.orbitCoarseRoundness) return false;
@@ -75,11 +76,13 @@ export async function placeFarther(session, controls) {
         lightAngle(f) >= thresholds.highlightPlaceLightDegrees
       );
     });
+    // its surface, as the page drew that view (no frame has run since: the orbit is stopped after)
+    if (far.img) surface = await readSurface(session, 'place-');
     await session.tryClick(orbit.stop, 'the orbit control again', { watchMotion: true });
   }
   await each((x, k, c) => session.now(c));
   session.act(
     `sampled the orbit at ${far.k} positions for a view with the light ${thresholds.highlightPlaceLightDegrees}° or more from the viewer${raised.length ? `, ${raised.map((x) => `${x.role} at ${x.value}`).join(' and ')}` : ''}: ${far.img ? 'one shows the highlight' : 'none shows the highlight over a clean diffuse fit'}`,
   );
-  facts.placeFarther = { image: far.img ? session.keep('highlight-place', far.img) : null };
+  facts.placeFarther = { image: far.img ? session.keep('highlight-place', far.img) : null, ...(surface ? { surface } : {}) };
 }

@@ -17,7 +17,7 @@ const VARIANTS_KEPT = 8;
 const fmt = (x) => x.toFixed(3);
 
 /** Each known misreading of w_o (measure/surface-fit.js's VIEW), in a student's words. */
-const VIEW_WORDS = {
+export const VIEW_WORDS = {
   'fixed at the eye space\'s (0, 0, 1)': 'w_o is one direction for the whole sphere (the eye space\'s (0, 0, 1)), not normalize(e − p) at each point',
   'from the world origin (−p)': 'w_o points from the point to the world\'s origin, not to the eye (normalize(e − p))',
   'with the view matrix applied twice': 'w_o is built with the view matrix applied twice (−normalize(V·(V·p)) in the eye\'s space), not −normalize(V·p)',
