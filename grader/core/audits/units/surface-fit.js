@@ -58,7 +58,11 @@ export function auditSurfaceFit({ sayAs }, exact) {
   else say('pass', `note: ${said}`);
 }
 
-/** The lighting fitted on the page's own surface (its normals and positions as it drew them): evidence in the numbers, and the note. */
+/**
+ * The lighting fitted on the page's own surface (its normals and positions as it drew them):
+ * evidence in the numbers, and the note; returns the fit (exactLighting's: null, { why } or the
+ * fit) for the units after it.
+ */
 function auditLightingOnSurface(context, results) {
   const exact = context.litStep ? exactLighting(context.facts, context.images, results['judged-picture'], context.thresholds) : null;
   if (exact) {
@@ -73,6 +77,7 @@ function auditLightingOnSurface(context, results) {
         };
   }
   auditSurfaceFit(context, exact);
+  return exact;
 }
 
 /** The unit (audits/list.js runs it in its order). */
