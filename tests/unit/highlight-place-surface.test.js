@@ -67,3 +67,18 @@ test('w_o built with the view matrix applied twice: the picture\'s fit passes it
   assert.match(placeSaid(scene, shade, false), /^highlight-place pass: /);
   assert.match(placeSaid(scene, shade, true), /^highlight-place mistake: the highlight is not where the slide puts it: on the page's own surface in a view along the orbit, w_o is built with the view matrix applied twice/);
 });
+
+test('in the judged view, the judged view\'s surface decides where the view stood still, the picture where the orbit never stopped', async () => {
+  const { fullFit } = await import('../../grader/core/computed/views.js');
+  const scene = sceneAt([0, 0, 3.5], 70), u = surfaceUnder(scene.pv, scene.eye, { shade: model(scene, { tint: 1, ks: 0.3 }) });
+  for (let i = 3; i < u.picture.data.length; i += 4) if (!u.images.n.data[i]) u.picture.data.fill(0, i - 3, i);
+  const near = { fit: fullFit(u.picture, T), where: 'the judged view', img: u.picture, atJudged: true };
+  const said = (stopped) => {
+    const out = [];
+    auditPlaceFarther({ facts: { placeFarther: { image: null }, surface: u.facts, stopped }, images: u.images, thresholds: T,
+      numbers: {}, imagesShown: {}, sayAs: (id) => (level, reason) => out.push(`${id} ${level}: ${reason}`) }, near);
+    return out.join('\n');
+  };
+  assert.match(said(true), /^highlight-place pass: .* read on the page's own surface in the judged view/);
+  assert.match(said(false), /^highlight-place mistake: the highlight is \d+° from where the model puts it/);
+});

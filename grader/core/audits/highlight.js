@@ -1,7 +1,9 @@
 // What the highlight audits share (units/highlight.js, highlight-place.js): whether the highlight
 // sits at w_h, halfway between the light and the viewer (the slides' w_r · w_o peaks there too),
 // not at the light, in a view where that can be told.
-import { highlightOffset } from '../measure.js';
+import { highlightOffset, analyse } from '../measure.js';
+import { exactLighting } from '../computed/lighting.js';
+import { VIEW_WORDS } from './units/surface-fit.js';
 import { lightAngle } from '../computed/views.js';
 import { fmt } from '../format.js';
 import { PERCENT } from '../units.js';
@@ -31,6 +33,40 @@ export function judgePlace({ thresholds, sayAs, numbers }, place) {
   if (atLight) say('mistake', `the highlight sits at the light, not halfway between the light and the viewer: ${fmt(fromLight, 0)}° from the light, ${fmt(offset, 0)}° from the halfway normal (the light fitted at ${fitted}; ${where}): ${ask}`);
   else if (offset > thresholds.highlightPlaceDegrees) say('mistake', `the highlight is ${fmt(offset, 0)}° from where the model puts it (at the normal halfway between the light, fitted at ${fitted}, and the viewer; ${where}): ${ask}`);
   else say('pass', `the highlight sits where the normal is halfway between the light and the viewer (${fmt(offset, 0)}° off, ${where}${near ? `; with the light this near the viewer that halfway normal is only ${fmt(light / 2, 0)}° from the light, so a highlight at the light would pass too` : ''})`);
+}
+
+/**
+ * Says whether the highlight sits at w_h in `place` ({ fit, where, img }): on the page's own
+ * `surface` where it was read with that picture (placeOnSurface), else on the picture's fit.
+ */
+export function judgePlaceOn(context, place, surface) {
+  const { facts, images, thresholds } = context;
+  const exact = surface && place.img
+    ? exactLighting(facts, images, { img: place.img, an: analyse(place.img, thresholds) }, thresholds, surface)
+    : null;
+  if (!placeOnSurface(context, exact, place.where)) judgePlace(context, place);
+}
+
+/**
+ * The highlight's place read on the page's own surface in that view (its normals and positions as
+ * it drew them: the light and the highlight fitted there, computed/lighting.js): a w_o misread that
+ * explains the picture better by the rubric's margin is a mistake; the slide's w_o explaining it
+ * within surfaceResidual (Phong or Blinn-Phong, the normal colour in the material or not) places
+ * the highlight where the slide puts it. Says it and returns true; false where the surface decides
+ * nothing (not read, or no fit explains the picture: the picture's fit decides, as on the outline).
+ */
+function placeOnSurface({ sayAs, numbers, thresholds }, exact, where) {
+  if (!exact || exact.why || !exact.slide) return false;
+  const { best } = exact;
+  numbers.placeSurfaceFit = { slide: exact.slide, best: { name: best.name, rms: best.rms } };
+  const say = sayAs('highlight-place');
+  if (best.view && best.view !== 'the slide') {
+    say('mistake', `the highlight is not where the slide puts it: on the page's own surface in ${where}, ${VIEW_WORDS[best.view]} explains the picture with a residual of ${best.rms.toFixed(3)}, the slide's formula with ${exact.slide.rms.toFixed(3)} (w_o = normalize(e − p), from the point to the eye, in the space of n and w_i)`);
+    return true;
+  }
+  if (best.rms > thresholds.surfaceResidual || !best.form) return false;
+  say('pass', `the highlight sits where the slide's ${best.form === 'phong' ? 'Phong' : 'Blinn-Phong'} model with w_o = normalize(e − p) puts it, read on the page's own surface in ${where} (its normals and positions as it drew them): a residual of ${best.rms.toFixed(3)}${best.tint ? ', with the normal colour in the material' : ''}`);
+  return true;
 }
 
 /** Why a tinted fit cannot place a highlight, in words. */

@@ -49,7 +49,7 @@ export const shadingOf = memo((img, an, thresholds) => {
     fit && nearModel
       ? { ...fit, highlightPeak: pointLight.falloff.highlightPeak, highlightRise: pointLight.falloff.highlightRise }
       : fit;
-  return { fit, judgedFit, pointLight, nearModel };
+  return { img, fit, judgedFit, pointLight, nearModel };
 });
 
 /** The kept views' full fits (the lit views along the orbit), in the order kept. */
@@ -60,10 +60,12 @@ export function viewFits(views, thresholds) {
 /**
  * Where the highlight shows without touching the page: the judged view, else one of the lit views
  * along the orbit (not with a near point light: its 1/r² spot is read against its own model).
- * { fit, where } or null.
+ * { fit, where } or null; in the judged view, with its picture (`img`) and `atJudged`.
  */
 export function highlightShown(shading, views, thresholds) {
-  if (highlightSeen(shading.judgedFit, thresholds)) return { fit: shading.judgedFit, where: 'the judged view' };
+  if (highlightSeen(shading.judgedFit, thresholds)) {
+    return { fit: shading.judgedFit, where: 'the judged view', img: shading.img, atJudged: true };
+  }
   if (shading.nearModel) return null;
   const other = views.find((v) => v.fit && highlightSeen(v.fit, thresholds));
   return other ? { fit: other.fit, where: `one of ${views.length} lit views along the orbit` } : null;
@@ -99,7 +101,7 @@ export const highlightIn = (img, thresholds) => {
 
 /**
  * The highlight as the page's own sliders showed it once raised (`raised`: [{ role, image, broad }]
- * in the order set; each picture read again here): { fit, broad, where } or null.
+ * in the order set; each picture read again here): { fit, broad, where, img, atJudged } or null.
  */
 export function raisedSeen(raised, images, thresholds) {
   const k = raised.findIndex((x) => x.image && highlightIn(images[x.image], thresholds));
@@ -107,7 +109,7 @@ export function raisedSeen(raised, images, thresholds) {
   const x = raised[k];
   const img = images[x.image];
   const set = raised.slice(0, k + 1).map((r) => r.role);
-  return { fit: fullFit(img, thresholds), broad: x.broad,
+  return { fit: fullFit(img, thresholds), broad: x.broad, img, atJudged: true,
     where: `the judged view with ${set.join(' and ')} set by the page's own slider${set.length > 1 ? 's' : ''}` };
 }
 

@@ -6,12 +6,12 @@ import { SLIDE } from '../slides.js';
 import { viewFits } from '../../computed/evidence.js';
 import { unit } from '../unit.js';
 import { PERCENT } from '../../units.js';
-import { META as META_HIGHLIGHT_PLACE } from './highlight-place.js';
-import { judgePlace } from '../highlight.js';
+import { META as META_HIGHLIGHT_PLACE, judgedSurface } from './highlight-place.js';
+import { judgePlaceOn } from '../highlight.js';
 
 /** The audit this unit says: id → title, the slide's sentence it checks, the artifacts it reads. */
 export const META = {
-  highlight: { title: 'A specular highlight', slide: SLIDE.highlight, failureTitle: 'No specular highlight', description: 'Looks for a rise above the diffuse model, with ks and s raised by the page\'s own sliders where needed.', reads: ['images.judged', 'facts.views', 'facts.raised'] },
+  highlight: { title: 'A specular highlight', slide: SLIDE.highlight, failureTitle: 'No specular highlight', description: 'Looks for a rise above the diffuse model, with ks and s raised by the page\'s own sliders where needed.', reads: ['images.judged', 'facts.views', 'facts.raised', 'facts.surface', 'facts.stopped'] },
 };
 
 /**
@@ -30,7 +30,7 @@ export function auditHighlight(context, shading, views) {
   if (seen && !shading.nearModel) {
     if (!place) sayAs('highlight-place')('pass', 'note: the highlight\'s place is not judged: it shows only with s lowered to 10 by the page\'s own slider, which makes it too broad to place');
     else if (facts.placeFarther) later = place;
-    else judgePlace(context, place);
+    else judgePlaceOn(context, place, judgedSurface(facts, place));
   }
   if (!seen) say('mistake', `no specular highlight: nothing brighter than the diffuse fit (${fmt(fit.highlightPeak)}) in ${1 + views.length} views (the judged one${views.length ? ' and the lit ones along the orbit' : ''})`);
   return later;
