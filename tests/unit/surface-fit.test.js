@@ -96,6 +96,12 @@ test('w_o with the view matrix applied twice is named, and a w_o misread past th
   auditSurfaceFit({ sayAs: () => (level, reason) => said.push({ level, reason }) }, f);
   assert.deepEqual(said.map((x) => x.level), ['mistake']);
   assert.match(said[0].reason, /w_o is built with the view matrix applied twice/);
+  // two misreadings at once, each of which alone leaves the picture unexplained: w_o built with V
+  // twice and the normal colour added (the slide's formula with the colour, or with the misread w_o
+  // alone, do not beat the slide's formula by the margin; the two together do)
+  const both = fitOf(model({ woOf: twice, tint: 0.2, kd: [0.5, 0.5, 0.5], ks: 0.9 }));
+  assert.equal(both.best.view, 'with the view matrix applied twice', [both.slide.rms, ...both.variants.slice(0, 4).map((v) => `${v.name} ${v.rms}`)].join('\n'));
+  assert.equal(both.best.tint, 'added');
   // the normal colour kept in the material is the page's choice: a note, not a mistake
   const tinted = [];
   auditSurfaceFit({ sayAs: () => (level, reason) => tinted.push({ level, reason }) }, fitOf(model({ tint: 0.5, kd: [0.3, 0.3, 0.3] })));

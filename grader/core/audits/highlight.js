@@ -61,7 +61,8 @@ function placeOnSurface({ sayAs, numbers, thresholds }, exact, where) {
   numbers.placeSurfaceFit = { slide: exact.slide, best: { name: best.name, rms: best.rms } };
   const say = sayAs('highlight-place');
   if (best.view && best.view !== 'the slide') {
-    say('mistake', `the highlight is not where the slide puts it: on the page's own surface in ${where}, ${VIEW_WORDS[best.view]} explains the picture with a residual of ${best.rms.toFixed(3)}, the slide's formula with ${exact.slide.rms.toFixed(3)} (w_o = normalize(e − p), from the point to the eye, in the space of n and w_i)`);
+    const tint = best.tint ? ', with the normal colour in the material' : '';
+    say('mistake', `the highlight is not where the slide puts it: on the page's own surface in ${where}, the picture is explained with a residual of ${best.rms.toFixed(3)} (the slide's formula: ${exact.slide.rms.toFixed(3)}) where ${VIEW_WORDS[best.view]}${tint}: is w_o the direction from the surface to the eye, in the same space as n and w_i?`);
     return true;
   }
   if (best.rms > thresholds.surfaceResidual || !best.form) return false;

@@ -217,7 +217,8 @@ export function surfaceFit(surface, img, thresholds) {
   // the slide's formula (w_o as the slide has it, nothing added) stands unless it leaves a visible
   // residual (surfaceResidual) and a misreading explains the picture better by the rubric's margin
   // (a term more always fits a little better, and lighting per vertex fits a per-fragment model only
-  // nearly); one misreading at a time: the normal colour first, then w_o given that colour
+  // nearly); one misreading at a time: the normal colour first, then w_o given that colour, or the
+  // two together where neither alone explains the picture
   const slideView = (v) => !v.view || v.view === 'the slide';
   const slide = ranked.find((v) => slideView(v) && !v.tint);
   const better = (v, than) =>
@@ -225,8 +226,12 @@ export function surfaceFit(surface, img, thresholds) {
   let top = slide || ranked[0];
   const tinted = slide && ranked.find((v) => slideView(v) && v.tint);
   if (tinted && better(tinted, top)) top = tinted;
+  // w_o misread with the same colour, else with the normal colour beside it (two misreadings at once,
+  // each of which alone leaves the picture unexplained), past the margin over the slide's w_o
   const viewed = slide && ranked.find((v) => !slideView(v) && v.tint === top.tint);
+  const viewedTinted = slide && !top.tint && ranked.find((v) => !slideView(v) && v.tint);
   if (viewed && better(viewed, top)) top = viewed;
+  else if (viewedTinted && better(viewedTinted, top)) top = viewedTinted;
   const d = lights.null;
   return {
     samples: use.length,
