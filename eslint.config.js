@@ -27,6 +27,10 @@ export default [
     files: ['grader/node/**', 'grader/files/**', 'grader/similarity/**'],
     languageOptions: { globals: { ...globals.node, ...globals.browser } },
   },
+  {
+    files: ['grader/class/**'],
+    languageOptions: { globals: { ...globals.browser } },
+  },
   // the check page is a site page, and the grader owns what it runs (its browser launchers
   // included): both take the grader from grader/, never from the command-line tools
   {
@@ -48,6 +52,13 @@ export default [
   {
     files: ['grader/node/**'],
     rules: { 'no-restricted-imports': ['error', { patterns: [NOT_TOOLS, NOT_CHECK] }] },
+  },
+  // a class's outputs (grader/class/: the report, the grade files, the feedback pages and zip, the
+  // course sites' adapters) take rows and give files, in Node and in a page alike: no Node module,
+  // nothing of the command's (tests/unit/class-pure.test.js follows their imports all the way down)
+  {
+    files: ['grader/class/**'],
+    rules: { 'no-restricted-imports': ['error', { patterns: [NOT_TOOLS, NOT_CHECK, { regex: '^node:|(^|/)node/', message: 'grader/class/ takes rows and gives files, in Node and in a page alike: no Node module, nothing from grader/node/' }] }] },
   },
   // grader/node/ in rooms: cli/ (the command: options, help, progress, the teacher's loop) above
   // run/ (the browsers, the workers, serving a hand-in), sites/ (the course sites' downloads and

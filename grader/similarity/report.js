@@ -1,6 +1,6 @@
 // The similarity check in the grader's report: report.json's `similarity`, similar.csv, and a
 // section of report.html that the class grid links to (a badge on both hand-ins' rows).
-import { PARTS } from '../files/parts.js';
+import { PARTS } from '../core/part-names.js';
 import { csvText } from '../files/csv.js';
 import { esc } from '../files/html.js';
 

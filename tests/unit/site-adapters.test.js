@@ -1,4 +1,4 @@
-// The course sites as adapters (grader/node/sites/index.js): each says how its download names a
+// The course sites as adapters (grader/class/adapters/index.js): each says how its download names a
 // hand-in, its grade import file and where a student's feedback goes in the zip, and nothing else
 // names a site. A site made up here (an adapter put in the list, nothing else touched) is told from
 // its download's names, its hand-ins grouped, its grade file written and its feedback placed.
@@ -7,11 +7,11 @@ import assert from 'node:assert/strict';
 import { mkdtempSync, readFileSync, rmSync } from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
-import { SITE_ADAPTERS, siteAdapter } from '../../grader/node/sites/index.js';
+import { SITE_ADAPTERS, siteAdapter } from '../../grader/class/adapters/index.js';
 import { detectSite, groupBySite } from '../../grader/node/sites/intake/formats.js';
 import { writeGradeFiles } from '../../grader/node/sites/grades-export.js';
 import { feedbackZipPath } from '../../grader/node/sites/feedback-zip.js';
-import { importText, studentPoints } from '../../grader/node/sites/points.js';
+import { importText, studentPoints } from '../../grader/class/adapters/points.js';
 import { PARTS } from '../../grader/files/parts.js';
 
 const POINTS = { item: 'Worksheet 4', pass: 1, review: 0.5, fail: 0, weights: Object.fromEntries(PARTS.map((p) => [p, 1])) };

@@ -14,7 +14,7 @@ import { readClass } from '../../grader/node/report/class-results.js';
 import { prepareClass, writeTeacherFiles } from '../../grader/node/cli/teacher-loop.js';
 import { writeReport } from '../../grader/node/report/report.js';
 import { parseOverrides } from '../../grader/node/report/overrides.js';
-import { studentPoints } from '../../grader/node/sites/points.js';
+import { studentPoints } from '../../grader/class/adapters/points.js';
 import { readTable } from '../../grader/files/csv.js';
 import { zipEntries, entryData } from '../../grader/node/sites/intake/zip.js';
 import { PARTS } from '../../grader/files/parts.js';
@@ -152,7 +152,7 @@ test('item analysis: each part\'s checks with how many students each failed, rev
 });
 
 test('Canvas and Moodle import files have their documented columns', async () => {
-  const [{ canvasCsv }, { moodleCsv }] = await Promise.all([import('../../grader/node/sites/canvas.js'), import('../../grader/node/sites/moodle.js')]);
+  const [{ canvasCsv }, { moodleCsv }] = await Promise.all([import('../../grader/class/adapters/canvas.js'), import('../../grader/class/adapters/moodle.js')]);
   const { rows } = runReport();
   const ids = (n, extra) => ({ ...rows.find((s) => s.name === n), identity: { name: WHO[n].name, userId: WHO[n].userId, ...extra } });
   const canvas = readTable(canvasCsv([ids('ada', { sisUserId: 's012', sisLoginId: 'ada1', section: 'A' })], rubric.points).text);

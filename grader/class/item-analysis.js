@@ -3,8 +3,8 @@
 // first, so a teacher sees what the class missed, and which checks nobody misses. Reads the
 // grader's reasons, never the teacher's overrides.
 
-import { findingsOfResult } from '../../core/part-result.js';
-import { esc } from '../../files/html.js';
+import { findingsOfResult } from '../core/part-result.js';
+import { esc } from '../files/html.js';
 
 /**
  * A finding ({ id, level, reason }: findingsOfResult) as a check: { level (pass, review, fail), key

@@ -1,7 +1,7 @@
 // Plain folders, the adapter for a class that comes from no course site: a folder a student, named
 // as the teacher likes; no import file beside our grades-points.csv; the feedback zip a folder a
 // student, "<student>/feedback.html".
-import { safeName } from '../../files/layout.js';
+import { safeName } from '../../files/safe-name.js';
 
 export const folders = {
   id: 'folders',

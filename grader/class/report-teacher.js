@@ -1,7 +1,7 @@
 // What the report adds for the teacher's loop: who a hand-in is (the course site's name and ids,
 // its time, late, the earlier hand-ins and what the intake left out) and, on a part the teacher
 // set, the teacher's verdict marked as such with the grader's beside it.
-import { esc } from '../../files/html.js';
+import { esc } from '../files/html.js';
 
 const SITE = { brightspace: 'Brightspace', canvas: 'Canvas', moodle: 'Moodle', folders: 'a folder' };
 

@@ -2,7 +2,7 @@
 // file and our own grades-points.csv write them: points a part are the rubric's points for its
 // verdict times the part's weight (the "points" of grader/core/rubric.json); a part not graded here
 // gives no total, never a 0.
-import { PARTS } from '../../files/parts.js';
+import { PARTS } from '../../core/part-names.js';
 import { NOT_GRADED } from '../../core/verdict.js';
 import { csvText } from '../../files/csv.js';
 

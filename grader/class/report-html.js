@@ -1,16 +1,16 @@
 // report.html, the page a teacher reads: the class grid (a row a submission, a cell a part, sortable),
 // the agreement with the labels, the similarity and the item analysis, then each part's reasons,
 // pictures and numbers. Plain strings from the rows report.js sorts; every value from a hand-in escaped.
-import { PARTS } from '../../files/parts.js';
-import { safeName } from '../../files/layout.js';
+import { PARTS } from '../core/part-names.js';
+import { safeName } from '../files/safe-name.js';
 import { agreementHtml } from './labels.js';
-import { NOT_GRADED } from '../../core/verdict.js';
-import { findingsOfResult } from '../../core/part-result.js';
-import { similarityBadges, similarityHtml, SIMILARITY_CSS } from '../../similarity/run.js';
+import { NOT_GRADED } from '../core/verdict.js';
+import { findingsOfResult } from '../core/part-result.js';
+import { similarityBadges, similarityHtml, SIMILARITY_CSS } from '../similarity/report.js';
 import { identityHtml, teacherMark, TEACHER_CSS } from './report-teacher.js';
 import { itemAnalysisHtml } from './item-analysis.js';
-import { PERCENT, CHANNEL_MAX } from '../../core/units.js';
-import { esc } from '../../files/html.js';
+import { PERCENT, CHANNEL_MAX } from '../core/units.js';
+import { esc } from '../files/html.js';
 
 const VERDICTS = ['pass', 'review', 'fail'];
 /** A verdict's class name ("not graded here": not-graded). */
