@@ -6,7 +6,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { csvText, readRows, readTable } from '../../grader/files/csv.js';
-import { matchRoster, parseRoster } from '../../grader/node/sites/roster.js';
+import { matchRoster, parseRoster } from '../../grader/class/roster.js';
 import { parseLabels } from '../../grader/node/report/labels.js';
 import { parseOverrides } from '../../grader/node/report/overrides.js';
 

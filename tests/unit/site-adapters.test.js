@@ -8,7 +8,7 @@ import { mkdtempSync, readFileSync, rmSync } from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
 import { SITE_ADAPTERS, siteAdapter } from '../../grader/class/adapters/index.js';
-import { detectSite, groupBySite } from '../../grader/node/sites/intake/formats.js';
+import { detectSite, groupBySite } from '../../grader/class/intake/formats.js';
 import { writeGradeFiles } from '../../grader/node/sites/grades-export.js';
 import { feedbackZipPath } from '../../grader/node/sites/feedback-zip.js';
 import { importText, studentPoints } from '../../grader/class/adapters/points.js';

@@ -16,7 +16,7 @@ import { writeReport } from '../../grader/node/report/report.js';
 import { parseOverrides } from '../../grader/node/report/overrides.js';
 import { studentPoints } from '../../grader/class/adapters/points.js';
 import { readTable } from '../../grader/files/csv.js';
-import { zipEntries, entryData } from '../../grader/node/sites/intake/zip.js';
+import { zipEntries, entryData } from '../../grader/class/intake/zip.js';
 import { PARTS } from '../../grader/files/parts.js';
 import { agreement } from '../../grader/node/report/labels.js';
 

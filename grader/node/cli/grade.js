@@ -19,7 +19,7 @@ import { gradeInFirefox } from '../run/grade-firefox.js';
 import { gradingProgress } from './progress.js';
 import { auditAgain, regatherLines } from '../run/audit-only.js';
 import { takeIn } from '../sites/intake/batch.js';
-import { dueTime } from '../sites/intake/formats.js';
+import { dueTime } from '../../class/intake/formats.js';
 import { readClass } from '../report/class-results.js';
 import { prepareClass, writeTeacherFiles } from './teacher-loop.js';
 import { runSimilarity, writeSimilarityReport, SIMILARITY_HELP, parseBound } from '../../similarity/run.js';

@@ -7,7 +7,7 @@ import { copyFileSync, existsSync, readFileSync, rmSync } from 'node:fs';
 import path from 'node:path';
 import { readIntake } from '../sites/intake/intake.js';
 import { OVERRIDES_FILE, applyOverrides, readOverrides } from '../report/overrides.js';
-import { matchRoster, parseRoster } from '../sites/roster.js';
+import { matchRoster, parseRoster } from '../../class/roster.js';
 import { writeGradeFiles } from '../sites/grades-export.js';
 import { writeFeedback } from '../sites/feedback-zip.js';
 import { feedbackHtml } from '../report/feedback-page.js';

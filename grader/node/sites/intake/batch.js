@@ -4,7 +4,7 @@
 import { mkdirSync, writeFileSync } from 'node:fs';
 import path from 'node:path';
 import { intake } from './intake.js';
-import { IntakeError } from './zip.js';
+import { IntakeError } from '../../../class/intake/zip.js';
 import { PARTS } from '../../../files/parts.js';
 import { safeName } from '../../../files/layout.js';
 import { withFindings } from '../../../core/part-result.js';

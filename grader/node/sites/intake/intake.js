@@ -6,10 +6,10 @@
 // to OUT/intake.json, which every later run of the report (--report-only, --audit-only) reads.
 import { existsSync, lstatSync, readFileSync, readdirSync, rmSync, writeFileSync } from 'node:fs';
 import path from 'node:path';
-import { IntakeError, TooBig, entryData, zipEntries } from './zip.js';
-import { isJunk, safeSegments } from './names.js';
-import { groupBySite, lateOf, SITES } from './formats.js';
-import { findLayout } from './wrapping.js';
+import { IntakeError, TooBig, entryData, zipEntries } from '../../../class/intake/zip.js';
+import { isJunk, safeSegments } from '../../../class/intake/names.js';
+import { groupBySite, lateOf, SITES } from '../../../class/intake/formats.js';
+import { findLayout } from '../../../class/intake/wrapping.js';
 import { unpackHandin } from './unpack.js';
 import { safeName } from '../../../files/layout.js';
 

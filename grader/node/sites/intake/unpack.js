@@ -6,8 +6,8 @@
 // symbolic link is left out and said; two entries of the same name are both kept ("a (2).js").
 import { mkdirSync, writeFileSync } from 'node:fs';
 import path from 'node:path';
-import { IntakeError, TooBig, entryData, zipEntries } from './zip.js';
-import { distinct, isJunk, safeSegments } from './names.js';
+import { IntakeError, TooBig, entryData, zipEntries } from '../../../class/intake/zip.js';
+import { distinct, isJunk, safeSegments } from '../../../class/intake/names.js';
 
 const isZip = (name) => /\.zip$/i.test(name);
 

@@ -3,10 +3,10 @@
 // submission id, time, late) is read, never from a folder someone renamed afterwards. How each site
 // names its hand-ins is its adapter's (grader/class/adapters/brightspace.js, canvas.js, moodle.js,
 // folders.js: a folder a student, named as the teacher likes).
-import { SITE_ADAPTERS, siteAdapter } from '../../../class/adapters/index.js';
+import { SITE_ADAPTERS, siteAdapter } from '../adapters/index.js';
 
-export { SITES } from '../../../class/adapters/index.js';
-export { brightspaceTime } from '../../../class/adapters/brightspace.js';
+export { SITES } from '../adapters/index.js';
+export { brightspaceTime } from '../adapters/brightspace.js';
 
 /**
  * A due date as the teacher writes it ("2025-10-10 23:59" or "2025-10-10T23:59", the course site's

@@ -6,7 +6,7 @@
 // export; Moodle: Grades → Export → plain text, with ID number and email), CSV or TSV. A student
 // is matched on the user id where the roster has it (Canvas's ID), else on the full name, never
 // on a folder's name.
-import { readTable } from '../../files/csv.js';
+import { readTable } from '../files/csv.js';
 
 
 // a roster's columns, by the names each site exports them under

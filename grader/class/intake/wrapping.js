@@ -12,7 +12,7 @@
 //     was found and what each site's download looks like, never graded as one student.
 import { detectSite, SITES } from './formats.js';
 import { IntakeError } from './zip.js';
-import { partNumber, partsOf } from '../../../core/part-names.js';
+import { partNumber, partsOf } from '../../core/part-names.js';
 
 const PAGE = /\.html?$/i;
 const ZIP = /\.zip$/i;
