@@ -2,33 +2,18 @@
 // unpacked into, either one inside a folder around it: wrapping.js) turned into one folder a
 // student, each with the identity the site gave it.
 // A folder a student with no zip in it is graded where it is, as before; everything else is
-// unpacked (safely, bounded: unpack.js) into OUT/handins/<student>/. What was found is written
+// unpacked (safely, bounded: class/intake/unpack.js) into OUT/handins/<student>/. What was found is written
 // to OUT/intake.json, which every later run of the report (--report-only, --audit-only) reads.
 import { existsSync, lstatSync, readFileSync, readdirSync, rmSync, writeFileSync } from 'node:fs';
 import path from 'node:path';
-import { IntakeError, TooBig, entryData, zipEntries } from '../../../class/intake/zip.js';
-import { isJunk, safeSegments } from '../../../class/intake/names.js';
-import { groupBySite, lateOf, SITES } from '../../../class/intake/formats.js';
-import { findLayout } from '../../../class/intake/wrapping.js';
-import { unpackHandin } from './unpack.js';
+import { IntakeError, TooBig } from '../../../class/intake/zip.js';
+import { isJunk } from '../../../class/intake/names.js';
+import { SITES } from '../../../class/intake/formats.js';
+import { zipListing, downloadStudents } from '../../../class/intake/download.js';
+import { unpackHandin } from './unpack-folder.js';
 import { safeName } from '../../../files/layout.js';
 
 export const INTAKE_FILE = 'intake.json';
-
-/** The files of a download .zip: [{ segments, read(cap) }], and notes on what was left out. */
-function zipFiles(file) {
-  const bytes = readFileSync(file);
-  const entries = zipEntries(bytes);
-  const files = [], notes = [];
-  for (const e of entries) {
-    if (e.dir) continue;
-    const safe = safeSegments(e.name);
-    if (safe.unsafe || e.symlink) { notes.push(`left out "${e.name}" of the download: ${safe.unsafe || 'a symbolic link'}`); continue; }
-    if (isJunk(safe.segments)) continue;
-    files.push({ segments: safe.segments, read: (cap) => entryData(bytes, e, cap) });
-  }
-  return { files, notes };
-}
 
 /** The files under folder `root`: [{ segments, read(cap) }] (links are not followed, and said). */
 function folderFiles(root) {
@@ -64,29 +49,16 @@ export function intake(input, out, bounds, due = null) {
   const isZipFile = lstatSync(input).isFile();
   let listing;
   try {
-    listing = isZipFile ? zipFiles(input) : folderFiles(input);
+    listing = isZipFile ? zipListing(readFileSync(input)) : folderFiles(input);
   } catch (err) {
     if (err instanceof IntakeError) throw new IntakeError(`${input} could not be read as a download: ${err.message}`);
     throw err;
   }
-  // the site's own layout, looked for through any folder around it (wrapping.js)
-  const layout = findLayout(listing.files, input);
-  const { site, students, notes } = groupBySite(layout.files, layout.site);
-  for (const s of students) {
-    s.identity.late = lateOf(s.identity, due);
-    for (const e of s.earlier) e.late = lateOf(e, due);
-  }
-  if (due && students.some((s) => !s.identity.time && s.identity.late === null)) notes.push(`--due ${due.replace('T', ' ')}: this download's names carry no hand-in time, so late is not known`);
+  const { site, layout, students, notes } = downloadStudents(listing.files, input, due);
   const handins = path.join(out, 'handins');
   rmSync(handins, { recursive: true, force: true });
-  // the name the report shows: the site's name for the student, with the user id when two share one
-  const count = new Map();
-  for (const s of students) count.set(s.identity.name, (count.get(s.identity.name) || 0) + 1);
-  const used = new Set();
-  const submissions = students.sort((a, b) => a.identity.name.localeCompare(b.identity.name)).map((s) => {
-    let name = count.get(s.identity.name) > 1 && s.identity.userId ? `${s.identity.name} (${s.identity.userId})` : s.identity.name;
-    while (used.has(safeName(name))) name = `${name}+`;
-    used.add(safeName(name));
+  const submissions = students.map((s) => {
+    const { name } = s;
     const sub = { name, identity: s.identity, earlier: s.earlier, notes: [], error: null };
     if (site === 'folders' && !isZipFile && !s.files.some((f) => /\.zip$/i.test(f.segments[f.segments.length - 1]))) {
       // as before: a plain folder is graded where it lies

@@ -1,25 +1,24 @@
-// One student's hand-in written out to a folder of its own: the files as they came, every .zip
-// among them unpacked where it lies (a zip inside a zip too, up to the rubric's unpack.maxDepth),
-// the junk zip tools add left out, and the whole bounded by the rubric's unpack.maxBytes and
-// unpack.maxFiles, so that a zip bomb stops at the bound with a message for that student alone.
-// Nothing is written outside the folder: an entry whose name climbs out, is absolute or is a
-// symbolic link is left out and said; two entries of the same name are both kept ("a (2).js").
-import { mkdirSync, writeFileSync } from 'node:fs';
-import path from 'node:path';
-import { IntakeError, TooBig, entryData, zipEntries } from '../../../class/intake/zip.js';
-import { distinct, isJunk, safeSegments } from '../../../class/intake/names.js';
+// One student's hand-in unpacked: the files as they came, every .zip among them unpacked where it
+// lies (a zip inside a zip too, up to the rubric's unpack.maxDepth), the junk zip tools add left
+// out, and the whole bounded by the rubric's unpack.maxBytes and unpack.maxFiles, so that a zip
+// bomb stops at the bound with a message for that student alone. An entry whose name climbs out,
+// is absolute or is a symbolic link is left out and said; two entries of the same name are both
+// kept ("a (2).js"). Each file is handed, as it is read, to a `put` of the caller's (the command
+// writes it into the student's folder: grader/node/sites/intake/unpack-folder.js; a page keeps it).
+import { IntakeError, TooBig, entryData, zipEntries } from './zip.js';
+import { distinct, isJunk, safeSegments } from './names.js';
 
 const isZip = (name) => /\.zip$/i.test(name);
 
 /**
- * Writes a hand-in into `root` (an empty or missing folder). `files`: [{ segments, read(cap) }],
- * where read gives the file's bytes (at most cap of them, else it throws TooBig). `bounds`: the
- * rubric's unpack ({ maxBytes, maxFiles, maxDepth }). Returns { files, bytes, notes }; throws an
- * IntakeError with a message for the teacher when the hand-in cannot be unpacked.
+ * Unpacks a hand-in. `files`: [{ segments, read(cap) }], where read gives the file's bytes (at most
+ * cap of them, else it throws TooBig). `bounds`: the rubric's unpack ({ maxBytes, maxFiles,
+ * maxDepth }). `put(segments, data, shown)`: each file, under its own distinct path (segments), as
+ * it is read. Returns { files, bytes, notes }; throws an IntakeError with a message for the teacher
+ * when the hand-in cannot be unpacked.
  */
-export function unpackHandin(files, root, bounds) {
-  const state = { root, bounds, files: 0, bytes: 0, notes: [], names: new Map(), dirs: new Map() };
-  mkdirSync(root, { recursive: true });
+export function unpackFiles(files, bounds, put) {
+  const state = { put, bounds, files: 0, bytes: 0, notes: [], names: new Map(), dirs: new Map() };
   for (const f of files) {
     if (isJunk(f.segments)) continue;
     place(state, f.segments, (cap) => f.read(cap), 0, f.segments.join('/'));
@@ -42,7 +41,7 @@ function readBounded(state, read) {
   }
 }
 
-/** Places the file at `segments` (relative to the hand-in): a zip is unpacked into its folder, anything else written. */
+/** Places the file at `segments` (relative to the hand-in): a zip is unpacked into its folder, anything else handed on. */
 function place(state, segments, read, depth, shown) {
   const name = segments[segments.length - 1];
   if (isZip(name)) return unzipInto(state, segments.slice(0, -1), readBounded(state, read), depth + 1, shown);
@@ -50,7 +49,7 @@ function place(state, segments, read, depth, shown) {
   if (++state.files > state.bounds.maxFiles) throw new IntakeError(`it has more than ${state.bounds.maxFiles} files (the rubric's unpack.maxFiles); nothing of it was graded`);
   state.bytes += data.length;
   if (state.bytes > state.bounds.maxBytes) throw tooBig(state);
-  write(state, segments, data, shown);
+  handOn(state, segments, data, shown);
 }
 
 function unzipInto(state, folder, bytes, depth, shown) {
@@ -90,8 +89,8 @@ function namesIn(state, key) {
   return state.names.get(key);
 }
 
-/** Writes `data` at `segments`, keeping both when a name is taken (by a file or a folder). */
-function write(state, segments, data, shown) {
+/** Hands `data` on at `segments`, keeping both when a name is taken (by a file or a folder). */
+function handOn(state, segments, data, shown) {
   let folderKey = '';
   const real = [];
   for (const seg of segments.slice(0, -1)) {
@@ -108,16 +107,5 @@ function write(state, segments, data, shown) {
   if (file !== segments[segments.length - 1]) state.notes.push(`two files named "${shown}": the second kept as "${file}"`);
   taken.add(file);
   real.push(file);
-  const target = path.join(state.root, ...real);
-  const rel = path.relative(state.root, target);
-  if (!rel || rel.startsWith('..') || path.isAbsolute(rel)) throw new IntakeError(`"${shown}" would be written outside the hand-in`);
-  try {
-    mkdirSync(path.dirname(target), { recursive: true });
-    // (wx: never over a file, never through a link; the folder is new and only this code writes it)
-    writeFileSync(target, data, { flag: 'wx' });
-  } catch (err) {
-    // a path too long or too deep for this file system, a name it refuses: this hand-in's message
-    const short = shown.length > 120 ? `${shown.slice(0, 60)}…${shown.slice(-60)}` : shown;
-    throw new IntakeError(`"${short}" could not be written here (${err.code || err.message}); nothing of it was graded`, { cause: err });
-  }
+  state.put(real, data, shown);
 }
