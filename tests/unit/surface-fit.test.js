@@ -60,6 +60,22 @@ test('the normal colour added to the lighting is a term of its own; w_o fixed in
   assert.match(surfaceFit(null, null, T).why, /no surface/);
 });
 
+test('below the margin, the reason says the pictures cannot tell a w_o misread from the slide\'s', async () => {
+  const { auditSurfaceFit } = await import('../../grader/core/audits/units/surface-fit.js');
+  const said = (f, must) => {
+    const out = [];
+    auditSurfaceFit({ sayAs: () => (level, reason) => out.push(`${level}: ${reason}`), must: new Set(must), thresholds: T }, f);
+    return out.join('\n');
+  };
+  // w_o fixed at the eye space's (0, 0, 1): a little better than the slide's, not by the margin
+  const fixed = fitOf(model({ woOf: () => unit(eye) }));
+  assert.equal(fixed.best.view, 'the slide');
+  assert.match(said(fixed, ['highlight']), /^pass: note: on the page's own surface, a w_o misread explains the picture a little better than the slide's w_o \(w_o is one direction for the whole sphere .*the pictures cannot tell them apart$/);
+  // a step with no highlight asked for (P3) says nothing of w_o; nor does the slide's own picture
+  assert.equal(said(fixed, ['diffuse']), '');
+  assert.equal(said(fitOf(model()), ['highlight']), '');
+});
+
 test('the normal colour as the material, multiplying the lighting, is named as such', () => {
   const times = fitOf((p, k) => (0.5 * p[k] + 0.5) * model({ kd: [1, 1, 1] })(p, k));
   assert.equal(times.best.tint, 'times', times.best.name);

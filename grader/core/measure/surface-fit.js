@@ -175,7 +175,7 @@ function bestLight(cols, how) {
 /**
  * The model fitted on the page's surface and the picture: { samples, diffuse: { wi, rms, r2 }, slide:
  * the slide's formula's best { name, rms, s }, best: { name, wi, form, view, s, rms, tint } (the slide's
- * formula unless a variant beats it by the rubric's surfaceVariantMargin), variants: [{ name, rms }]
+ * formula unless a variant beats it by the rubric's surfaceVariantMargin), variants: [{ name, rms, s, view, tint }]
  * (lowest residual first) }, or { why }.
  * `surface` is core/computed/surface.js's (samples in the model's space, its camera).
  */
@@ -243,6 +243,8 @@ export function surfaceFit(surface, img, thresholds) {
     // the lighting is there, beside the normal colour: the colour alone leaves a visible residual that the lighting halves
     normalColourAlone: alone ? { rms: rms(alone) } : null,
     lit: !!alone && !!tinted && better(tinted, { fit: alone }),
-    variants: ranked.map((v) => ({ name: v.name, rms: Math.round(rms(v.fit) * RMS_ROUND) / RMS_ROUND, s: v.s })),
+    variants: ranked.map((v) => ({
+      name: v.name, rms: Math.round(rms(v.fit) * RMS_ROUND) / RMS_ROUND, s: v.s, view: v.view, tint: v.tint,
+    })),
   };
 }

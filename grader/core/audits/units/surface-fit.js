@@ -8,7 +8,7 @@ import { unit } from '../unit.js';
 
 /** The audit this unit says: id → title, the slide's sentence it checks, the artifacts it reads. */
 export const META = {
-  'surface-fit': { title: 'The lighting on the page\'s own surface', slide: SLIDE.eye, failureTitle: 'A known misreading explains the lighting on the page\'s own surface', description: 'Fits the slide\'s model and its known misreadings on each pixel\'s normal and position as the page drew them: a w_o taken otherwise than the slide\'s (fixed, from the world origin, the view matrix applied twice, its sign) that explains the picture better by the rubric\'s margin is a review, the normal colour kept in the material a note; where the surface could not be read, a note that the lighting was judged on the outline and why.', reads: ['facts.surface', 'images.judged'] },
+  'surface-fit': { title: 'The lighting on the page\'s own surface', slide: SLIDE.eye, failureTitle: 'A known misreading explains the lighting on the page\'s own surface', description: 'Fits the slide\'s model and its known misreadings on each pixel\'s normal and position as the page drew them: a w_o taken otherwise than the slide\'s (fixed, from the world origin, the view matrix applied twice, its sign) that explains the picture better by the rubric\'s margin is a review, the normal colour kept in the material a note, and a w_o misread a little better than the slide\'s but short of the margin a note that the pictures cannot tell them apart; where the surface could not be read, a note that the lighting was judged on the outline and why.', reads: ['facts.surface', 'images.judged'] },
 };
 
 /** How many of the fitted variants the numbers keep: what the report shows, not a bound. */
@@ -42,7 +42,7 @@ function inWords(best) {
  * the slide's formula (a w_o misread: a mistake; the normal colour in the material: a note); or that
  * the lighting was judged on the outline, and why.
  */
-export function auditSurfaceFit({ sayAs }, exact) {
+export function auditSurfaceFit({ sayAs, must = new Set(['highlight']), thresholds = {} }, exact) {
   const say = sayAs('surface-fit');
   if (exact && exact.why) {
     say('pass', `note: the lighting was judged on the outline (a sphere assumed from the silhouette), not on the page's own surface: ${exact.why}`);
@@ -50,6 +50,12 @@ export function auditSurfaceFit({ sayAs }, exact) {
   }
   if (!exact || !exact.slide) return;
   const { best, slide } = exact;
+  // where a highlight is asked for and fitted, a w_o misread that explains the picture clearly better
+  // than the slide's w_o (surfaceCloserShare of its residual), short of the margin: the pictures
+  // cannot tell them apart (said, never judged)
+  const closer = must.has('highlight') && best.form && !misread(best) && (exact.variants || [])
+    .find((v) => v.view && v.view !== 'the slide' && v.rms <= thresholds.surfaceCloserShare * best.rms);
+  if (closer) say('pass', `note: on the page's own surface, a w_o misread explains the picture a little better than the slide's w_o (${VIEW_WORDS[closer.view]}: a residual of ${fmt(closer.rms)}, against ${fmt(best.rms)}), by less than the rubric's margin: the pictures cannot tell them apart`);
   if (best.name === slide.name) return;
   // a misreading of w_o that explains the picture better by the rubric's margin is a mistake; the
   // normal colour kept in the material or added is the page's choice of material: a note
