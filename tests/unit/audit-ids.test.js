@@ -12,7 +12,7 @@ import { judgement } from '../../grader/core/part-result.js';
 import { mergeRubric } from '../../grader/core/rubric.js';
 import { AUDITS } from '../../grader/core/audits/index.js';
 import { missedSlides } from '../../check/slides.js';
-import { gradesCsv } from '../../grader/node/report/grades-csv.js';
+import { gradesCsv } from '../../grader/class/grades-csv.js';
 import { PARTS } from '../../grader/core/part-names.js';
 import { readTable } from '../../grader/files/csv.js';
 

@@ -16,7 +16,7 @@ import { judgement } from '../../grader/core/part-result.js';
 import { mergeRubric } from '../../grader/core/rubric.js';
 import { PARTS } from '../../grader/core/part-names.js';
 import { readArtifact, listArtifacts } from '../../grader/node/run/artifacts.js';
-import { gradesCsv } from '../../grader/node/report/grades-csv.js';
+import { gradesCsv } from '../../grader/class/grades-csv.js';
 import { readTable } from '../../grader/files/csv.js';
 import { auditTable, withTable, README } from '../../tools/audit-table.js';
 

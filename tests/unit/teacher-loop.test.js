@@ -172,3 +172,29 @@ test('overrides.tsv: bad lines are named; points follow the rubric', () => {
   const s = { parts: PARTS.map((part, k) => ({ part, verdict: ['pass', 'review', 'fail', 'pass', 'review'][k] })) };
   assert.equal(studentPoints(s, { ...rubric.points, weights: { ...rubric.points.weights, WP04P5: 2 } }).total, 1 + 0.5 + 0 + 1 + 2 * 0.5);
 });
+
+test('one call gives every file the command writes, the same bytes (class/outputs.js: the page\'s way to the same files)', async () => {
+  const { classOutputs } = await import('../../grader/class/outputs.js');
+  const { gradesCsv } = await import('../../grader/class/grades-csv.js');
+  const { zipEntries: entries, entryData: data } = await import('../../grader/class/intake/zip.js');
+  writeFileSync(path.join(out, 'overrides.tsv'), 'student\tpart\tverdict\tnote\nCy Twombly\tWP04P2\tpass\tFine in your own view.\n');
+  try {
+    // the command's way: the report, grades.csv (a class from a download), the grade files and the feedback
+    const { rows } = runReport();
+    writeFileSync(path.join(out, 'grades.csv'), gradesCsv(rows, PARTS));
+    const written = JSON.parse(readFileSync(path.join(out, 'report.json'), 'utf8'));
+    // one call, the pictures read as the command reads them
+    const { picturesIn } = await import('../../grader/node/report/feedback-page.js');
+    const { files } = classOutputs(readClassWithLoop(), { aClass: true, site: 'brightspace', rubric, generated: written.generated, pictureOf: picturesIn(out) });
+    const names = Object.keys(files).sort();
+    assert.deepEqual(names, ['feedback-brightspace.zip', ...NAMES.map((n) => `feedback/${n}.html`), 'grades-brightspace.csv', 'grades-points.csv', 'grades.csv', 'report.html', 'report.json'].sort());
+    for (const name of names.filter((n) => !n.endsWith('.zip'))) {
+      assert.equal(String(files[name]), readFileSync(path.join(out, ...name.split('/')), 'utf8'), name);
+    }
+    // the zip: the same entries, the same bytes in each (its own bytes carry each entry's time)
+    const zipped = (bytes) => Object.fromEntries(entries(bytes).map((e) => [e.name, Buffer.from(data(bytes, e, 1 << 26)).toString('base64')]));
+    assert.deepEqual(zipped(files['feedback-brightspace.zip']), zipped(readFileSync(path.join(out, 'feedback-brightspace.zip'))));
+  } finally {
+    rmSync(path.join(out, 'overrides.tsv'));
+  }
+});

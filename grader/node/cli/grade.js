@@ -9,7 +9,7 @@ import { PARTS, findPartsWithNotes } from '../../files/parts.js';
 import { linkedPart } from '../run/linked-part.js';
 import { readLabels, agreementText } from '../report/labels.js';
 import { writeReport } from '../report/report.js';
-import { gradesCsv } from '../report/grades-csv.js';
+import { gradesCsv } from '../../class/grades-csv.js';
 import { partFiles } from '../../files/layout.js';
 import { mergeRubric } from '../../core/rubric.js';
 import { CHROMIUM, CHROMIUM_HOW, CHROMIUM_INSTALL, CHROMIUM_MISSING } from '../run/chromium.js';

@@ -12,7 +12,10 @@ function dataUrl(out, rel) {
   return `data:image/png;base64,${readFileSync(f).toString('base64')}`;
 }
 
+/** The pictures of the report in `out`, as the feedback pages inline them: (href) → a data: URL or null. */
+export const picturesIn = (out) => (rel) => dataUrl(out, rel);
+
 /** The feedback page of student `s` ({ name, identity, parts }), its pictures read from `out`. */
 export function feedbackHtml(s, out, rubric) {
-  return feedbackPage(s, rubric, (rel) => dataUrl(out, rel));
+  return feedbackPage(s, rubric, picturesIn(out));
 }

@@ -2,8 +2,8 @@
 // something (its fails and reviews, and why it was not graded) and the ids of the audits that said
 // them (grader/core/audits/index.js). The reasons are chosen by their levels and ids, never by
 // their words: a sentence reworded moves no reason in or out of the file.
-import { csvText } from '../../files/csv.js';
-import { asking } from '../../core/part-result.js';
+import { csvText } from '../files/csv.js';
+import { asking } from '../core/part-result.js';
 
 /** grades.csv's text for `rows` (report.js's: { name, passes, parts: [{ part, verdict, reasons, findings }] }) over `parts`. */
 export function gradesCsv(rows, parts) {
