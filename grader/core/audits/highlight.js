@@ -3,7 +3,7 @@
 // not at the light, in a view where that can be told.
 import { highlightOffset, analyse } from '../measure.js';
 import { exactLighting } from '../computed/lighting.js';
-import { VIEW_WORDS } from './units/surface-fit.js';
+import { VIEW_WORDS, misread } from './units/surface-fit.js';
 import { lightAngle } from '../computed/views.js';
 import { fmt } from '../format.js';
 import { PERCENT } from '../units.js';
@@ -60,13 +60,13 @@ function placeOnSurface({ sayAs, numbers, thresholds }, exact, where) {
   const { best } = exact;
   numbers.placeSurfaceFit = { slide: exact.slide, best: { name: best.name, rms: best.rms } };
   const say = sayAs('highlight-place');
-  if (best.view && best.view !== 'the slide') {
-    const tint = best.tint ? ', with the normal colour in the material' : '';
+  const tint = best.tint ? ', with the normal colour in the material' : '';
+  if (misread(best)) {
     say('mistake', `the highlight is not where the slide puts it: on the page's own surface in ${where}, the picture is explained with a residual of ${best.rms.toFixed(3)} (the slide's formula: ${exact.slide.rms.toFixed(3)}) where ${VIEW_WORDS[best.view]}${tint}: is w_o the direction from the surface to the eye, in the same space as n and w_i?`);
     return true;
   }
   if (best.rms > thresholds.surfaceResidual || !best.form) return false;
-  say('pass', `the highlight sits where the slide's ${best.form === 'phong' ? 'Phong' : 'Blinn-Phong'} model with w_o = normalize(e − p) puts it, read on the page's own surface in ${where} (its normals and positions as it drew them): a residual of ${best.rms.toFixed(3)}${best.tint ? ', with the normal colour in the material' : ''}`);
+  say('pass', `the highlight sits where the slide's ${best.form === 'phong' ? 'Phong' : 'Blinn-Phong'} model with w_o = normalize(e − p) puts it, read on the page's own surface in ${where} (its normals and positions as it drew them): a residual of ${best.rms.toFixed(3)}${tint}`);
   return true;
 }
 

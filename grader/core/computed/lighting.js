@@ -4,6 +4,10 @@
 // lights nothing, an older artifact); { why } where it was read but cannot be used for this picture.
 import { surfaceOf } from './surface.js';
 import { surfaceFit } from '../measure/surface-fit.js';
+import { memo } from './memo.js';
+
+/** The fit on a surface and a picture, made once: the surface-fit unit and the highlight's place read the judged view's. */
+const fitOnce = memo(surfaceFit);
 import { pct } from '../format.js';
 
 /**
@@ -19,6 +23,6 @@ export function exactLighting(facts, images, judged, thresholds, surface = facts
   // the surface is the picture's: its pixels lie inside the sphere's outline (the view did not move between them)
   const inside = s.samples.filter((q) => an.mask[q.y * img.width + q.x]).length / Math.max(1, s.samples.length);
   if (inside < thresholds.surfaceMatch) return { why: `the page's surface, drawn again by the grader, is not its picture: ${pct(inside)} of it lies inside the picture's outline (the view moved between them, or the page draws with something the grader's copy leaves out, such as instancing or a second program's draw)` };
-  const fit = surfaceFit(s, img, thresholds);
+  const fit = fitOnce(s, img, thresholds);
   return fit.why ? fit : { ...fit, camera: s.camera, normal: s.normal };
 }

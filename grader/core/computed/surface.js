@@ -6,6 +6,7 @@
 import { solveNormal } from '../measure/linear.js';
 import { dot, cross, unit } from '../measure/vectors.js';
 import { CHANNEL_MAX, HALF_TURN } from '../units.js';
+import { memo } from './memo.js';
 
 /** A guard against dividing by (nearly) zero. */
 const GUARD = 1e-9;
@@ -63,9 +64,10 @@ export function cameraOfClip(A) {
  * (the 4×4 P·V·M, rows), normals, points }, the last two the names of its pictures in `images`; or { why }) as { width,
  * height, position, normal, camera, clip, samples: [{ x, y, p, n, front, w_o }] } for every step-th
  * pixel it covers (about the rubric's surfacePixels), or { why }. n is the normal attribute, else the position, as the
- * page interpolated it, normalised; w_o points from the position to the camera.
+ * page interpolated it, normalised; w_o points from the position to the camera. Read once a
+ * surface, its pictures and the rubric (the side seen, the lighting and the highlight's place read it).
  */
-export function surfaceOf(surface, images, thresholds) {
+export const surfaceOf = memo((surface, images, thresholds) => {
   if (!surface || surface.why) return { why: surface ? surface.why : 'the surface was not read' };
   const nImg = images[surface.normals], pImg = images[surface.points];
   if (!nImg || !pImg) return { why: 'the surface\'s pictures are missing from the artifact' };
@@ -90,7 +92,7 @@ export function surfaceOf(surface, images, thresholds) {
     }
   }
   return { width, height, position: surface.position, normal: surface.normal, clip, camera, samples };
-}
+});
 
 /** The angle in degrees between unit vectors a and b. */
 export const degreesBetween = (a, b) => (Math.acos(Math.max(-1, Math.min(1, dot(a, b)))) * HALF_TURN) / Math.PI;

@@ -2,7 +2,7 @@
 // projection (computed/surface.js): a pixel shows the near half's outside where its normal faces
 // the camera that the page's matrices set up (n · w_o > 0, w_o towards the camera's centre, or
 // along its direction for an orthographic projection), whatever the winding in the model's space.
-import { dot, unit } from './vectors.js';
+import { dot, cross, unit } from './vectors.js';
 
 /** A step along the sphere's surface, in the model's units, small against any sphere drawn (the mechanics of a derivative). */
 const STEP = 1e-3;
@@ -34,8 +34,7 @@ export function farSideCause(A, c, u) {
   if (near[2] > far[2]) return 'depth';
   // a small triangle through c facing the camera, counter-clockwise seen from the camera: its winding on the screen
   const a = Math.abs(u[0]) < ACROSS ? [1, 0, 0] : [0, 1, 0];
-  const s = [u[1] * a[2] - u[2] * a[1], u[2] * a[0] - u[0] * a[2], u[0] * a[1] - u[1] * a[0]];
-  const t = [u[1] * s[2] - u[2] * s[1], u[2] * s[0] - u[0] * s[2], u[0] * s[1] - u[1] * s[0]];
+  const s = cross(u, a), t = cross(u, s);
   const p0 = ndc(c), p1 = ndc(c.map((x, k) => x + STEP * s[k])), p2 = ndc(c.map((x, k) => x + STEP * t[k]));
   const area = (p1[0] - p0[0]) * (p2[1] - p0[1]) - (p1[1] - p0[1]) * (p2[0] - p0[0]);
   return area < 0 ? 'mirrored' : null;
@@ -47,7 +46,7 @@ export function farSideCause(A, c, u) {
  */
 export function sideSeen(s) {
   const side = nearSide(s.samples);
-  if (!side) return null;
+  if (!side || side.share === 1) return side && { ...side, cause: null };
   const c = [0, 1, 2].map((k) => s.samples.reduce((a, q) => a + q.p[k], 0) / s.samples.length);
   const u = s.camera.eye ? unit(s.camera.eye.map((x, k) => x - c[k])) : s.camera.towards;
   return { ...side, cause: u ? farSideCause(s.clip, c, u) : null };

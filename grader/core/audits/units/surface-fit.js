@@ -25,7 +25,7 @@ export const VIEW_WORDS = {
 };
 
 /** Does the best fit take w_o otherwise than the slide does? */
-const misread = (best) => !!best.view && best.view !== 'the slide';
+export const misread = (best) => !!best.view && best.view !== 'the slide';
 
 /** What a variant means, in a student's words. */
 function inWords(best) {
