@@ -1,7 +1,7 @@
 // The feedback pages (feedback/<student>.html; each page the report's, handed in by the caller)
 // and the feedback zip laid out as the course site takes it back: the download's own names, so each
 // file finds its student (where: the site's adapter's feedbackPath, grader/class/adapters/index.js).
-// Rows in, files out: the command writes them (grader/node/sites/feedback-zip.js).
+// Rows in, files out: the command writes them (grader/node/report/report.js's writeClass).
 import { zipSync, strToU8 } from 'fflate';
 import { safeName } from '../files/safe-name.js';
 import { siteAdapter } from './adapters/index.js';

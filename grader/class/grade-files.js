@@ -1,7 +1,7 @@
 // Grades to import into the course site, in its own format (its adapter's gradeFile:
 // grader/class/adapters/index.js), from the verdicts (a teacher's override counts, and is said); and
 // grades-points.csv, ours: every part's points, the total, and which parts a teacher set. Points
-// are adapters/points.js's. Rows in, files out: the command writes them (grader/node/sites/grades-export.js).
+// are adapters/points.js's. Rows in, files out: the command writes them (grader/node/report/report.js's writeClass).
 import { PARTS } from '../core/part-names.js';
 import { importText, num, studentPoints } from './adapters/points.js';
 import { siteAdapter } from './adapters/index.js';

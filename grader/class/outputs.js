@@ -11,8 +11,8 @@ import { feedbackPage } from './feedback-page.js';
 
 /**
  * The class's files from its graded `submissions` (with identity and overrides, as the report is
- * given them): { rows, agreed, left (what the site's import file leaves out), files: { relative
- * path: text or bytes } }. `labels` (parseLabels) and `similar` go into the report; `aClass`: it
+ * given them): { rows, agreed, left (what the site's import file leaves out), gradeFiles,
+ * feedbackPages, feedbackZip (their names), files: { relative path: text or bytes } }. `labels` (parseLabels) and `similar` go into the report; `aClass`: it
  * came as a download (grades.csv); `site`: the course site's adapter; `rubric`: points and the
  * feedback's words; `pictureOf(href)`: a picture as a data: URL, or null; `generated`: an ISO time.
  */
@@ -25,6 +25,9 @@ export function classOutputs(submissions, options) {
     rows,
     agreed,
     left: grades.left,
+    gradeFiles: Object.keys(grades.files),
+    feedbackPages: Object.keys(feedback.pages),
+    feedbackZip: Object.keys(feedback.zip)[0],
     files: {
       ...files, ...(aClass ? { 'grades.csv': gradesCsv(rows, PARTS) } : {}), ...grades.files, ...feedback.pages, ...feedback.zip,
     },

@@ -1,7 +1,7 @@
 // CSV and TSV, read and written by csv-parse and csv-stringify (RFC 4180: a quoted cell may hold
 // the delimiter, doubled quotes and line breaks; a BOM; CRLF or LF). Each file's own conventions
 // stay with the module that reads or writes it: Brightspace's "#" before an id (roster.js,
-// grades-export.js), the teacher's files as TSV with "#" comment lines (labels.js, overrides.js).
+// grade-files.js), the teacher's files as TSV with "#" comment lines (labels.js, overrides.js).
 import { parse } from 'csv-parse/sync';
 import { stringify } from 'csv-stringify/sync';
 

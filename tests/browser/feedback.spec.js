@@ -10,8 +10,8 @@ import path from 'node:path';
 import { pathToFileURL } from 'node:url';
 import { recordedOut, testRubric } from '../unit/recorded-out.js';
 import { readClass } from '../../grader/node/report/class-results.js';
-import { prepareClass, writeTeacherFiles } from '../../grader/node/cli/teacher-loop.js';
-import { writeReport } from '../../grader/node/report/report.js';
+import { prepareClass } from '../../grader/node/cli/teacher-loop.js';
+import { writeClass } from '../../grader/node/report/report.js';
 
 const NAMES = ['ada', 'cy', 'eve'];
 const FULL = { ada: 'Ada Lovelace', cy: 'Cy Twombly', eve: 'Eve Ærø Ås' };
@@ -26,8 +26,7 @@ test.beforeAll(async () => {
   writeFileSync(path.join(out, 'overrides.tsv'), 'student\tpart\tverdict\tnote\ncy\tWP04P1\tpass\tYour colours are right; the grader misread the background.\n');
   const graded = readClass(path.join(out, 'parts'));
   const loop = prepareClass(out, graded);
-  rows = writeReport(out, graded).rows;
-  writeTeacherFiles(out, rows, testRubric(), loop.site);
+  rows = writeClass(out, graded, { site: loop.site, rubric: testRubric() }).rows;
 });
 test.afterAll(() => rmSync(out, { recursive: true, force: true }));
 

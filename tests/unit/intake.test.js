@@ -17,7 +17,7 @@ import { intake, readIntake } from '../../grader/node/sites/intake/intake.js';
 import { brightspaceTime, detectSite, dueTime, groupBySite, lateOf } from '../../grader/class/intake/formats.js';
 import { decodeName, safeSegments } from '../../grader/class/intake/names.js';
 import { IntakeError } from '../../grader/class/intake/zip.js';
-import { feedbackZipPath } from '../../grader/node/sites/feedback-zip.js';
+import { feedbackZipPath } from '../../grader/class/feedback-zip.js';
 import { findParts } from '../../grader/files/parts.js';
 import { copyHandins } from '../fixtures/handins.js';
 import { makeZip, cp850, tree, entriesOf, idsOf, lastFirst, siteName } from './downloads.js';

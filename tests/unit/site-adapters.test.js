@@ -1,16 +1,13 @@
 // The course sites as adapters (grader/class/adapters/index.js): each says how its download names a
 // hand-in, its grade import file and where a student's feedback goes in the zip, and nothing else
 // names a site. A site made up here (an adapter put in the list, nothing else touched) is told from
-// its download's names, its hand-ins grouped, its grade file written and its feedback placed.
+// its download's names, its hand-ins grouped, its grade file made and its feedback placed.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { mkdtempSync, readFileSync, rmSync } from 'node:fs';
-import os from 'node:os';
-import path from 'node:path';
 import { SITE_ADAPTERS, siteAdapter } from '../../grader/class/adapters/index.js';
 import { detectSite, groupBySite } from '../../grader/class/intake/formats.js';
-import { writeGradeFiles } from '../../grader/node/sites/grades-export.js';
-import { feedbackZipPath } from '../../grader/node/sites/feedback-zip.js';
+import { gradeFiles } from '../../grader/class/grade-files.js';
+import { feedbackZipPath } from '../../grader/class/feedback-zip.js';
 import { importText, studentPoints } from '../../grader/class/adapters/points.js';
 import { PARTS } from '../../grader/files/parts.js';
 
@@ -43,7 +40,6 @@ test('a made-up site: one adapter in the list, and the intake tells it, groups i
     feedbackPath: (s, file) => `${s.identity.userId}_${file}`,
   };
   SITE_ADAPTERS.splice(SITE_ADAPTERS.length - 1, 0, blackboard);
-  const out = mkdtempSync(path.join(os.tmpdir(), 'site-adapter-'));
   try {
     const names = ['ws4_aiden_attempt_2025-10-10_p1.html', 'ws4_aiden_attempt_2025-10-10_common.js', 'ws4_bo_attempt_2025-10-09_handin.zip'];
     assert.equal(detectSite(names.map((top) => ({ top, isFile: true }))), 'blackboard');
@@ -51,12 +47,11 @@ test('a made-up site: one adapter in the list, and the intake tells it, groups i
     assert.equal(site, 'blackboard');
     assert.deepEqual(students.map((s) => [s.identity.userId, s.files.map((f) => f.segments.join('/'))]), [['aiden', ['p1.html', 'common.js']], ['bo', ['handin.zip']]]);
     const rows = students.map((s) => ({ name: s.identity.name, identity: s.identity, parts: PARTS.map((part) => ({ part, verdict: 'pass' })) }));
-    const { files } = writeGradeFiles(out, rows, site, POINTS);
-    assert.deepEqual(files.map((f) => path.basename(f)), ['grades-points.csv', 'grades-blackboard.csv']);
-    assert.equal(readFileSync(path.join(out, 'grades-blackboard.csv'), 'utf8'), 'Username,Worksheet 4\r\naiden,5\r\nbo,5\r\n');
+    const { files } = gradeFiles(rows, site, POINTS);
+    assert.deepEqual(Object.keys(files), ['grades-points.csv', 'grades-blackboard.csv']);
+    assert.equal(files['grades-blackboard.csv'], 'Username,Worksheet 4\r\naiden,5\r\nbo,5\r\n');
     assert.equal(feedbackZipPath(rows[1], site), 'bo_feedback.html');
   } finally {
     SITE_ADAPTERS.splice(SITE_ADAPTERS.indexOf(blackboard), 1);
-    rmSync(out, { recursive: true, force: true });
   }
 });

@@ -11,8 +11,8 @@ import os from 'node:os';
 import path from 'node:path';
 import { recordedOut } from './recorded-out.js';
 import { readClass } from '../../grader/node/report/class-results.js';
-import { prepareClass, writeTeacherFiles } from '../../grader/node/cli/teacher-loop.js';
-import { writeReport } from '../../grader/node/report/report.js';
+import { prepareClass } from '../../grader/node/cli/teacher-loop.js';
+import { writeClass } from '../../grader/node/report/report.js';
 import { parseOverrides } from '../../grader/node/report/overrides.js';
 import { studentPoints } from '../../grader/class/adapters/points.js';
 import { readTable } from '../../grader/files/csv.js';
@@ -34,8 +34,7 @@ let out, rubric;
 function runReport() {
   const graded = readClass(path.join(out, 'parts'));
   const loop = prepareClass(out, graded);
-  const { rows } = writeReport(out, graded);
-  writeTeacherFiles(out, rows, rubric, loop.site);
+  const { rows } = writeClass(out, graded, { site: loop.site, rubric });
   return { rows, report: JSON.parse(readFileSync(path.join(out, 'report.json'), 'utf8')) };
 }
 
@@ -173,15 +172,13 @@ test('overrides.tsv: bad lines are named; points follow the rubric', () => {
   assert.equal(studentPoints(s, { ...rubric.points, weights: { ...rubric.points.weights, WP04P5: 2 } }).total, 1 + 0.5 + 0 + 1 + 2 * 0.5);
 });
 
-test('one call gives every file the command writes, the same bytes (class/outputs.js: the page\'s way to the same files)', async () => {
+test('one call gives every file the command writes, the same bytes (class/outputs.js: the page\'s way to the same files; the command writes them, report.js\'s writeClass)', async () => {
   const { classOutputs } = await import('../../grader/class/outputs.js');
-  const { gradesCsv } = await import('../../grader/class/grades-csv.js');
   const { zipEntries: entries, entryData: data } = await import('../../grader/class/intake/zip.js');
   writeFileSync(path.join(out, 'overrides.tsv'), 'student\tpart\tverdict\tnote\nCy Twombly\tWP04P2\tpass\tFine in your own view.\n');
   try {
-    // the command's way: the report, grades.csv (a class from a download), the grade files and the feedback
-    const { rows } = runReport();
-    writeFileSync(path.join(out, 'grades.csv'), gradesCsv(rows, PARTS));
+    // the command's way (grade.js: a class from a download, so grades.csv too), written into OUT
+    writeClass(out, readClassWithLoop(), { aClass: true, site: 'brightspace', rubric });
     const written = JSON.parse(readFileSync(path.join(out, 'report.json'), 'utf8'));
     // one call, the pictures read as the command reads them
     const { picturesIn } = await import('../../grader/node/report/feedback-page.js');

@@ -8,8 +8,7 @@ import { fileURLToPath } from 'node:url';
 import { PARTS, findPartsWithNotes } from '../../files/parts.js';
 import { linkedPart } from '../run/linked-part.js';
 import { readLabels, agreementText } from '../report/labels.js';
-import { writeReport } from '../report/report.js';
-import { gradesCsv } from '../../class/grades-csv.js';
+import { writeClass } from '../report/report.js';
 import { partFiles } from '../../files/layout.js';
 import { mergeRubric } from '../../core/rubric.js';
 import { CHROMIUM, CHROMIUM_HOW, CHROMIUM_INSTALL, CHROMIUM_MISSING } from '../run/chromium.js';
@@ -21,7 +20,7 @@ import { auditAgain, regatherLines } from '../run/audit-only.js';
 import { takeIn } from '../sites/intake/batch.js';
 import { dueTime } from '../../class/intake/formats.js';
 import { readClass } from '../report/class-results.js';
-import { prepareClass, writeTeacherFiles } from './teacher-loop.js';
+import { prepareClass, teacherLines } from './teacher-loop.js';
 import { runSimilarity, writeSimilarityReport, SIMILARITY_HELP, parseBound } from '../../similarity/run.js';
 
 const here = path.dirname(fileURLToPath(import.meta.url));
@@ -309,20 +308,18 @@ async function reportClass(o, out, rubric, labels, submissions) {
   } catch (err) {
     fail(err.message, 2);
   }
-  const { rows, agreed } = writeReport(out, graded, labels, similar);
   // a class (its intake.json: taken in by --batch, here or on the machine of each shard) gets its
   // grades.csv from every part in parts/, --report-only too, so none is left from one shard or
   // from before an override
   const aClass = o.batch || existsSync(path.join(out, 'intake.json'));
-  if (aClass) {
-    writeFileSync(path.join(out, 'grades.csv'), gradesCsv(rows, PARTS));
-  }
+  const made = writeClass(out, graded, { labels, similar, aClass, site: loop.site, rubric });
+  const { rows, agreed } = made;
   if (aClass && !o.batch) console.log('grade: the similarity compares the hand-ins themselves: give --batch with the download as well to have it in the report');
   for (const s of rows) {
     console.log(`${s.name}: ${s.passes} of ${PARTS.length} pass · ` + s.parts.map((p) => `${p.part} ${p.verdict}${p.api ? ` (${p.api})` : ''}`).join(', '));
   }
   if (agreed) for (const line of agreementText(agreed)) console.log(line);
-  for (const line of [...loop.lines, ...writeTeacherFiles(out, rows, rubric, loop.site)]) console.log(`grade: ${line}`);
+  for (const line of [...loop.lines, ...teacherLines(out, made)]) console.log(`grade: ${line}`);
   const browsers = [...new Set(rows.flatMap((s) => s.parts.map((p) => p.browserVersion).filter(Boolean)))];
   if (browsers.length) console.log(`grade: graded in ${browsers.join(' and ')}`);
   console.log(`grade: report at ${path.join(out, 'report.html')}`);

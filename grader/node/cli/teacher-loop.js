@@ -1,16 +1,13 @@
 // The teacher's loop around the report, in every mode that writes it (grading, --audit-only,
 // --report-only): before, each student gets the identity the intake read (OUT/intake.json), the
 // roster's ids (--roster, kept as OUT/roster.csv) and the teacher's overrides (--overrides, or
-// OUT/overrides.tsv); after, the grade files in the course site's format, the feedback pages and
-// the feedback zip.
+// OUT/overrides.tsv); after, what the grade files and the feedback written (report/report.js's
+// writeClass) say.
 import { copyFileSync, existsSync, readFileSync, rmSync } from 'node:fs';
 import path from 'node:path';
 import { readIntake } from '../sites/intake/intake.js';
 import { OVERRIDES_FILE, applyOverrides, readOverrides } from '../report/overrides.js';
 import { matchRoster, parseRoster } from '../../class/roster.js';
-import { writeGradeFiles } from '../sites/grades-export.js';
-import { writeFeedback } from '../sites/feedback-zip.js';
-import { feedbackHtml } from '../report/feedback-page.js';
 
 /** An option's file, or OUT's file of that name when it is there, or null. */
 const fileOr = (given, out, names) => given || names.map((n) => path.join(out, n)).find((f) => existsSync(f)) || null;
@@ -57,12 +54,10 @@ export function prepareClass(out, submissions, { overrides, roster } = {}) {
   return { site: intake ? intake.site : 'folders', lines };
 }
 
-/** Writes the grade files and the feedback (pages and zip) for the report's `rows`; returns lines to say. */
-export function writeTeacherFiles(out, rows, rubric, site) {
-  const grades = writeGradeFiles(out, rows, site, rubric.points);
-  const feedback = writeFeedback(out, rows, (s) => feedbackHtml(s, out, rubric), site);
+/** What to say of the grade files and the feedback written into `out` (report.js's writeClass: `made`). */
+export function teacherLines(out, made) {
   return [
-    `grades: ${grades.files.map((f) => path.basename(f)).join(', ')}${grades.left.length ? `; left out of the import file: ${grades.left.join('; ')}` : ''}`,
-    `feedback: ${feedback.pages.length} page(s) in ${path.join(out, 'feedback')}, and ${path.basename(feedback.zip)} for the course site`,
+    `grades: ${made.gradeFiles.join(', ')}${made.left.length ? `; left out of the import file: ${made.left.join('; ')}` : ''}`,
+    `feedback: ${made.feedbackPages.length} page(s) in ${path.join(out, 'feedback')}, and ${made.feedbackZip} for the course site`,
   ];
 }
