@@ -10,8 +10,8 @@ import path from 'node:path';
 import { fileURLToPath } from 'node:url';
 
 const CLASS = path.join(path.dirname(fileURLToPath(import.meta.url)), '../../grader/class');
-// the packages the outputs are made with (each usable in a page): a new one is a choice made here
-const PACKAGES = ['fflate', 'csv-parse/sync', 'csv-stringify/sync'];
+// the packages the outputs are made with (each usable in a page; pixelmatch compares a part with ours): a new one is a choice made here
+const PACKAGES = ['fflate', 'csv-parse/sync', 'csv-stringify/sync', 'pixelmatch'];
 const SPECIFIER = /(?:^|[\s;])(?:import|export)\s[^'"]*?from\s*['"]([^'"]+)['"]|import\(\s*['"]([^'"]+)['"]\s*\)/g;
 
 const filesUnder = (dir) => readdirSync(dir).flatMap((f) => {

@@ -9,7 +9,7 @@ import { readFileSync } from 'node:fs';
 import path from 'node:path';
 import { auditPart } from '../../grader/core/audit.js';
 import { referenceQuery, referencePicture, referenceStateOf, meshLevel } from '../../grader/core/reference-state.js';
-import { compareImages } from '../../grader/node/run/compare.js';
+import { compareImages } from '../../grader/class/compare-images.js';
 import { readArtifact } from '../../grader/node/run/artifacts.js';
 import { RECORDED } from '../fixtures/record.js';
 import { PARTS } from '../../grader/core/part-names.js';

@@ -5,10 +5,10 @@
 import { writeFileSync } from 'node:fs';
 import path from 'node:path';
 import { LRUCache } from 'lru-cache';
-import { compareImages } from './compare.js';
 import { pngBytes } from './png.js';
 import { hrefOf } from '../../files/layout.js';
-import { referenceQuery, referenceStateOf, referencePicture } from '../../core/reference-state.js';
+import { referencePicture } from '../../core/reference-state.js';
+import { besideOurs } from '../../class/beside-ours.js';
 import { addStep } from '../../core/grade-part.js';
 
 // the pictures a worker keeps, in bytes of RGBA: 64 MiB holds 64 drawings at 512×512
@@ -40,24 +40,22 @@ export async function drawReference(args) {
 }
 
 function compareWithOurs({ item, plan, result, graded }) {
-  const judged = graded.images.judged;
-  const query = referenceQuery(judged, result.numbers, plan.rubric.thresholds, item.referenceQuery, item.part);
-  const key = `${item.part}?${query}`;
-  let drawing = drawings.get(key);
-  if (!drawing) drawings.set(key, (drawing = referencePicture(item.part, query, judged)));
-  if (drawing.why) result.notes.push(drawing.why);
-  if (drawing.scene) result.referenceState = referenceStateOf(query, drawing.scene);
-  if (!drawing.img) return;
-  const cmp = compareImages(drawing.img, judged);
-  const { mismatch, rmse, comparison, mismatchFull, mismatchObject } = cmp;
-  Object.assign(result, { mismatch, rmse, comparison, mismatchFull, mismatchObject });
-  const ours = result.referenceState && result.referenceState.level !== null
-    ? `our ${item.part} as it draws (its mesh at level ${result.referenceState.level}, in order, no depth test)` : 'the exact sphere our page shows';
-  result.notes.push(...cmp.notes, `the reference is ${ours} at the same canvas size${result.referenceState && result.referenceState.light ? ', lit from the fitted light' : ''}; the difference is evidence, the verdict comes from the checks`);
+  const draw = (part, query, judged) => {
+    const key = `${part}?${query}`;
+    let drawing = drawings.get(key);
+    if (!drawing) drawings.set(key, (drawing = referencePicture(part, query, judged)));
+    return drawing;
+  };
+  const ours = besideOurs({ part: item.part, judged: graded.images.judged, numbers: result.numbers, rubric: plan.rubric,
+    query: item.referenceQuery, draw });
+  result.notes.push(...ours.notes);
+  if (ours.referenceState) result.referenceState = ours.referenceState;
+  if (!ours.reference) return;
+  Object.assign(result, ours.compared);
   const dir = path.dirname(item.resultFile);
   const stem = path.basename(item.resultFile, '.json');
   const reference = path.join(dir, `${stem}-reference.png`), diff = path.join(dir, `${stem}-diff.png`);
-  writeFileSync(reference, pngBytes(cmp.reference));
-  writeFileSync(diff, pngBytes(cmp.diff));
+  writeFileSync(reference, pngBytes(ours.reference));
+  writeFileSync(diff, pngBytes(ours.diff));
   Object.assign(result.images, { reference: hrefOf(plan.out, reference), diff: hrefOf(plan.out, diff) });
 }

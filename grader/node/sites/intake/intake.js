@@ -8,9 +8,9 @@ import { existsSync, lstatSync, readFileSync, readdirSync, rmSync, writeFileSync
 import path from 'node:path';
 import { IntakeError, TooBig } from '../../../class/intake/zip.js';
 import { isJunk } from '../../../class/intake/names.js';
-import { SITES } from '../../../class/intake/formats.js';
-import { zipListing, downloadStudents } from '../../../class/intake/download.js';
-import { unpackHandin } from './unpack-folder.js';
+import { zipListing } from '../../../class/intake/download.js';
+import { takeInDownload } from '../../../class/intake/take-in.js';
+import { handinWriter } from './unpack-folder.js';
 import { safeName } from '../../../files/layout.js';
 
 export const INTAKE_FILE = 'intake.json';
@@ -54,35 +54,24 @@ export function intake(input, out, bounds, due = null) {
     if (err instanceof IntakeError) throw new IntakeError(`${input} could not be read as a download: ${err.message}`);
     throw err;
   }
-  const { site, layout, students, notes } = downloadStudents(listing.files, input, due);
   const handins = path.join(out, 'handins');
   rmSync(handins, { recursive: true, force: true });
-  const submissions = students.map((s) => {
-    const { name } = s;
-    const sub = { name, identity: s.identity, earlier: s.earlier, notes: [], error: null };
+  const got = takeInDownload(listing, input, bounds, due, (s, sub, { site, layout }) => {
     if (site === 'folders' && !isZipFile && !s.files.some((f) => /\.zip$/i.test(f.segments[f.segments.length - 1]))) {
       // as before: a plain folder is graded where it lies
-      return { ...sub, root: path.resolve(input, ...layout.prefix, s.identity.source[0].replace(/\/$/, '')) };
+      sub.root = path.resolve(input, ...layout.prefix, s.identity.source[0].replace(/\/$/, ''));
+      return null;
     }
-    sub.root = path.join(handins, safeName(name));
-    try {
-      const done = unpackHandin(s.files, sub.root, bounds);
-      sub.notes = done.notes;
-      Object.assign(sub, { files: done.files, bytes: done.bytes });
-    } catch (err) {
-      if (!(err instanceof IntakeError)) throw err;
-      rmSync(sub.root, { recursive: true, force: true });
-      sub.error = `the hand-in could not be unpacked: ${err.message}`;
-    }
-    return sub;
+    sub.root = path.join(handins, safeName(sub.name));
+    return { put: handinWriter(sub.root), failed: () => rmSync(sub.root, { recursive: true, force: true }) };
   });
   const result = {
-    site,
-    found: SITES[site],
+    site: got.site,
+    found: got.found,
     input: path.resolve(input),
     due,
-    submissions,
-    notes: [...listing.notes, ...layout.notes, ...notes],
+    submissions: got.submissions,
+    notes: got.notes,
     seconds: (Date.now() - t0) / 1000,
   };
   writeFileSync(path.join(out, INTAKE_FILE), JSON.stringify(result, null, 1));

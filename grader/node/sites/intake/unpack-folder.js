@@ -4,16 +4,14 @@
 import { mkdirSync, writeFileSync } from 'node:fs';
 import path from 'node:path';
 import { IntakeError } from '../../../class/intake/zip.js';
-import { unpackFiles } from '../../../class/intake/unpack.js';
 
 /**
- * Writes a hand-in into `root` (an empty or missing folder). `files`: [{ segments, read(cap) }];
- * `bounds`: the rubric's unpack. Returns { files, bytes, notes }; throws an IntakeError with a
- * message for the teacher when the hand-in cannot be unpacked.
+ * The `put` of unpack.js's unpackFiles that writes a hand-in into `root` (an empty or missing
+ * folder, made here); it throws an IntakeError with a message for the teacher for a file it cannot write.
  */
-export function unpackHandin(files, root, bounds) {
+export function handinWriter(root) {
   mkdirSync(root, { recursive: true });
-  return unpackFiles(files, bounds, (real, data, shown) => {
+  return (real, data, shown) => {
     const target = path.join(root, ...real);
     const rel = path.relative(root, target);
     if (!rel || rel.startsWith('..') || path.isAbsolute(rel)) throw new IntakeError(`"${shown}" would be written outside the hand-in`);
@@ -26,5 +24,5 @@ export function unpackHandin(files, root, bounds) {
       const short = shown.length > 120 ? `${shown.slice(0, 60)}…${shown.slice(-60)}` : shown;
       throw new IntakeError(`"${short}" could not be written here (${err.code || err.message}); nothing of it was graded`, { cause: err });
     }
-  });
+  };
 }

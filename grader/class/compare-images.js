@@ -1,8 +1,8 @@
-// Comparing a submission's canvas with the reference's (both PNGs decoded by pngjs, one size):
-// pixelmatch over the whole picture, and over the object only (each picture's background
-// estimated from its corners and masked out), since students pick their own clear colours.
+// Comparing a submission's canvas with the reference's (pictures { width, height, data: RGBA } of
+// one size): pixelmatch over the whole picture, and over the object only (each picture's
+// background estimated from its corners and masked out), since students pick their own clear
+// colours. No Node: the command (node/run/reference.js) and the class page (grade/) compare alike.
 import pixelmatch from 'pixelmatch';
-import { PNG } from 'pngjs';
 
 // The most common colour among the four corners' 3×3 patches.
 function background(img) {
@@ -26,20 +26,21 @@ const near = (data, o, c, tol) =>
 
 /**
  * @returns {{mismatch, mismatchFull, mismatchObject, rmse, comparison: 'full'|'object-only', notes: string[],
- *   reference: PNG, submission: PNG, diff: PNG}} mismatch is a fraction 0..1 of the pixels compared
+ *   reference, submission, diff}} mismatch is a fraction 0..1 of the pixels compared; the pictures
+ *   are { width, height, data }
  */
 export function compareImages(reference, submission) {
   const { width, height } = reference;
   if (submission.width !== width || submission.height !== height) throw new Error('compareImages: the pictures must have one size');
   const n = width * height;
   const notes = [];
-  const diff = new PNG({ width, height });
+  const diff = { width, height, data: new Uint8Array(4 * n) };
   const mismatchFull = pixelmatch(reference.data, submission.data, diff.data, width, height, { threshold: 0.1 }) / n;
 
   const bgRef = background(reference), bgSub = background(submission);
   // the object: pixels away from their own picture's background; compared with both backgrounds
   // painted black, counted over the union of the two objects
-  const a = Buffer.from(reference.data), b = Buffer.from(submission.data);
+  const a = Uint8Array.from(reference.data), b = Uint8Array.from(submission.data);
   const union = new Uint8Array(n);
   let unionCount = 0;
   for (let p = 0; p < n; p++) {
