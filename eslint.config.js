@@ -73,6 +73,12 @@ export default [
     files: ['check/**'],
     rules: { 'no-restricted-imports': ['error', { patterns: [NOT_TOOLS, { regex: '(^|/)grader/(node|similarity|files)/', message: 'the check page takes the grader from grader/core/ only' }] }] },
   },
+  // the class page grades in the browser with the check page's runner and the grader's modules
+  // that need no Node (grader/core/, grader/class/)
+  {
+    files: ['grade/**'],
+    rules: { 'no-restricted-imports': ['error', { patterns: [NOT_TOOLS, { regex: '^node:|(^|/)grader/(node|similarity)/', message: 'the class page runs in a browser: grader/core/, grader/class/ and check/, no Node' }] }] },
+  },
   // the grader's core runs in Node (npm run grade) and in the browser (the check page) alike: no
   // Node module, no DOM; only the language and the timers both have
   {
@@ -85,7 +91,7 @@ export default [
   // a line of code read without scrolling (the sentences a reason says, in strings, aside); a
   // statement broken over lines keeps its branches in braces
   {
-    files: ['grader/**', 'check/**'],
+    files: ['grader/**', 'check/**', 'grade/**'],
     rules: {
       'max-len': ['error', { code: 120, ignoreStrings: true, ignoreTemplateLiterals: true, ignoreRegExpLiterals: true, ignoreComments: true, ignoreUrls: true }],
       curly: ['error', 'multi-line'],
@@ -94,14 +100,14 @@ export default [
   // in the grader and the check page, every line of code within 120 characters, however short a
   // string it holds (max-len's ignoreStrings passes the whole line): tools/eslint/code-length.js
   {
-    files: ['grader/**', 'check/**'],
+    files: ['grader/**', 'check/**', 'grade/**'],
     plugins: { local: { rules: { 'code-length': codeLength } } },
     rules: { 'local/code-length': ['error', { code: 120 }] },
   },
   // a module a maintainer reads in one sitting, a function on one screen; the functions
   // still to split say so where they are (eslint-disable-next-line, with why)
   {
-    files: ['grader/**', 'check/**'],
+    files: ['grader/**', 'check/**', 'grade/**'],
     rules: {
       'max-lines': ['error', { max: 300, skipBlankLines: true, skipComments: true }],
       'max-lines-per-function': ['error', { max: 80, skipBlankLines: true, skipComments: true }],

@@ -6,6 +6,7 @@ import { spawnSync } from 'node:child_process';
 import { cpSync, mkdirSync, readFileSync, readdirSync, statSync, writeFileSync } from 'node:fs';
 import path from 'node:path';
 import { expect } from '@playwright/test';
+import AxeBuilder from '@axe-core/playwright';
 import { zipSync } from 'fflate';
 
 /** Picks `dir` on the check page and waits for window.check.done; returns window.check and the seconds it took. */
@@ -109,4 +110,11 @@ export async function checkClassInFirefox(firefox, baseURL, dir, names, zips) {
     await page.close();
   }
   return out;
+}
+
+/** No serious or critical violation axe finds on the page as it is now (the frames being graded left out). */
+export async function expectAccessible(page, what) {
+  const { violations } = await new AxeBuilder({ page }).exclude('#stage').exclude('#stages').analyze();
+  const bad = violations.filter((v) => ['serious', 'critical'].includes(v.impact)).map((v) => `${v.id}: ${v.help} (${v.nodes.length}× e.g. ${v.nodes[0].target})`);
+  expect(bad, what).toEqual([]);
 }

@@ -15,7 +15,6 @@ import { cpSync, existsSync, mkdirSync, mkdtempSync, readFileSync, readdirSync, 
 import os from 'node:os';
 import path from 'node:path';
 import { test, expect, chromium } from '@playwright/test';
-import AxeBuilder from '@axe-core/playwright';
 import { zipSync } from 'fflate';
 import { PNG } from 'pngjs';
 import { buildClass } from '../fixtures/build.js';
@@ -23,7 +22,7 @@ import { copyHandins } from '../fixtures/handins.js';
 import { CHROMIUM, CHROMIUM_ARGS, WEBGPU_ARGS } from '../../grader/node/run/chromium.js';
 import { STEPS, maxDifference, renderThumbnails, thumbnailPath } from '../../tools/thumbnails.js';
 import { readPNG } from '../../tools/reference/png.js';
-import { checkFolder, gradeVerdicts, routeRubric } from './check-helpers.js';
+import { checkFolder, expectAccessible, gradeVerdicts, routeRubric } from './check-helpers.js';
 import { AUDITS } from '../../grader/core/audits/index.js';
 
 const ALL = !!process.env.CHECK_ALL;
@@ -31,12 +30,6 @@ const SHARED = path.resolve('../shared/handins');
 // eslint-disable-next-line no-empty-pattern -- Playwright wants the fixtures argument destructured
 test.beforeEach(({}, testInfo) => test.skip(testInfo.project.name !== 'webgl2', 'its own Chromium with WebGPU; once is enough'));
 
-/** No serious or critical violation axe finds on the page as it is now. */
-async function expectAccessible(page, what) {
-  const { violations } = await new AxeBuilder({ page }).exclude('#stage').analyze();
-  const bad = violations.filter((v) => ['serious', 'critical'].includes(v.impact)).map((v) => `${v.id}: ${v.help} (${v.nodes.length}× e.g. ${v.nodes[0].target})`);
-  expect(bad, what).toEqual([]);
-}
 
 test('the front page shows each step as its own render, and links to the self-check', async ({ page }) => {
   test.setTimeout(180_000);

@@ -6,7 +6,7 @@ import { existsSync, mkdirSync, readFileSync, rmSync, statSync, writeFileSync } 
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { PARTS, findPartsWithNotes } from '../../files/parts.js';
-import { linkedPart } from '../run/linked-part.js';
+import { linkedPart } from '../../class/linked-part.js';
 import { readLabels, agreementText } from '../report/labels.js';
 import { writeClass } from '../report/report.js';
 import { partFiles } from '../../files/layout.js';
@@ -225,7 +225,8 @@ async function gradeParts(o, out, rubric, submissions) {
       const cfg = rubric.parts[part] || {};
       const page = parts[part] && existsSync(path.join(s.root, parts[part])) ? parts[part] : null;
       // a page that only links to another part's page is graded once, as that part
-      const linksTo = page ? linkedPart(readFileSync(path.join(s.root, page), 'utf8'), page, parts) : null;
+      const html = page ? readFileSync(path.join(s.root, page), 'utf8') : null;
+      const linksTo = page ? linkedPart(html, page, parts, { pathImpl: path }) : null;
       items.push({
         name: s.name, part, root: s.root, page,
         ...(linksTo ? { linksTo } : {}),

@@ -7,10 +7,7 @@ import { intake } from './intake.js';
 import { IntakeError } from '../../../class/intake/zip.js';
 import { PARTS } from '../../../files/parts.js';
 import { safeName } from '../../../files/layout.js';
-import { withFindings } from '../../../core/part-result.js';
-
-/** The status of a part whose hand-in could not be unpacked. */
-export const NOT_UNPACKED = 'not unpacked';
+import { notUnpackedRow } from '../../../class/part-rows.js';
 
 /**
  * Reads the download `input` into `out` (the rubric's unpack bounds; `due`, dueTime's form, makes a
@@ -47,10 +44,6 @@ function writeNotUnpacked(out, s) {
   const dir = path.join(out, 'parts', safeName(s.name));
   mkdirSync(dir, { recursive: true });
   for (const part of PARTS) {
-    const notUnpacked = { id: 'not-unpacked', level: 'fail', reason: s.error };
-    const failed = { name: s.name, part, status: NOT_UNPACKED, verdict: 'fail', pass: false };
-    const result = { ...withFindings(failed, [notUnpacked]),
-      api: null, actions: [], mismatch: null, rmse: null, errors: [], blocked: [] };
-    writeFileSync(path.join(dir, `${part}.json`), JSON.stringify(result, null, 1));
+    writeFileSync(path.join(dir, `${part}.json`), JSON.stringify(notUnpackedRow(s.name, part, s.error), null, 1));
   }
 }

@@ -1,0 +1,124 @@
+// One student of the class graded in the class page, as `npm run grade -- --batch` grades them:
+// the parts found by the grader's names (check/files.js, grader/core/part-names.js), a page that
+// only links to another part's page graded once (grader/class/linked-part.js), each part in a frame
+// of its own with the grader's modules (check/runner.js), our reference beside it
+// (grader/class/beside-ours.js), and each part's row in the command's form (grader/class/part-rows.js),
+// its pictures kept here as PNG data: URLs under the names the command's out folder gives them.
+import { partsOfHandIn, titlesOfHandIn } from '../check/files.js';
+import { openSession } from '../check/host.js';
+import { checkPart } from '../check/runner.js';
+import { handInSource } from '../check/serve.js';
+import { NOT_CHECKED } from '../check/not-checked.js';
+import { PARTS } from '../grader/core/part-names.js';
+import { NOT_GRADED } from '../grader/core/verdict.js';
+import { withFindings } from '../grader/core/part-result.js';
+import { linkedPage } from '../grader/core/audits/page.js';
+import { besideOurs } from '../grader/class/beside-ours.js';
+import { linkedPart, POSIX_PATHS } from '../grader/class/linked-part.js';
+import { missingRow, notUnpackedRow, partRow } from '../grader/class/part-rows.js';
+import { safeName } from '../grader/files/safe-name.js';
+
+/** An image { width, height, data } as a PNG data: URL. */
+export function pngURL(img) {
+  const c = document.createElement('canvas');
+  Object.assign(c, { width: img.width, height: img.height });
+  const pixels = new Uint8ClampedArray(img.data.buffer, img.data.byteOffset, img.data.byteLength);
+  c.getContext('2d').putImageData(new ImageData(pixels, img.width, img.height), 0, 0);
+  return c.toDataURL('image/png');
+}
+
+/** A verdict the check page gives for want of WebGPU (or its own trouble), in the command's words: not graded here. */
+function asNotGraded(r) {
+  if (r.verdict !== NOT_CHECKED) return r;
+  const findings = r.findings.map((f) => (f.level === NOT_CHECKED
+    ? { ...f, level: NOT_GRADED, reason: f.reason.replace(/^not checked here/, NOT_GRADED) } : f));
+  return { ...withFindings(r, findings), verdict: NOT_GRADED };
+}
+
+/** The status report.json gives a graded part, from its verdict. */
+const statusOf = (verdict) => (verdict === NOT_GRADED ? NOT_GRADED : verdict === 'fail' ? 'failed' : 'ok');
+
+/** Our step beside `row` (the part graded: `r`, check/runner.js's result), its pictures kept by `keep`. */
+function beside(row, r, rubric, keep) {
+  const { part } = row;
+  try {
+    const query = (rubric.parts[part] || {}).referenceQuery;
+    const ours = besideOurs({ part, judged: r.images.judged, numbers: r.numbers, rubric, query });
+    row.notes.push(...ours.notes);
+    if (ours.referenceState) row.referenceState = ours.referenceState;
+    if (ours.reference) {
+      Object.assign(row, ours.compared);
+      keep('reference', ours.reference, `parts/${safeName(row.name)}/${part}-reference.png`);
+      keep('diff', ours.diff, `parts/${safeName(row.name)}/${part}-diff.png`);
+    }
+  } catch (err) {
+    row.notes.push(`our reference could not be drawn: ${String(err && err.message).split('\n')[0]}`);
+  }
+}
+
+/** The row of part `part` of student `name`, whose page `page` was graded: `r` (check/runner.js's result), `notes` first. */
+function gradedRow(name, part, page, r, { notes, browserVersion }) {
+  return partRow(name, part, page, {
+    status: statusOf(r.verdict), verdict: r.verdict, api: r.api, reasons: r.reasons, findings: r.findings,
+    actions: r.actions, controls: r.controls, numbers: r.numbers, pass: r.verdict === 'pass',
+    notes: [...notes, ...r.notes], errors: r.errors, blocked: r.blocked, images: {},
+    ...(browserVersion ? { browserVersion } : {}), canvas: r.canvas, seconds: r.seconds,
+  });
+}
+
+/** The parts found in `files` (Map path → Blob) as the grader finds them: { parts, notes } (none where no page is named for a part). */
+async function partsOf(files) {
+  try {
+    return partsOfHandIn(files, await titlesOfHandIn(files));
+  } catch {
+    return { parts: {}, notes: {} }; // (every part is missing, as the command finds it)
+  }
+}
+
+/**
+ * The parts of `student` (take-in's submission with its handIn: Map path → bytes) graded: their
+ * rows, in PARTS' order. `pictures` (Map href → data: URL) gets every picture a row names.
+ * `stage`: the element the frames open in; `progress(part, what)`; `browserVersion`: the browser's
+ * name and version, as the report names it; `webgpuHere`: this browser has a WebGPU adapter.
+ */
+export async function gradeStudent(o) {
+  const { student, rubric, frameScript, stage, pictures, progress = () => {}, webgpuHere = true, reference = true } = o;
+  const { name } = student;
+  if (student.error) return PARTS.map((part) => notUnpackedRow(name, part, student.error));
+  const files = new Map([...student.handIn].map(([p, bytes]) => [p, new Blob([bytes])]));
+  const found = await partsOf(files);
+  const rows = [];
+  const session = openSession(handInSource(files), frameScript, rubric.loadSeconds);
+  try {
+    for (const part of PARTS) {
+      const page = found.parts[part] || null;
+      const notes = found.notes[part] ? [found.notes[part]] : [];
+      if (!page) { rows.push(missingRow(name, part, notes)); continue; }
+      const linksTo = linkedPart(await files.get(page).text(), page, found.parts, { pathImpl: POSIX_PATHS });
+      if (linksTo) {
+        const linked = partRow(name, part, page, { status: 'linked', verdict: 'review', notes });
+        rows.push(withFindings(linked, [linkedPage(part, page, linksTo)]));
+        continue;
+      }
+      session.clearLog();
+      const told = (what) => progress(part, what);
+      const r = asNotGraded(await checkPart({ part, page, session, rubric, stage, webgpuHere, progress: told }));
+      const row = gradedRow(name, part, page, r, { notes, browserVersion: o.browserVersion });
+      const keep = (key, img, href) => {
+        pictures.set(href, pngURL(img));
+        row.images[key] = href;
+      };
+      for (const [key, img] of Object.entries(r.images)) {
+        if (img && img.data) keep(key, img, `artifacts/${safeName(name)}/${part}/${key}.png`);
+      }
+      if (reference && r.images.judged && r.verdict !== 'fail' && r.verdict !== NOT_GRADED) {
+        progress(part, 'drawing our reference beside it');
+        beside(row, r, rubric, keep);
+      }
+      rows.push(row);
+    }
+  } finally {
+    session.close();
+  }
+  return rows;
+}

@@ -1,0 +1,191 @@
+// The class page: a teacher drops the course site's download (its .zip or its folder) and, with
+// nothing installed, gets what `npm run grade -- --batch` gives: each student's parts graded by the
+// grader's own modules in frames of this page (grade/class-run.js), a grid of verdicts and reasons,
+// and one zip of the report, the grade files and the feedback (grade/results.js). When every part
+// has its verdict: window.grading = { done: true, students: [{ name, parts: [{ part, verdict, reasons }] }] }.
+import { IntakeError, folderListing, takeInClass, takeInZip } from './intake.js';
+import { gradeStudent } from './class-run.js';
+import { classFiles, gradingOf, zipOf } from './results.js';
+import { startHost, unsupported } from '../check/host.js';
+import { frameScript as makeFrameScript } from '../check/runner.js';
+import { PARTS } from '../grader/core/part-names.js';
+import { MS_PER_SECOND } from '../grader/core/units.js';
+import { matchRoster, parseRoster } from '../grader/class/roster.js';
+
+const $ = (id) => document.getElementById(id);
+const el = (tag, props = {}, ...children) => {
+  const e = Object.assign(document.createElement(tag), props);
+  e.append(...children.filter((c) => c !== null && c !== undefined));
+  return e;
+};
+window.grading = { done: false, students: [] };
+let busy = false;
+// ?reference=0 leaves out our step beside each part (a quicker run)
+const REFERENCE = new URLSearchParams(location.search).get('reference') !== '0';
+/** The most hand-ins graded at once. */
+const MOST_WORKERS = 8;
+$('workers').value = String(Math.max(1, Math.min(MOST_WORKERS, Math.floor((navigator.hardwareConcurrency || 2) / 2))));
+
+function say(text, kind = 'error') {
+  $('messages').replaceChildren(el('p', { className: kind, textContent: text }));
+}
+
+/** Whether a WebGPU adapter is there (the API alone is not enough: headless and some GPUs give none). */
+async function hasWebGPU() {
+  try {
+    return !!(navigator.gpu && (await navigator.gpu.requestAdapter()));
+  } catch {
+    return false;
+  }
+}
+
+/** The browser grading, as the report names it ("Chrome 131", "Firefox 128"), from its user agent. */
+function browserName() {
+  const ua = navigator.userAgent;
+  const m = /(Firefox|Edg|Chrome)\/([\d.]+)/.exec(ua);
+  if (!m) return 'this browser';
+  return `${m[1] === 'Edg' ? 'Edge' : m[1]} ${m[2]} (the class page)`;
+}
+
+const clock = (s) => `${Math.floor(s / 60)}:${String(Math.floor(s % 60)).padStart(2, '0')}`;
+
+/** The grid: a row a student, a cell a part (its verdict, its reasons folded under it). */
+function gridOf(students) {
+  const cells = new Map();
+  const body = el('tbody', {}, ...students.map((s) => {
+    const tr = el('tr', {}, el('th', { scope: 'row', textContent: s.name }));
+    for (const part of PARTS) {
+      const td = el('td', { className: 'pending', textContent: s.error ? '' : 'waiting' });
+      cells.set(`${s.name}\n${part}`, td);
+      tr.append(td);
+    }
+    return tr;
+  }));
+  const table = el('table', { className: 'grid' },
+    el('thead', {}, el('tr', {}, el('th', { textContent: 'Student' }), ...PARTS.map((p) => el('th', { textContent: p })))), body);
+  const show = (row) => {
+    const td = cells.get(`${row.name}\n${row.part}`);
+    const kind = /^(pass|review|fail)$/.test(row.verdict) ? row.verdict : 'unchecked';
+    td.className = `verdict ${kind}`;
+    td.dataset.verdict = row.verdict;
+    td.replaceChildren(el('details', {}, el('summary', {}, el('span', { className: `badge ${kind}`, textContent: row.verdict })),
+      el('ul', {}, ...row.reasons.map((t) => el('li', { textContent: t })))));
+  };
+  return { table, show };
+}
+
+/** The download as picked or dropped: a .zip (its bytes) or a folder ([{ path, bytes }]), taken in. */
+async function takeIn(input, rubric) {
+  if (input.zip) return takeInZip(new Uint8Array(await input.zip.arrayBuffer()), input.zip.name, rubric.unpack);
+  const read = async (f) => ({ path: f.path, bytes: new Uint8Array(await f.blob.arrayBuffer()) });
+  const entries = await Promise.all(input.folder.map(read));
+  return takeInClass(folderListing(entries), entries.length ? entries[0].path.split('/')[0] : 'the folder', rubric.unpack);
+}
+
+/**
+ * Grades `students` (take-in's submissions), `workers` at once, each in a frame stage of its own;
+ * each part's row shown as it ends (`show`) and the progress line kept. Returns Map name → rows.
+ */
+async function gradeAll(students, { rubric, workers, show, started }) {
+  const why = unsupported();
+  if (why) throw new IntakeError(why);
+  await startHost();
+  const webgpuHere = await hasWebGPU();
+  const frameScript = makeFrameScript(rubric), browserVersion = browserName();
+  const all = students.length * PARTS.length;
+  let done = 0, finished = 0;
+  const line = (what = '') => {
+    const s = (performance.now() - started) / MS_PER_SECOND;
+    const left = done ? clock((s / done) * (all - done)) : '…';
+    $('progress').textContent = `${done} of ${all} parts, ${finished} of ${students.length} hand-ins · ${clock(s)} so far · about ${left} left${what ? ` · ${what}` : ''}`;
+  };
+  const pictures = new Map(), graded = new Map();
+  const queue = [...students];
+  $('stages').replaceChildren(...Array.from({ length: workers }, () => el('div', { className: 'stage' })));
+  const work = async (stage) => {
+    for (let s = queue.shift(); s; s = queue.shift()) {
+      const progress = (part, what) => line(`${s.name} ${part}: ${what}`);
+      const rows = await gradeStudent({ student: s, rubric, frameScript, stage, pictures, browserVersion, webgpuHere,
+        reference: REFERENCE, progress });
+      for (const r of rows) { show(r); done++; }
+      graded.set(s.name, rows);
+      finished++;
+      line();
+    }
+  };
+  try {
+    await Promise.all([...$('stages').children].map(work));
+  } finally {
+    $('stages').replaceChildren();
+  }
+  return { graded, pictures };
+}
+
+/** The class's files made (grade/results.js) and offered as one zip; returns what classOutputs made and the files' names. */
+function giveBack(got, students, { graded, pictures, rubric, roster }) {
+  const submissions = students.map((s) => ({
+    name: s.name, parts: graded.get(s.name), identity: { ...s.identity }, earlier: s.earlier, intakeNotes: s.notes,
+  }));
+  const unmatched = roster ? matchRoster(submissions, roster) : [];
+  if (unmatched.length) say(`Not in the class list: ${unmatched.join(', ')}`, 'notice');
+  const { made, files } = classFiles(submissions, { site: got.site, rubric, pictures });
+  const url = URL.createObjectURL(new Blob([zipOf(files)], { type: 'application/zip' }));
+  $('download').replaceChildren(
+    el('a', { className: 'download', href: url, download: `results-${got.site}.zip`, textContent: 'Download the results (zip)' }),
+    ` · the report, ${made.gradeFiles.join(', ')}, ${made.feedbackPages.length} feedback page(s) and ${made.feedbackZip}`);
+  return { made, names: Object.keys(files) };
+}
+
+async function run(input) {
+  if (busy) return say('A class is being graded: wait for it to finish (or reload the page to stop it).', 'notice');
+  busy = true;
+  window.grading = { done: false, students: [] };
+  $('messages').replaceChildren();
+  $('results').replaceChildren();
+  $('download').replaceChildren();
+  const started = performance.now();
+  try {
+    const rubric = await (await fetch(new URL('../grader/core/rubric.json', import.meta.url))).json();
+    $('progress').textContent = 'reading the download…';
+    const got = await takeIn(await input(), rubric);
+    const roster = $('roster').files[0] ? parseRoster(await $('roster').files[0].text()) : null;
+    for (const n of got.notes) $('messages').append(el('p', { className: 'notice', textContent: n }));
+    const students = got.submissions;
+    if (!students.length) throw new IntakeError('The download has no hand-ins.');
+    const { table, show } = gridOf(students);
+    const failed = students.filter((s) => s.error).length;
+    $('results').append(el('p', { textContent: `Found ${got.found}: ${students.length} hand-in(s)${failed ? `; ${failed} could not be unpacked` : ''}.` }), table);
+    const workers = Math.max(1, Math.min(MOST_WORKERS, Number($('workers').value) || 1));
+    const { graded, pictures } = await gradeAll(students, { rubric, workers, show, started });
+    const { made, names } = giveBack(got, students, { graded, pictures, rubric, roster });
+    $('progress').textContent = `done in ${clock((performance.now() - started) / MS_PER_SECOND)}: ${students.length * PARTS.length} parts of ${students.length} hand-ins`;
+    window.grading = { done: true, site: got.site, students: gradingOf(made.rows), files: names };
+  } catch (err) {
+    $('progress').textContent = '';
+    say(err instanceof IntakeError ? err.message : `The grading stopped: ${err.message}. Reload the page and try again.`);
+    window.grading = { done: true, students: [], error: err.message };
+  } finally {
+    busy = false;
+  }
+}
+
+$('zip').addEventListener('change', (e) => {
+  const [file] = e.target.files;
+  if (file) run(async () => ({ zip: file }));
+  e.target.value = '';
+});
+$('folder').addEventListener('change', (e) => {
+  const list = [...e.target.files].map((f) => ({ path: f.webkitRelativePath || f.name, blob: f }));
+  if (list.length) run(async () => ({ folder: list }));
+  e.target.value = '';
+});
+const drop = $('drop');
+for (const type of ['dragenter', 'dragover']) drop.addEventListener(type, (e) => { e.preventDefault(); drop.classList.add('over'); });
+drop.addEventListener('dragleave', () => drop.classList.remove('over'));
+drop.addEventListener('drop', (e) => {
+  e.preventDefault();
+  drop.classList.remove('over');
+  const file = e.dataTransfer.files[0];
+  if (file && /\.zip$/i.test(file.name)) run(async () => ({ zip: file }));
+  else say('Drop the download\'s .zip here, or pick its folder with the button above.', 'notice');
+});

@@ -1,0 +1,55 @@
+// The class page (grade/): a built Brightspace download (tests/browser/class-download.js: three
+// students, one wrapped one folder down, one a broken zip) dropped on it gives, with nothing
+// installed, the verdicts and reasons of `npm run grade -- --batch` on the same download, and one
+// zip of the results holding the report, the grade files and the feedback zip.
+import { test, expect } from '@playwright/test';
+import { spawnSync } from 'node:child_process';
+import { mkdtempSync, readFileSync, writeFileSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import path from 'node:path';
+import { unzipSync } from 'fflate';
+import { writeClassDownload } from './class-download.js';
+import { expectAccessible } from './check-helpers.js';
+
+test.describe.configure({ mode: 'serial' });
+
+/** `npm run grade -- --batch` on `zip` (our reference left out, as on the page with ?reference=0): report.json. */
+function commandReport(zip, dir) {
+  const rubric = path.join(dir, 'rubric.json');
+  writeFileSync(rubric, JSON.stringify({ reference: false }));
+  const out = path.join(dir, 'command');
+  const run = spawnSync(process.execPath, ['grader/node/cli/grade.js', '--batch', zip, '--rubric', rubric, '--out', out], { encoding: 'utf8', timeout: 600_000 });
+  expect(run.status, run.stderr + run.stdout.slice(-2000)).toBe(0);
+  return { report: JSON.parse(readFileSync(path.join(out, 'report.json'), 'utf8')), out };
+}
+
+/** Each student's parts: { name: [[part, verdict, reasons]] }. */
+const verdictsOf = (students) => Object.fromEntries(students.map((s) => [s.name, s.parts.map((p) => [p.part, p.verdict, p.reasons])]));
+
+test('a download dropped on the class page gets the command\'s verdicts and reasons, and the results in one zip', async ({ page }) => {
+  test.setTimeout(300_000);
+  const dir = mkdtempSync(path.join(tmpdir(), 'grade-page-'));
+  const zip = writeClassDownload(path.join(dir, 'download.zip'));
+  const command = commandReport(zip, dir);
+  await page.goto('/grade/?reference=0');
+  await page.locator('#zip').setInputFiles(zip);
+  await page.waitForFunction(() => window.grading && window.grading.done, null, { timeout: 240_000, polling: 500 });
+  const grading = await page.evaluate(() => window.grading);
+  expect(grading.error).toBeUndefined();
+  expect(verdictsOf(grading.students)).toEqual(verdictsOf(command.report.submissions));
+  await expectAccessible(page, 'the class page with its grid');
+  const download = page.waitForEvent('download');
+  await page.getByRole('link', { name: 'Download the results (zip)' }).click();
+  const saved = path.join(dir, 'results.zip');
+  await (await download).saveAs(saved);
+  const files = unzipSync(readFileSync(saved));
+  for (const f of ['report.html', 'report.json', 'grades.csv', 'grades-points.csv', 'grades-brightspace.csv', 'feedback-brightspace.zip']) {
+    expect(Object.keys(files), f).toContain(f);
+  }
+  // the grade files as the command writes them, and the feedback zip with the command's entries
+  for (const f of ['grades.csv', 'grades-points.csv', 'grades-brightspace.csv']) {
+    expect(new TextDecoder().decode(files[f]), f).toBe(readFileSync(path.join(command.out, f), 'utf8'));
+  }
+  const entries = (bytes) => Object.keys(unzipSync(bytes)).sort();
+  expect(entries(files['feedback-brightspace.zip'])).toEqual(entries(readFileSync(path.join(command.out, 'feedback-brightspace.zip'))));
+});
