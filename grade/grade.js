@@ -11,6 +11,8 @@ import { frameScript as makeFrameScript } from '../check/runner.js';
 import { PARTS } from '../grader/core/part-names.js';
 import { MS_PER_SECOND } from '../grader/core/units.js';
 import { matchRoster, parseRoster } from '../grader/class/roster.js';
+import { OVERRIDES_FILE, applyOverrides, overridesText } from '../grader/class/overrides.js';
+import { gridOf } from './grid.js';
 
 const $ = (id) => document.getElementById(id);
 const el = (tag, props = {}, ...children) => {
@@ -48,31 +50,6 @@ function browserName() {
 }
 
 const clock = (s) => `${Math.floor(s / 60)}:${String(Math.floor(s % 60)).padStart(2, '0')}`;
-
-/** The grid: a row a student, a cell a part (its verdict, its reasons folded under it). */
-function gridOf(students) {
-  const cells = new Map();
-  const body = el('tbody', {}, ...students.map((s) => {
-    const tr = el('tr', {}, el('th', { scope: 'row', textContent: s.name }));
-    for (const part of PARTS) {
-      const td = el('td', { className: 'pending', textContent: s.error ? '' : 'waiting' });
-      cells.set(`${s.name}\n${part}`, td);
-      tr.append(td);
-    }
-    return tr;
-  }));
-  const table = el('table', { className: 'grid' },
-    el('thead', {}, el('tr', {}, el('th', { textContent: 'Student' }), ...PARTS.map((p) => el('th', { textContent: p })))), body);
-  const show = (row) => {
-    const td = cells.get(`${row.name}\n${row.part}`);
-    const kind = /^(pass|review|fail)$/.test(row.verdict) ? row.verdict : 'unchecked';
-    td.className = `verdict ${kind}`;
-    td.dataset.verdict = row.verdict;
-    td.replaceChildren(el('details', {}, el('summary', {}, el('span', { className: `badge ${kind}`, textContent: row.verdict })),
-      el('ul', {}, ...row.reasons.map((t) => el('li', { textContent: t })))));
-  };
-  return { table, show };
-}
 
 /** The download as picked or dropped: a .zip (its bytes) or a folder ([{ path, bytes }]), taken in. */
 async function takeIn(input, rubric) {
@@ -121,19 +98,42 @@ async function gradeAll(students, { rubric, workers, show, started }) {
   return { graded, pictures };
 }
 
-/** The class's files made (grade/results.js) and offered as one zip; returns what classOutputs made and the files' names. */
-function giveBack(got, students, { graded, pictures, rubric, roster }) {
+/** The teacher's verdicts set in the grid: Map "name\npart" → { student, part, verdict, note }. */
+const overrides = new Map();
+/** The class graded last, to make its files again when the teacher sets a verdict: { got, students, graded, pictures, rubric, roster }. */
+let last = null;
+
+/**
+ * The class's files made (grade/results.js) with the teacher's verdicts applied and offered as one
+ * zip (overrides.tsv in it, for the command's --report-only); window.grading says the verdicts.
+ */
+function giveBack({ got, students, graded, pictures, rubric, roster }) {
   const submissions = students.map((s) => ({
-    name: s.name, parts: graded.get(s.name), identity: { ...s.identity }, earlier: s.earlier, intakeNotes: s.notes,
+    name: s.name, parts: structuredClone(graded.get(s.name)), identity: { ...s.identity },
+    earlier: s.earlier, intakeNotes: s.notes,
   }));
   const unmatched = roster ? matchRoster(submissions, roster) : [];
   if (unmatched.length) say(`Not in the class list: ${unmatched.join(', ')}`, 'notice');
+  const set = [...overrides.values()].map((o, k) => ({ ...o, line: k + 2 }));
+  applyOverrides(submissions, set);
   const { made, files } = classFiles(submissions, { site: got.site, rubric, pictures });
+  if (set.length) files[OVERRIDES_FILE] = overridesText(set);
+  const old = $('download').querySelector('a');
+  if (old) URL.revokeObjectURL(old.href);
   const url = URL.createObjectURL(new Blob([zipOf(files)], { type: 'application/zip' }));
   $('download').replaceChildren(
     el('a', { className: 'download', href: url, download: `results-${got.site}.zip`, textContent: 'Download the results (zip)' }),
-    ` · the report, ${made.gradeFiles.join(', ')}, ${made.feedbackPages.length} feedback page(s) and ${made.feedbackZip}`);
-  return { made, names: Object.keys(files) };
+    ` · the report, ${made.gradeFiles.join(', ')}, ${made.feedbackPages.length} feedback page(s) and ${made.feedbackZip}` +
+    `${set.length ? `, with ${set.length} verdict(s) set by you` : ''}`);
+  window.grading = { done: true, site: got.site, students: gradingOf(made.rows), files: Object.keys(files) };
+}
+
+/** The teacher sets (or, with null, clears) the verdict of `name`'s `part`: shown, and the results made again. */
+function override(grid, name, part, o) {
+  if (o) overrides.set(`${name}\n${part}`, { student: name, part, ...o });
+  else overrides.delete(`${name}\n${part}`);
+  grid.teacher(name, part, o);
+  if (last) giveBack(last);
 }
 
 async function run(input) {
@@ -152,14 +152,17 @@ async function run(input) {
     for (const n of got.notes) $('messages').append(el('p', { className: 'notice', textContent: n }));
     const students = got.submissions;
     if (!students.length) throw new IntakeError('The download has no hand-ins.');
-    const { table, show } = gridOf(students);
+    overrides.clear();
+    last = null;
+    const grid = gridOf(students, (name, part, o) => override(grid, name, part, o));
+    const { table, show } = grid;
     const failed = students.filter((s) => s.error).length;
     $('results').append(el('p', { textContent: `Found ${got.found}: ${students.length} hand-in(s)${failed ? `; ${failed} could not be unpacked` : ''}.` }), table);
     const workers = Math.max(1, Math.min(MOST_WORKERS, Number($('workers').value) || 1));
     const { graded, pictures } = await gradeAll(students, { rubric, workers, show, started });
-    const { made, names } = giveBack(got, students, { graded, pictures, rubric, roster });
     $('progress').textContent = `done in ${clock((performance.now() - started) / MS_PER_SECOND)}: ${students.length * PARTS.length} parts of ${students.length} hand-ins`;
-    window.grading = { done: true, site: got.site, students: gradingOf(made.rows), files: names };
+    last = { got, students, graded, pictures, rubric, roster };
+    giveBack(last);
   } catch (err) {
     $('progress').textContent = '';
     say(err instanceof IntakeError ? err.message : `The grading stopped: ${err.message}. Reload the page and try again.`);

@@ -5,7 +5,7 @@
 // and say a teacher set it. From text (the command reads the file: grader/node/report/overrides.js).
 import { VERDICT_OF_LABEL } from './labels.js';
 import { safeName } from '../files/safe-name.js';
-import { readRows } from '../files/csv.js';
+import { csvText, readRows } from '../files/csv.js';
 
 export const OVERRIDES_FILE = 'overrides.tsv';
 
@@ -31,6 +31,12 @@ export function parseOverrides(text, file = OVERRIDES_FILE) {
     if (!get('student')) throw new Error(`${file}, line ${k}: no student`);
     return { student: get('student'), part, verdict, note: get('note'), line: k };
   });
+}
+
+/** overrides.tsv's text for `overrides` ([{ student, part, verdict, note }]), as parseOverrides reads it. */
+export function overridesText(overrides) {
+  const rows = overrides.map((o) => [o.student, o.part, o.verdict, o.note || '']);
+  return csvText([['student', 'part', 'verdict', 'note'], ...rows], { delimiter: '\t' });
 }
 
 /** Whether overrides.tsv's `student` names submission `s`: its name as the report shows it, its folder's name, the site's name or user id. */

@@ -50,12 +50,14 @@ export function readRows(text, { delimiter = null, comments = false, file = 'the
 export const readTable = (text, options) => readRows(text, options).map((r) => r.cells);
 
 /**
- * CSV text of `rows` (arrays of cells), each line ended by `eol`: a cell is quoted when it holds a
- * comma, a quote (doubled), a line break, or starts or ends with white space, and where
- * `quoted(row, column)` says so; null and undefined are empty, true and false written as words.
+ * CSV text of `rows` (arrays of cells), each line ended by `eol`, the cells parted by `delimiter`:
+ * a cell is quoted when it holds the delimiter, a quote (doubled), a line break, or starts or ends
+ * with white space, and where `quoted(row, column)` says so; null and undefined are empty, true and
+ * false written as words.
  */
-export function csvText(rows, { eol = '\n', quoted = () => false } = {}) {
+export function csvText(rows, { eol = '\n', quoted = () => false, delimiter = ',' } = {}) {
   return stringify(rows, {
+    delimiter,
     record_delimiter: eol,
     quoted_match: /[\r\n]|^\s|\s$/,
     cast: {

@@ -13,15 +13,27 @@ import { expectAccessible } from './check-helpers.js';
 
 test.describe.configure({ mode: 'serial' });
 
-/** `npm run grade -- --batch` on `zip` (our reference left out, as on the page with ?reference=0): report.json. */
-function commandReport(zip, dir) {
+/** `npm run grade -- --batch` on `zip` (our reference left out, as on the page with ?reference=0, and `more` options): report.json and the out folder. */
+function commandReport(zip, dir, more = []) {
   const rubric = path.join(dir, 'rubric.json');
   writeFileSync(rubric, JSON.stringify({ reference: false }));
   const out = path.join(dir, 'command');
-  const run = spawnSync(process.execPath, ['grader/node/cli/grade.js', '--batch', zip, '--rubric', rubric, '--out', out], { encoding: 'utf8', timeout: 600_000 });
+  const run = spawnSync(process.execPath, ['grader/node/cli/grade.js', '--batch', zip, '--rubric', rubric, '--out', out, ...more], { encoding: 'utf8', timeout: 600_000 });
   expect(run.status, run.stderr + run.stdout.slice(-2000)).toBe(0);
   return { report: JSON.parse(readFileSync(path.join(out, 'report.json'), 'utf8')), out };
 }
+
+/** The results zip the page offers, downloaded: its files. */
+async function downloadResults(page, dir) {
+  const download = page.waitForEvent('download');
+  await page.getByRole('link', { name: 'Download the results (zip)' }).click();
+  const saved = path.join(dir, 'results.zip');
+  await (await download).saveAs(saved);
+  return unzipSync(readFileSync(saved));
+}
+
+const GRADE_FILES = ['grades.csv', 'grades-points.csv', 'grades-brightspace.csv'];
+const text = (bytes) => new TextDecoder().decode(bytes);
 
 /** Each student's parts: { name: [[part, verdict, reasons]] }. */
 const verdictsOf = (students) => Object.fromEntries(students.map((s) => [s.name, s.parts.map((p) => [p.part, p.verdict, p.reasons])]));
@@ -38,18 +50,37 @@ test('a download dropped on the class page gets the command\'s verdicts and reas
   expect(grading.error).toBeUndefined();
   expect(verdictsOf(grading.students)).toEqual(verdictsOf(command.report.submissions));
   await expectAccessible(page, 'the class page with its grid');
-  const download = page.waitForEvent('download');
-  await page.getByRole('link', { name: 'Download the results (zip)' }).click();
-  const saved = path.join(dir, 'results.zip');
-  await (await download).saveAs(saved);
-  const files = unzipSync(readFileSync(saved));
+  const files = await downloadResults(page, dir);
   for (const f of ['report.html', 'report.json', 'grades.csv', 'grades-points.csv', 'grades-brightspace.csv', 'feedback-brightspace.zip']) {
     expect(Object.keys(files), f).toContain(f);
   }
   // the grade files as the command writes them, and the feedback zip with the command's entries
-  for (const f of ['grades.csv', 'grades-points.csv', 'grades-brightspace.csv']) {
-    expect(new TextDecoder().decode(files[f]), f).toBe(readFileSync(path.join(command.out, f), 'utf8'));
-  }
+  for (const f of GRADE_FILES) expect(text(files[f]), f).toBe(readFileSync(path.join(command.out, f), 'utf8'));
   const entries = (bytes) => Object.keys(unzipSync(bytes)).sort();
   expect(entries(files['feedback-brightspace.zip'])).toEqual(entries(readFileSync(path.join(command.out, 'feedback-brightspace.zip'))));
+});
+
+test('a verdict the teacher sets in the grid is in the grade files and the student\'s feedback page, as overrides.tsv gives it to the command', async ({ page }) => {
+  test.setTimeout(300_000);
+  const dir = mkdtempSync(path.join(tmpdir(), 'grade-page-override-'));
+  const zip = writeClassDownload(path.join(dir, 'download.zip'));
+  await page.goto('/grade/?reference=0');
+  await page.locator('#zip').setInputFiles(zip);
+  await page.waitForFunction(() => window.grading && window.grading.done, null, { timeout: 240_000, polling: 500 });
+  const cell = page.locator('td[data-verdict]').filter({ has: page.getByLabel('Wanda Wire WP04P1: the teacher\'s verdict') });
+  await cell.locator('summary').click();
+  await page.getByLabel('Wanda Wire WP04P1: the teacher\'s verdict').selectOption('pass');
+  await page.getByLabel('Wanda Wire WP04P1: a note to the student').fill('A wireframe, but the colours are right: pass.');
+  await cell.getByRole('button', { name: 'Set' }).click();
+  await page.waitForFunction(() => window.grading.students.find((s) => s.name === 'Wanda Wire').parts[0].verdict === 'pass', null, { timeout: 30_000 });
+  const files = await downloadResults(page, dir);
+  // the command, given the overrides.tsv the page wrote, writes the same grade files
+  const tsv = path.join(dir, 'overrides.tsv');
+  writeFileSync(tsv, files['overrides.tsv']);
+  const command = commandReport(zip, dir, ['--overrides', tsv]);
+  for (const f of GRADE_FILES) expect(text(files[f]), f).toBe(readFileSync(path.join(command.out, f), 'utf8'));
+  expect(text(files['grades-points.csv'])).toMatch(/^Wanda Wire,.*,1,1,0,0,0,2,5,/m);
+  const wanda = Object.keys(files).find((f) => /^feedback\/.*Wanda/.test(f));
+  expect(text(files[wanda])).toContain('A wireframe, but the colours are right: pass.');
+  expect(text(files[wanda])).toBe(readFileSync(path.join(command.out, wanda), 'utf8'));
 });

@@ -9,6 +9,7 @@ import { csvText, readRows, readTable } from '../../grader/files/csv.js';
 import { matchRoster, parseRoster } from '../../grader/class/roster.js';
 import { parseLabels } from '../../grader/node/report/labels.js';
 import { parseOverrides } from '../../grader/node/report/overrides.js';
+import { overridesText } from '../../grader/class/overrides.js';
 
 const BOM = '\uFEFF';
 const crlf = (lines) => `${lines.join('\r\n')}\r\n`;
@@ -73,6 +74,13 @@ test('overrides.tsv as a spreadsheet saves it: a BOM, CRLF, a quoted note with a
     { student: '0099', part: 'WP04P5', verdict: 'fail', note: 'no per-fragment normalise', line: 6 }]);
   assert.throws(() => parseOverrides(text.replace('\tfail\t', '\tgood\t'), 'o.tsv'), /o\.tsv, line 6: verdict "good"/);
   assert.throws(() => parseOverrides(`${BOM}student\tpart\tverdict\r\nann\tWP04P1\t"pass\r\n`, 'o.tsv'), /o\.tsv, line \d+: Quote Not Closed/, 'a quote never closed: the file and the line said');
+});
+
+test('the class page\'s overrides.tsv reads back as it was set: a note with a tab, quotes, a comma and a line break; æ/ø/å', () => {
+  const set = [{ student: 'Søren Ærø', part: 'WP04P2', verdict: 'pass', note: 'fine,\tsee "Orbit"\nthen P3' }, { student: 'Åse', part: 'WP04P5', verdict: 'fail', note: '' }];
+  const text = overridesText(set);
+  assert.equal(text.split('\n')[0], 'student\tpart\tverdict\tnote');
+  assert.deepEqual(parseOverrides(text), set.map((o, k) => ({ ...o, line: [2, 4][k] })), 'lines counted in the file (the note takes two)');
 });
 
 test('what the grader writes reads back cell for cell; a cell is quoted only where it must be', () => {
