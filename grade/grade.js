@@ -13,6 +13,7 @@ import { MS_PER_SECOND } from '../grader/core/units.js';
 import { matchRoster, parseRoster } from '../grader/class/roster.js';
 import { OVERRIDES_FILE, applyOverrides, overridesText } from '../grader/class/overrides.js';
 import { gridOf } from './grid.js';
+import { classKey, keepOverrides, keepStudent, keptOverrides, keptStudents } from './store.js';
 
 const $ = (id) => document.getElementById(id);
 const el = (tag, props = {}, ...children) => {
@@ -51,19 +52,32 @@ function browserName() {
 
 const clock = (s) => `${Math.floor(s / 60)}:${String(Math.floor(s % 60)).padStart(2, '0')}`;
 
-/** The download as picked or dropped: a .zip (its bytes) or a folder ([{ path, bytes }]), taken in. */
+/**
+ * The download as picked or dropped: a .zip (its bytes) or a folder ([{ path, bytes }]), taken in:
+ * { got (take-in's), bytes (what the class's key is made of: the zip, or each file's path and bytes) }.
+ */
 async function takeIn(input, rubric) {
-  if (input.zip) return takeInZip(new Uint8Array(await input.zip.arrayBuffer()), input.zip.name, rubric.unpack);
+  if (input.zip) {
+    const bytes = new Uint8Array(await input.zip.arrayBuffer());
+    return { got: takeInZip(bytes, input.zip.name, rubric.unpack), bytes: [bytes] };
+  }
   const read = async (f) => ({ path: f.path, bytes: new Uint8Array(await f.blob.arrayBuffer()) });
-  const entries = await Promise.all(input.folder.map(read));
-  return takeInClass(folderListing(entries), entries.length ? entries[0].path.split('/')[0] : 'the folder', rubric.unpack);
+  const byPath = (a, b) => (a.path < b.path ? -1 : a.path > b.path ? 1 : 0);
+  const entries = (await Promise.all(input.folder.map(read))).sort(byPath);
+  const name = entries.length ? entries[0].path.split('/')[0] : 'the folder';
+  const got = takeInClass(folderListing(entries), name, rubric.unpack);
+  return { got, bytes: entries.flatMap((e) => [new TextEncoder().encode(`\n${e.path}\n`), e.bytes]) };
 }
+
+/** The hrefs and data: URLs of the pictures `rows` name. */
+const picturesOf = (rows, pictures) => rows.flatMap((r) => Object.values(r.images || {}))
+  .filter((h) => pictures.has(h)).map((h) => [h, pictures.get(h)]);
 
 /**
  * Grades `students` (take-in's submissions), `workers` at once, each in a frame stage of its own;
  * each part's row shown as it ends (`show`) and the progress line kept. Returns Map name → rows.
  */
-async function gradeAll(students, { rubric, workers, show, started }) {
+async function gradeAll(students, { rubric, workers, show, started, key }) {
   const why = unsupported();
   if (why) throw new IntakeError(why);
   await startHost();
@@ -77,7 +91,18 @@ async function gradeAll(students, { rubric, workers, show, started }) {
     $('progress').textContent = `${done} of ${all} parts, ${finished} of ${students.length} hand-ins · ${clock(s)} so far · about ${left} left${what ? ` · ${what}` : ''}`;
   };
   const pictures = new Map(), graded = new Map();
-  const queue = [...students];
+  // the hand-ins graded before a reload (kept in the browser: store.js) are not graded again
+  const kept = await keptStudents(key);
+  for (const s of students.filter((x) => kept.has(x.name))) {
+    const { rows, pictures: theirs } = kept.get(s.name);
+    for (const [href, url] of theirs) pictures.set(href, url);
+    for (const r of rows) { show(r); done++; }
+    graded.set(s.name, rows);
+    finished++;
+  }
+  window.grading.resumed = [...graded.keys()];
+  window.grading.gradedHere = [];
+  const queue = students.filter((x) => !kept.has(x.name));
   $('stages').replaceChildren(...Array.from({ length: workers }, () => el('div', { className: 'stage' })));
   const work = async (stage) => {
     for (let s = queue.shift(); s; s = queue.shift()) {
@@ -86,6 +111,8 @@ async function gradeAll(students, { rubric, workers, show, started }) {
         reference: REFERENCE, progress });
       for (const r of rows) { show(r); done++; }
       graded.set(s.name, rows);
+      await keepStudent(key, s.name, rows, picturesOf(rows, pictures));
+      window.grading.gradedHere.push(s.name);
       finished++;
       line();
     }
@@ -125,7 +152,8 @@ function giveBack({ got, students, graded, pictures, rubric, roster }) {
     el('a', { className: 'download', href: url, download: `results-${got.site}.zip`, textContent: 'Download the results (zip)' }),
     ` · the report, ${made.gradeFiles.join(', ')}, ${made.feedbackPages.length} feedback page(s) and ${made.feedbackZip}` +
     `${set.length ? `, with ${set.length} verdict(s) set by you` : ''}`);
-  window.grading = { done: true, site: got.site, students: gradingOf(made.rows), files: Object.keys(files) };
+  const verdicts = gradingOf(made.rows);
+  window.grading = { ...window.grading, done: true, site: got.site, students: verdicts, files: Object.keys(files) };
 }
 
 /** The teacher sets (or, with null, clears) the verdict of `name`'s `part`: shown, and the results made again. */
@@ -133,7 +161,8 @@ function override(grid, name, part, o) {
   if (o) overrides.set(`${name}\n${part}`, { student: name, part, ...o });
   else overrides.delete(`${name}\n${part}`);
   grid.teacher(name, part, o);
-  if (last) giveBack(last);
+  if (last) keepOverrides(last.key, [...overrides.values()]);
+  if (last && last.graded) giveBack(last);
 }
 
 async function run(input) {
@@ -145,23 +174,27 @@ async function run(input) {
   $('download').replaceChildren();
   const started = performance.now();
   try {
-    const rubric = await (await fetch(new URL('../grader/core/rubric.json', import.meta.url))).json();
+    const rubricText = await (await fetch(new URL('../grader/core/rubric.json', import.meta.url))).text();
+    const rubric = JSON.parse(rubricText);
     $('progress').textContent = 'reading the download…';
-    const got = await takeIn(await input(), rubric);
+    const { got, bytes } = await takeIn(await input(), rubric);
+    const key = await classKey(bytes, `${rubricText}\nreference=${REFERENCE}`);
     const roster = $('roster').files[0] ? parseRoster(await $('roster').files[0].text()) : null;
     for (const n of got.notes) $('messages').append(el('p', { className: 'notice', textContent: n }));
     const students = got.submissions;
     if (!students.length) throw new IntakeError('The download has no hand-ins.');
     overrides.clear();
-    last = null;
+    last = { key };
+    for (const o of await keptOverrides(key)) overrides.set(`${o.student}\n${o.part}`, o);
     const grid = gridOf(students, (name, part, o) => override(grid, name, part, o));
     const { table, show } = grid;
     const failed = students.filter((s) => s.error).length;
     $('results').append(el('p', { textContent: `Found ${got.found}: ${students.length} hand-in(s)${failed ? `; ${failed} could not be unpacked` : ''}.` }), table);
     const workers = Math.max(1, Math.min(MOST_WORKERS, Number($('workers').value) || 1));
-    const { graded, pictures } = await gradeAll(students, { rubric, workers, show, started });
+    for (const o of overrides.values()) grid.teacher(o.student, o.part, o);
+    const { graded, pictures } = await gradeAll(students, { rubric, workers, show, started, key });
     $('progress').textContent = `done in ${clock((performance.now() - started) / MS_PER_SECOND)}: ${students.length * PARTS.length} parts of ${students.length} hand-ins`;
-    last = { got, students, graded, pictures, rubric, roster };
+    last = { key, got, students, graded, pictures, rubric, roster };
     giveBack(last);
   } catch (err) {
     $('progress').textContent = '';

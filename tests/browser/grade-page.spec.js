@@ -84,3 +84,29 @@ test('a verdict the teacher sets in the grid is in the grade files and the stude
   expect(text(files[wanda])).toContain('A wireframe, but the colours are right: pass.');
   expect(text(files[wanda])).toBe(readFileSync(path.join(command.out, wanda), 'utf8'));
 });
+
+test('a reload in the middle resumes where it stopped: the hand-ins graded are not graded again, and the verdicts are the same', async ({ page }) => {
+  test.setTimeout(300_000);
+  const dir = mkdtempSync(path.join(tmpdir(), 'grade-page-reload-'));
+  const zip = writeClassDownload(path.join(dir, 'download.zip'));
+  await page.goto('/grade/?reference=0');
+  await page.locator('#workers').fill('1');
+  await page.locator('#zip').setInputFiles(zip);
+  // one at a time, in the grid's order (Broken Zip, Signe Søndergård, Wanda Wire): reloaded while Wanda is graded
+  await page.waitForFunction(() => window.grading.gradedHere && window.grading.gradedHere.length === 2, null, { timeout: 240_000, polling: 'raf' });
+  const before = await page.evaluate(() => window.grading);
+  expect(before.done).toBe(false);
+  await page.reload();
+  await page.locator('#workers').fill('1');
+  await page.locator('#zip').setInputFiles(zip);
+  await page.waitForFunction(() => window.grading && window.grading.done, null, { timeout: 240_000, polling: 500 });
+  const after = await page.evaluate(() => window.grading);
+  expect(after.error).toBeUndefined();
+  expect(after.resumed).toEqual(before.gradedHere);
+  expect(after.gradedHere).toEqual(['Wanda Wire']);
+  expect(after.students.map((s) => [s.name, s.parts.map((p) => p.verdict)])).toEqual([
+    ['Signe Søndergård', ['pass', 'pass', 'fail', 'fail', 'fail']],
+    ['Wanda Wire', ['review', 'pass', 'fail', 'fail', 'fail']],
+    ['Broken Zip', ['fail', 'fail', 'fail', 'fail', 'fail']],
+  ]);
+});
