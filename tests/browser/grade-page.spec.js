@@ -3,25 +3,14 @@
 // installed, the verdicts and reasons of `npm run grade -- --batch` on the same download, and one
 // zip of the results holding the report, the grade files and the feedback zip.
 import { test, expect } from '@playwright/test';
-import { spawnSync } from 'node:child_process';
 import { mkdtempSync, readFileSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import path from 'node:path';
 import { unzipSync } from 'fflate';
-import { writeClassDownload } from './class-download.js';
+import { commandReport, verdictsOf, writeClassDownload } from './class-download.js';
 import { expectAccessible } from './check-helpers.js';
 
 test.describe.configure({ mode: 'serial' });
-
-/** `npm run grade -- --batch` on `zip` (our reference left out, as on the page with ?reference=0, and `more` options): report.json and the out folder. */
-function commandReport(zip, dir, more = []) {
-  const rubric = path.join(dir, 'rubric.json');
-  writeFileSync(rubric, JSON.stringify({ reference: false }));
-  const out = path.join(dir, 'command');
-  const run = spawnSync(process.execPath, ['grader/node/cli/grade.js', '--batch', zip, '--rubric', rubric, '--out', out, ...more], { encoding: 'utf8', timeout: 600_000 });
-  expect(run.status, run.stderr + run.stdout.slice(-2000)).toBe(0);
-  return { report: JSON.parse(readFileSync(path.join(out, 'report.json'), 'utf8')), out };
-}
 
 /** The results zip the page offers, downloaded: its files. */
 async function downloadResults(page, dir) {
@@ -34,9 +23,6 @@ async function downloadResults(page, dir) {
 
 const GRADE_FILES = ['grades.csv', 'grades-points.csv', 'grades-brightspace.csv'];
 const text = (bytes) => new TextDecoder().decode(bytes);
-
-/** Each student's parts: { name: [[part, verdict, reasons]] }. */
-const verdictsOf = (students) => Object.fromEntries(students.map((s) => [s.name, s.parts.map((p) => [p.part, p.verdict, p.reasons])]));
 
 test('a download dropped on the class page gets the command\'s verdicts and reasons, and the results in one zip', async ({ page }) => {
   test.setTimeout(300_000);
