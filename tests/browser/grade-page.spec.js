@@ -1,7 +1,8 @@
 // The class page (grade/): a built Brightspace download (tests/browser/class-download.js: three
 // students, one wrapped one folder down, one a broken zip) dropped on it gives, with nothing
 // installed, the verdicts and reasons of `npm run grade -- --batch` on the same download, and one
-// zip of the results holding the report, the grade files and the feedback zip.
+// zip of the results holding the report, the grade files and the feedback zip; the teacher's
+// verdicts set in its grid; a reload in the middle resumes.
 import { test, expect } from '@playwright/test';
 import { mkdtempSync, readFileSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
@@ -24,7 +25,7 @@ async function downloadResults(page, dir) {
 const GRADE_FILES = ['grades.csv', 'grades-points.csv', 'grades-brightspace.csv'];
 const text = (bytes) => new TextDecoder().decode(bytes);
 
-test('a download dropped on the class page gets the command\'s verdicts and reasons, and the results in one zip', async ({ page }) => {
+test('a download dropped on the class page gets the command\'s verdicts and reasons and the results in one zip; a verdict the teacher sets in the grid is in them as overrides.tsv puts it in the command\'s', async ({ page }) => {
   test.setTimeout(300_000);
   const dir = mkdtempSync(path.join(tmpdir(), 'grade-page-'));
   const zip = writeClassDownload(path.join(dir, 'download.zip'));
@@ -44,31 +45,23 @@ test('a download dropped on the class page gets the command\'s verdicts and reas
   for (const f of GRADE_FILES) expect(text(files[f]), f).toBe(readFileSync(path.join(command.out, f), 'utf8'));
   const entries = (bytes) => Object.keys(unzipSync(bytes)).sort();
   expect(entries(files['feedback-brightspace.zip'])).toEqual(entries(readFileSync(path.join(command.out, 'feedback-brightspace.zip'))));
-});
 
-test('a verdict the teacher sets in the grid is in the grade files and the student\'s feedback page, as overrides.tsv gives it to the command', async ({ page }) => {
-  test.setTimeout(300_000);
-  const dir = mkdtempSync(path.join(tmpdir(), 'grade-page-override-'));
-  const zip = writeClassDownload(path.join(dir, 'download.zip'));
-  await page.goto('/grade/?reference=0');
-  await page.locator('#zip').setInputFiles(zip);
-  await page.waitForFunction(() => window.grading && window.grading.done, null, { timeout: 240_000, polling: 500 });
+  // the teacher's verdict, set in the grid: the command, given the overrides.tsv the page wrote, writes the same grade files and feedback
   const cell = page.locator('td[data-verdict]').filter({ has: page.getByLabel('Wanda Wire WP04P1: the teacher\'s verdict') });
   await cell.locator('summary').click();
   await page.getByLabel('Wanda Wire WP04P1: the teacher\'s verdict').selectOption('pass');
   await page.getByLabel('Wanda Wire WP04P1: a note to the student').fill('A wireframe, but the colours are right: pass.');
   await cell.getByRole('button', { name: 'Set' }).click();
   await page.waitForFunction(() => window.grading.students.find((s) => s.name === 'Wanda Wire').parts[0].verdict === 'pass', null, { timeout: 30_000 });
-  const files = await downloadResults(page, dir);
-  // the command, given the overrides.tsv the page wrote, writes the same grade files
+  const set = await downloadResults(page, dir);
   const tsv = path.join(dir, 'overrides.tsv');
-  writeFileSync(tsv, files['overrides.tsv']);
-  const command = commandReport(zip, dir, ['--overrides', tsv]);
-  for (const f of GRADE_FILES) expect(text(files[f]), f).toBe(readFileSync(path.join(command.out, f), 'utf8'));
-  expect(text(files['grades-points.csv'])).toMatch(/^Wanda Wire,.*,1,1,0,0,0,2,5,/m);
-  const wanda = Object.keys(files).find((f) => /^feedback\/.*Wanda/.test(f));
-  expect(text(files[wanda])).toContain('A wireframe, but the colours are right: pass.');
-  expect(text(files[wanda])).toBe(readFileSync(path.join(command.out, wanda), 'utf8'));
+  writeFileSync(tsv, set['overrides.tsv']);
+  const again = commandReport(zip, dir, ['--report-only', '--overrides', tsv]);
+  for (const f of GRADE_FILES) expect(text(set[f]), f).toBe(readFileSync(path.join(again.out, f), 'utf8'));
+  expect(text(set['grades-points.csv'])).toMatch(/^Wanda Wire,.*,1,1,0,0,0,2,5,/m);
+  const wanda = Object.keys(set).find((f) => /^feedback\/.*Wanda/.test(f));
+  expect(text(set[wanda])).toContain('A wireframe, but the colours are right: pass.');
+  expect(text(set[wanda])).toBe(readFileSync(path.join(again.out, wanda), 'utf8'));
 });
 
 test('a reload in the middle resumes where it stopped: the hand-ins graded are not graded again, and the verdicts are the same', async ({ page }) => {
