@@ -5,7 +5,7 @@
 // has its verdict: window.grading = { done: true, students: [{ name, parts: [{ part, verdict, reasons }] }] }.
 import { IntakeError, folderListing, takeInClass, takeInZip } from './intake.js';
 import { gradeStudent } from './class-run.js';
-import { classFiles, gradingOf, zipOf } from './results.js';
+import { classFiles, gradingOf, writeInto, zipOf } from './results.js';
 import { startHost, unsupported } from '../check/host.js';
 import { frameScript as makeFrameScript } from '../check/runner.js';
 import { PARTS } from '../grader/core/part-names.js';
@@ -151,9 +151,31 @@ function giveBack({ got, students, graded, pictures, rubric, roster }) {
   $('download').replaceChildren(
     el('a', { className: 'download', href: url, download: `results-${got.site}.zip`, textContent: 'Download the results (zip)' }),
     ` · the report, ${made.gradeFiles.join(', ')}, ${made.feedbackPages.length} feedback page(s) and ${made.feedbackZip}` +
-    `${set.length ? `, with ${set.length} verdict(s) set by you` : ''}`);
+    `${set.length ? `, with ${set.length} verdict(s) set by you` : ''}`, folderButton(files));
   const verdicts = gradingOf(made.rows);
   window.grading = { ...window.grading, done: true, site: got.site, students: verdicts, files: Object.keys(files) };
+}
+
+/** Where the browser can write into a folder the teacher picks (File System Access: Chromium), a button that writes `files` there. */
+function folderButton(files) {
+  if (!('showDirectoryPicker' in window)) return null;
+  const button = el('button', { type: 'button', textContent: 'Write them into a folder…' });
+  button.addEventListener('click', async () => {
+    let dir;
+    try {
+      dir = await window.showDirectoryPicker({ mode: 'readwrite', id: 'grade-results' });
+    } catch {
+      return; // (the teacher closed the picker)
+    }
+    try {
+      const n = await writeInto(dir, files);
+      say(`Wrote ${n} files into the folder "${dir.name}", as npm run grade writes its out folder.`, 'notice');
+      window.grading.written = n;
+    } catch (err) {
+      say(`The results could not be written into "${dir.name}" (${err.message}): download the zip instead.`);
+    }
+  });
+  return el('span', {}, ' ', button);
 }
 
 /** The teacher sets (or, with null, clears) the verdict of `name`'s `part`: shown, and the results made again. */

@@ -42,3 +42,24 @@ export function gradingOf(rows) {
   const partOf = ({ part, verdict, reasons }) => ({ part, verdict, reasons });
   return rows.map((s) => ({ name: s.name, parts: s.parts.map(partOf) }));
 }
+
+/**
+ * Writes `files` ({ path: text | bytes }) into the folder `dir` (a FileSystemDirectoryHandle the
+ * teacher picked), as the command writes its out folder: folders made as the paths need, feedback/
+ * made anew (a student no longer in the class leaves no page behind). Returns how many were written.
+ */
+export async function writeInto(dir, files) {
+  await dir.removeEntry('feedback', { recursive: true }).catch(() => {}); // (not there yet: nothing to remove)
+  let n = 0;
+  for (const [p, data] of Object.entries(files)) {
+    const segments = p.split('/');
+    let folder = dir;
+    for (const s of segments.slice(0, -1)) folder = await folder.getDirectoryHandle(s, { create: true });
+    const handle = await folder.getFileHandle(segments[segments.length - 1], { create: true });
+    const out = await handle.createWritable();
+    await out.write(data);
+    await out.close();
+    n++;
+  }
+  return n;
+}

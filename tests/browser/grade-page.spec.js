@@ -1,8 +1,9 @@
 // The class page (grade/): a built Brightspace download (tests/browser/class-download.js: three
 // students, one wrapped one folder down, one a broken zip) dropped on it gives, with nothing
 // installed, the verdicts and reasons of `npm run grade -- --batch` on the same download, and one
-// zip of the results holding the report, the grade files and the feedback zip; the teacher's
-// verdicts set in its grid; a reload in the middle resumes.
+// zip of the results holding the report, the grade files and the feedback zip (the same files
+// written into a folder the teacher picks); the teacher's verdicts set in its grid; a reload in the
+// middle resumes.
 import { test, expect } from '@playwright/test';
 import { mkdtempSync, readFileSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
@@ -45,6 +46,26 @@ test('a download dropped on the class page gets the command\'s verdicts and reas
   for (const f of GRADE_FILES) expect(text(files[f]), f).toBe(readFileSync(path.join(command.out, f), 'utf8'));
   const entries = (bytes) => Object.keys(unzipSync(bytes)).sort();
   expect(entries(files['feedback-brightspace.zip'])).toEqual(entries(readFileSync(path.join(command.out, 'feedback-brightspace.zip'))));
+
+  // written into a folder the teacher picks (File System Access; the picker answered with a folder of the origin's private file system)
+  await page.evaluate(() => {
+    window.showDirectoryPicker = async () => (await navigator.storage.getDirectory()).getDirectoryHandle('picked', { create: true });
+  });
+  await page.getByRole('button', { name: 'Write them into a folder…' }).click();
+  await page.waitForFunction(() => window.grading.written, null, { timeout: 30_000 });
+  const written = await page.evaluate(async () => {
+    const out = {};
+    const walk = async (dir, prefix) => {
+      for await (const [name, h] of dir.entries()) {
+        if (h.kind === 'directory') await walk(h, `${prefix}${name}/`);
+        else out[`${prefix}${name}`] = Array.from(new Uint8Array(await (await h.getFile()).arrayBuffer()));
+      }
+    };
+    await walk(await (await navigator.storage.getDirectory()).getDirectoryHandle('picked'), '');
+    return out;
+  });
+  expect(Object.keys(written).sort()).toEqual(Object.keys(files).sort());
+  for (const [f, bytes] of Object.entries(files)) expect(Uint8Array.from(written[f]), f).toEqual(bytes);
 
   // the teacher's verdict, set in the grid: the command, given the overrides.tsv the page wrote, writes the same grade files and feedback
   const cell = page.locator('td[data-verdict]').filter({ has: page.getByLabel('Wanda Wire WP04P1: the teacher\'s verdict') });
