@@ -11,8 +11,12 @@ import { usesWebGPU } from './not-checked.js';
 /** The HTTP statuses the check page answers its frames with. */
 const OK = 200, NOT_FOUND = 404;
 
-/** The URL path under which the frames live: BASE + session + '/' + the hand-in's own path. */
-export const BASE = '/check/run/';
+/**
+ * The URL path under which the frames live: BASE + session + '/' + the hand-in's own path; the
+ * check page's own folder's run/, wherever the site is served from (/check/run/, or
+ * /course/check/run/ on a site published under a path). In Node (the unit tests) /check/run/.
+ */
+export const BASE = typeof location === 'undefined' ? '/check/run/' : new URL('./run/', import.meta.url).pathname;
 /** The instrumentation's own path in a session (a name no hand-in uses). */
 export const FRAME_SCRIPT = '__check_frame__.js';
 

@@ -1,9 +1,10 @@
-// The check page's service worker: it controls only the frames under /check/run/<session>/ and
+// The check page's service worker: it controls only the frames under run/<session>/ beside it
+// (/check/run/<session>/, or under the path the site is published at) and
 // carries their requests to the check page that owns the session, which answers them from the
 // dropped files (check/serve.js). It keeps nothing itself (a worker the browser stops and starts
 // again loses nothing). Requests to other hosts are blocked and reported; nothing leaves the browser.
 /* global clients */
-const BASE = '/check/run/';
+const BASE = new URL('./run/', self.location).pathname;
 const owners = new Map(); // session → the check page's client id
 
 /** How long the check page is waited for: a file it serves, a blocked request it hears of; the status where it is gone. */

@@ -11,6 +11,8 @@ import path from 'node:path';
 import { unzipSync } from 'fflate';
 import { commandReport, verdictsOf, writeClassDownload } from './class-download.js';
 import { expectAccessible } from './check-helpers.js';
+import { publish } from '../../tools/publish.js';
+import { startServer } from '../../tools/browser.js';
 
 test.describe.configure({ mode: 'serial' });
 
@@ -109,4 +111,26 @@ test('a reload in the middle resumes where it stopped: the hand-ins graded are n
     ['Wanda Wire', ['review', 'pass', 'fail', 'fail', 'fail']],
     ['Broken Zip', ['fail', 'fail', 'fail', 'fail', 'fail']],
   ]);
+});
+
+test('the site published as static files under a path (npm run publish-site) grades a download on its class page there', async ({ page }) => {
+  test.setTimeout(300_000);
+  const dir = mkdtempSync(path.join(tmpdir(), 'grade-page-published-'));
+  publish(path.join(dir, 'site', '02561'));
+  const server = await startServer(path.join(dir, 'site'));
+  try {
+    const zip = writeClassDownload(path.join(dir, 'download.zip'));
+    await page.goto(`${server.url}/02561/grade/?reference=0`);
+    await page.locator('#zip').setInputFiles(zip);
+    await page.waitForFunction(() => window.grading && window.grading.done, null, { timeout: 240_000, polling: 500 });
+    const grading = await page.evaluate(() => window.grading);
+    expect(grading.error).toBeUndefined();
+    // the fixture hand-ins' labels (tests/fixtures/handins/labels.json), which the command's verdicts are held to
+    const labels = JSON.parse(readFileSync('tests/fixtures/handins/labels.json', 'utf8'));
+    const want = (who) => ['WP04P1', 'WP04P2', 'WP04P3', 'WP04P4', 'WP04P5'].map((p) => (labels[who][p] ? labels[who][p].verdict : 'fail'));
+    expect(grading.students.map((s) => [s.name, s.parts.map((p) => p.verdict)])).toEqual([
+      ['Signe Søndergård', want('signe')], ['Wanda Wire', want('wanda')], ['Broken Zip', ['fail', 'fail', 'fail', 'fail', 'fail']]]);
+  } finally {
+    server.stop();
+  }
 });
