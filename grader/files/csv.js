@@ -34,10 +34,11 @@ export function readRows(text, { delimiter = null, comments = false, file = 'the
   // Each row's line, counted here from where csv-parse says the row ends (info.bytes, in UTF-8,
   // its line break included): its own count of lines takes a CRLF inside a quoted cell for two.
   const breaks = (text) => (text.match(/\r\n|\r|\n/g) || []).length;
-  const bytes = Buffer.from(text);
+  // (TextEncoder and TextDecoder, not Buffer: a page reads class lists and overrides with this too)
+  const bytes = new TextEncoder().encode(text), utf8 = new TextDecoder('utf-8', { ignoreBOM: true });
   let at = 0, lineAt = 1;
   const rows = records.map(({ record, info }) => {
-    const text = bytes.subarray(at, info.bytes).toString('utf8');
+    const text = utf8.decode(bytes.subarray(at, info.bytes));
     const own = text.replace(/(?:\r\n|\r|\n)$/, '');
     const end = lineAt + breaks(own);
     [at, lineAt] = [info.bytes, end + (own.length < text.length ? 1 : 0)];

@@ -9,7 +9,7 @@ import { mkdtempSync, readFileSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import path from 'node:path';
 import { unzipSync } from 'fflate';
-import { commandReport, verdictsOf, writeClassDownload } from './class-download.js';
+import { CLASS_ROSTER, commandReport, verdictsOf, writeClassDownload } from './class-download.js';
 import { expectAccessible } from './check-helpers.js';
 import { publish } from '../../tools/publish.js';
 import { startServer } from '../../tools/browser.js';
@@ -32,13 +32,22 @@ test('a download dropped on the class page gets the command\'s verdicts and reas
   test.setTimeout(300_000);
   const dir = mkdtempSync(path.join(tmpdir(), 'grade-page-'));
   const zip = writeClassDownload(path.join(dir, 'download.zip'));
-  const command = commandReport(zip, dir);
+  const roster = path.join(dir, 'classlist.csv');
+  writeFileSync(roster, CLASS_ROSTER);
+  const command = commandReport(zip, dir, ['--roster', roster]);
+  // nothing leaves the machine: every request the page makes is of its own origin (or its own data: and blob: URLs)
+  const requests = [];
+  page.on('request', (r) => requests.push(r.url()));
   await page.goto('/grade/?reference=0');
+  await page.locator('#roster').setInputFiles(roster);
   await page.locator('#zip').setInputFiles(zip);
   await page.waitForFunction(() => window.grading && window.grading.done, null, { timeout: 240_000, polling: 500 });
   const grading = await page.evaluate(() => window.grading);
   expect(grading.error).toBeUndefined();
   expect(verdictsOf(grading.students)).toEqual(verdictsOf(command.report.submissions));
+  const origin = new URL(page.url()).origin;
+  expect(requests.filter((u) => !u.startsWith(`${origin}/`) && !/^(data|blob):/.test(u))).toEqual([]);
+  await expect(page.locator('#messages')).toContainText('Not in the class list: Broken Zip');
   await expectAccessible(page, 'the class page with its grid');
   const files = await downloadResults(page, dir);
   for (const f of ['report.html', 'report.json', 'grades.csv', 'grades-points.csv', 'grades-brightspace.csv', 'feedback-brightspace.zip']) {
@@ -46,6 +55,7 @@ test('a download dropped on the class page gets the command\'s verdicts and reas
   }
   // the grade files as the command writes them, and the feedback zip with the command's entries
   for (const f of GRADE_FILES) expect(text(files[f]), f).toBe(readFileSync(path.join(command.out, f), 'utf8'));
+  expect(text(files['grades-brightspace.csv']), 'the class list\'s ids').toMatch(/00000101/);
   const entries = (bytes) => Object.keys(unzipSync(bytes)).sort();
   expect(entries(files['feedback-brightspace.zip'])).toEqual(entries(readFileSync(path.join(command.out, 'feedback-brightspace.zip'))));
 
@@ -79,7 +89,7 @@ test('a download dropped on the class page gets the command\'s verdicts and reas
   const set = await downloadResults(page, dir);
   const tsv = path.join(dir, 'overrides.tsv');
   writeFileSync(tsv, set['overrides.tsv']);
-  const again = commandReport(zip, dir, ['--report-only', '--overrides', tsv]);
+  const again = commandReport(zip, dir, ['--report-only', '--overrides', tsv, '--roster', roster]);
   for (const f of GRADE_FILES) expect(text(set[f]), f).toBe(readFileSync(path.join(again.out, f), 'utf8'));
   expect(text(set['grades-points.csv'])).toMatch(/^Wanda Wire,.*,1,1,0,0,0,2,5,/m);
   const wanda = Object.keys(set).find((f) => /^feedback\/.*Wanda/.test(f));

@@ -19,13 +19,18 @@ const filesUnder = (dir) => readdirSync(dir).flatMap((f) => {
   return statSync(p).isDirectory() ? filesUnder(p) : f.endsWith('.js') ? [p] : [];
 });
 
+/** A module's code, its comments left out. */
+const codeOf = (file) => readFileSync(file, 'utf8').replace(/\/\*[\s\S]*?\*\//g, '').replace(/^\s*\/\/.*$/gm, '');
+// Node's own globals, which a page does not have (a page's module that touches one throws)
+const NODE_GLOBALS = /\b(Buffer|process|require|__dirname|__filename|global)\b(?!\s*:)/;
+
 /** Every module reached from `roots` by their imports: { modules (files), outside (bare specifiers, with who imports them) }. */
 function reached(roots) {
   const seen = new Set(), outside = [];
   const visit = (file) => {
     if (seen.has(file)) return;
     seen.add(file);
-    const code = readFileSync(file, 'utf8').replace(/\/\*[\s\S]*?\*\//g, '').replace(/^\s*\/\/.*$/gm, '');
+    const code = codeOf(file);
     for (const m of code.matchAll(SPECIFIER)) {
       const spec = m[1] || m[2];
       if (spec.startsWith('.')) visit(path.resolve(path.dirname(file), spec));
@@ -42,6 +47,10 @@ test('nothing grader/class/ imports, all the way down, is a Node module; its pac
   const node = outside.filter(({ spec }) => spec.startsWith('node:') || builtinModules.includes(spec.split('/')[0]));
   assert.deepEqual(node, []);
   assert.deepEqual(outside.filter(({ spec }) => !PACKAGES.includes(spec)), []);
+  // nor a global only Node has (Buffer, process, require, ...): strings aside, where a sentence may name one
+  const strings = /(['"`])(?:\\.|(?!\1)[^\\\n])*\1/g;
+  const uses = modules.filter((f) => NODE_GLOBALS.test(codeOf(f).replace(strings, '""'))).map((f) => path.relative(CLASS, f));
+  assert.deepEqual(uses, []);
 });
 
 test('the walk sees an import of Node where there is one (the command\'s report writer)', () => {
