@@ -75,9 +75,10 @@ const picturesOf = (rows, pictures) => rows.flatMap((r) => Object.values(r.image
 
 /**
  * Grades `students` (take-in's submissions), `workers` at once, each in a frame stage of its own;
- * each part's row shown as it ends (`show`) and the progress line kept. Returns Map name → rows.
+ * each part's row shown as it ends (`show`) and the progress line kept; `pictures` (Map href → data:
+ * URL) gets each part's pictures. Returns { graded: Map name → rows, pictures }.
  */
-async function gradeAll(students, { rubric, workers, show, started, key }) {
+async function gradeAll(students, { rubric, workers, show, started, key, pictures }) {
   const why = unsupported();
   if (why) throw new IntakeError(why);
   await startHost();
@@ -90,7 +91,7 @@ async function gradeAll(students, { rubric, workers, show, started, key }) {
     const left = done ? clock((s / done) * (all - done)) : '…';
     $('progress').textContent = `${done} of ${all} parts, ${finished} of ${students.length} hand-ins · ${clock(s)} so far · about ${left} left${what ? ` · ${what}` : ''}`;
   };
-  const pictures = new Map(), graded = new Map();
+  const graded = new Map();
   // the hand-ins graded before a reload (kept in the browser: store.js) are not graded again
   const kept = await keptStudents(key);
   for (const s of students.filter((x) => kept.has(x.name))) {
@@ -207,14 +208,16 @@ async function run(input) {
     if (!students.length) throw new IntakeError('The download has no hand-ins.');
     overrides.clear();
     last = { key };
+    const pictures = new Map();
     for (const o of await keptOverrides(key)) overrides.set(`${o.student}\n${o.part}`, o);
-    const grid = gridOf(students, (name, part, o) => override(grid, name, part, o));
+    const pictureOf = (href) => pictures.get(href) ?? null;
+    const grid = gridOf(students, (name, part, o) => override(grid, name, part, o), pictureOf);
     const { table, show } = grid;
     const failed = students.filter((s) => s.error).length;
     $('results').append(el('p', { textContent: `Found ${got.found}: ${students.length} hand-in(s)${failed ? `; ${failed} could not be unpacked` : ''}.` }), table);
     const workers = Math.max(1, Math.min(MOST_WORKERS, Number($('workers').value) || 1));
     for (const o of overrides.values()) grid.teacher(o.student, o.part, o);
-    const { graded, pictures } = await gradeAll(students, { rubric, workers, show, started, key });
+    const { graded } = await gradeAll(students, { rubric, workers, show, started, key, pictures });
     $('progress').textContent = `done in ${clock((performance.now() - started) / MS_PER_SECOND)}: ${students.length * PARTS.length} parts of ${students.length} hand-ins`;
     last = { key, got, students, graded, pictures, rubric, roster };
     giveBack(last);

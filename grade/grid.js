@@ -14,12 +14,16 @@ const el = (tag, props = {}, ...children) => {
 /** The badge of a verdict (pass, review, fail; anything else, such as not graded here, is grey). */
 const badge = (verdict) => el('span', { className: `badge ${VERDICTS.includes(verdict) ? verdict : 'unchecked'}`, textContent: verdict });
 
+/** The pictures a cell shows, as the report shows them: the part's judged picture and our step beside it. */
+const PICTURES = [['judged', 'judged'], ['reference', 'our step, same size and light']];
+
 /**
  * The grid of `students` (take-in's submissions): { table, show(row) (a part's row, as graded),
  * teacher(name, part, override or null) (the teacher's verdict shown) }. `onOverride(name, part,
- * { verdict, note } | null)` is called when the teacher sets or clears a verdict in a cell.
+ * { verdict, note } | null)` is called when the teacher sets or clears a verdict in a cell;
+ * `pictureOf(href)` gives a row's picture as a data: URL (or null).
  */
-export function gridOf(students, onOverride) {
+export function gridOf(students, onOverride, pictureOf = () => null) {
   const cells = new Map();
   const key = (name, part) => `${name}\n${part}`;
   const body = el('tbody', {}, ...students.map((s) => {
@@ -47,8 +51,12 @@ export function gridOf(students, onOverride) {
     const set = el('button', { type: 'button', textContent: 'Set' });
     const chosen = () => (choice.value ? { verdict: choice.value, note: note.value.trim() } : null);
     set.addEventListener('click', () => onOverride(row.name, row.part, chosen()));
+    const figures = PICTURES.filter(([k]) => row.images && pictureOf(row.images[k])).map(([k, caption]) => el('figure', {},
+      el('img', { src: pictureOf(row.images[k]), alt: `${row.name} ${row.part}: ${caption}`, width: 120, height: 120 }),
+      el('figcaption', { textContent: caption })));
     td.replaceChildren(el('details', {}, summary,
       el('ul', {}, ...row.reasons.map((t) => el('li', { textContent: t }))),
+      figures.length ? el('div', { className: 'pictures' }, ...figures) : null,
       el('p', { className: 'override' }, el('label', {}, 'Your verdict ', choice), ' ', el('label', {}, 'note to the student ', note), ' ', set)));
   };
   return {
