@@ -75,14 +75,27 @@ async function partsOf(files) {
   }
 }
 
+/** How often a part may take the page down (a renderer that crashed, a tab closed while it ran) before it is not graded here. */
+export const MOST_LOST = 2;
+
+/** The row of a part that took the page down MOST_LOST times: not graded here, and why. */
+function lostRow(name, part, page) {
+  const reason = `${NOT_GRADED}: the page was lost ${MOST_LOST} times while this part was graded (its page crashed the browser's renderer, ` +
+    'or the tab was closed or reloaded then), so the class page went on without it: grade it with npm run grade, or look at it yourself';
+  const row = partRow(name, part, page, { status: NOT_GRADED, verdict: NOT_GRADED });
+  return withFindings(row, [{ id: 'browser-failed', level: NOT_GRADED, reason }]);
+}
+
 /**
  * The parts of `student` (take-in's submission with its handIn: Map path → bytes) graded: their
  * rows, in PARTS' order. `pictures` (Map href → data: URL) gets every picture a row names.
  * `stage`: the element the frames open in; `progress(part, what)`; `browserVersion`: the browser's
- * name and version, as the report names it; `webgpuHere`: this browser has a WebGPU adapter.
+ * name and version, as the report names it; `webgpuHere`: this browser has a WebGPU adapter;
+ * `begin(part)`: records that the part is begun and says how often it was begun before and lost.
  */
 export async function gradeStudent(o) {
   const { student, rubric, frameScript, stage, pictures, progress = () => {}, webgpuHere = true, reference = true } = o;
+  const begin = o.begin || (async () => 0);
   const { name } = student;
   if (student.error) return PARTS.map((part) => notUnpackedRow(name, part, student.error));
   const files = new Map([...student.handIn].map(([p, bytes]) => [p, new Blob([bytes])]));
@@ -100,6 +113,7 @@ export async function gradeStudent(o) {
         rows.push(withFindings(linked, [linkedPage(part, page, linksTo)]));
         continue;
       }
+      if ((await begin(part)) >= MOST_LOST) { rows.push(lostRow(name, part, page)); continue; }
       session.clearLog();
       const told = (what) => progress(part, what);
       const r = asNotGraded(await checkPart({ part, page, session, rubric, stage, webgpuHere, progress: told }));

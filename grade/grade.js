@@ -13,7 +13,7 @@ import { MS_PER_SECOND } from '../grader/core/units.js';
 import { matchRoster, parseRoster } from '../grader/class/roster.js';
 import { OVERRIDES_FILE, applyOverrides, overridesText } from '../grader/class/overrides.js';
 import { gridOf } from './grid.js';
-import { classKey, keepOverrides, keepStudent, keptOverrides, keptStudents } from './store.js';
+import { beginPart, classKey, keepOverrides, keepStudent, keptOverrides, keptStudents } from './store.js';
 
 const $ = (id) => document.getElementById(id);
 const el = (tag, props = {}, ...children) => {
@@ -103,13 +103,18 @@ async function gradeAll(students, { rubric, workers, show, started, key, picture
   }
   window.grading.resumed = [...graded.keys()];
   window.grading.gradedHere = [];
+  window.grading.begun = [];
   const queue = students.filter((x) => !kept.has(x.name));
   $('stages').replaceChildren(...Array.from({ length: workers }, () => el('div', { className: 'stage' })));
   const work = async (stage) => {
     for (let s = queue.shift(); s; s = queue.shift()) {
       const progress = (part, what) => line(`${s.name} ${part}: ${what}`);
+      const begin = (part) => {
+        window.grading.begun.push(`${s.name} ${part}`);
+        return beginPart(key, s.name, part);
+      };
       const rows = await gradeStudent({ student: s, rubric, frameScript, stage, pictures, browserVersion, webgpuHere,
-        reference: REFERENCE, progress });
+        reference: REFERENCE, progress, begin });
       for (const r of rows) { show(r); done++; }
       graded.set(s.name, rows);
       await keepStudent(key, s.name, rows, picturesOf(rows, pictures));

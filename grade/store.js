@@ -1,8 +1,9 @@
 // What the class page has graded, kept in the browser (IndexedDB), so that a reload or a closed
-// tab loses nothing: each student's rows and pictures as they end, and the teacher's verdicts, under
+// tab loses nothing: each student's rows and pictures as they end, the teacher's verdicts, and how
+// often each part was begun (a part begun again and again never ended: its page took the tab down), under
 // the class's key (the download's bytes and the rubric, hashed: the same download dropped again
 // finds them; another download, or another rubric, does not).
-const DB = 'grade-class', VERSION = 1, STUDENTS = 'students', OVERRIDES = 'overrides';
+const DB = 'grade-class', VERSION = 2, STUDENTS = 'students', OVERRIDES = 'overrides', BEGUN = 'begun';
 
 let opened = null;
 /** The database, opened once (null where the browser keeps none: a private window may refuse it). */
@@ -16,8 +17,9 @@ function db() {
       return;
     }
     req.onupgradeneeded = () => {
-      req.result.createObjectStore(STUDENTS);
-      req.result.createObjectStore(OVERRIDES);
+      for (const store of [STUDENTS, OVERRIDES, BEGUN]) {
+        if (!req.result.objectStoreNames.contains(store)) req.result.createObjectStore(store);
+      }
     };
     req.onsuccess = () => resolve(req.result);
     req.onerror = () => resolve(null);
@@ -66,3 +68,12 @@ export const keepOverrides = (key, list) => request(OVERRIDES, 'readwrite', (s) 
 
 /** The teacher's verdicts of class `key` kept, or []. */
 export const keptOverrides = async (key) => (await request(OVERRIDES, 'readonly', (s) => s.get(key))) || [];
+
+const partKey = (key, name, part) => `${key}\n${name}\n${part}`;
+
+/** Records that `name`'s `part` of class `key` is begun; returns how often it was begun before (and never kept). */
+export async function beginPart(key, name, part) {
+  const before = (await request(BEGUN, 'readonly', (s) => s.get(partKey(key, name, part)))) || 0;
+  await request(BEGUN, 'readwrite', (s) => s.put(before + 1, partKey(key, name, part)));
+  return before;
+}

@@ -144,3 +144,27 @@ test('the site published as static files under a path (npm run publish-site) gra
     server.stop();
   }
 });
+
+test('a part during which the page is lost twice is not graded here, with why, and the rest of the class goes on', async ({ page }) => {
+  test.setTimeout(300_000);
+  const dir = mkdtempSync(path.join(tmpdir(), 'grade-page-lost-'));
+  const zip = writeClassDownload(path.join(dir, 'download.zip'));
+  const begun = (what) => page.waitForFunction((w) => window.grading.begun && window.grading.begun.includes(w), what, { timeout: 240_000, polling: 'raf' });
+  await page.goto('/grade/?reference=0');
+  // the page lost (reloaded here, as a renderer that crashed or a tab closed would lose it) twice while Wanda's WP04P1 is graded
+  for (let k = 0; k < 2; k++) {
+    await page.locator('#workers').fill('1');
+    await page.locator('#zip').setInputFiles(zip);
+    await begun('Wanda Wire WP04P1');
+    await page.reload();
+  }
+  await page.locator('#workers').fill('1');
+  await page.locator('#zip').setInputFiles(zip);
+  await page.waitForFunction(() => window.grading && window.grading.done, null, { timeout: 240_000, polling: 500 });
+  const grading = await page.evaluate(() => window.grading);
+  expect(grading.error).toBeUndefined();
+  const wanda = grading.students.find((s) => s.name === 'Wanda Wire').parts;
+  expect(wanda.map((p) => p.verdict)).toEqual(['not graded here', 'pass', 'fail', 'fail', 'fail']);
+  expect(wanda[0].reasons[0]).toMatch(/^not graded here: the page was lost 2 times while this part was graded/);
+  expect(grading.students.find((s) => s.name === 'Signe Søndergård').parts.map((p) => p.verdict)).toEqual(['pass', 'pass', 'fail', 'fail', 'fail']);
+});
