@@ -10,19 +10,14 @@ import { checkPart, drawReference, frameScript } from './runner.js';
 import { handInSource } from './serve.js';
 import { missedSlides, stepLink } from './slides.js';
 import { AUDITS } from '../grader/core/audits/index.js';
-import { NOT_CHECKED, NO_WEBGPU_HERE } from './not-checked.js';
+import { NOT_CHECKED, NO_WEBGPU_HERE, hasWebGPU } from './not-checked.js';
+import { dropBox, el } from './dom.js';
 import { PARTS } from '../grader/core/part-names.js';
 import { withFindings, findingsOfResult } from '../grader/core/part-result.js';
 import { missingPage } from '../grader/core/audits/page.js';
 import { MS_PER_SECOND } from '../grader/core/units.js';
 
 const $ = (id) => document.getElementById(id);
-const el = (tag, { dataset, ...props } = {}, ...children) => {
-  const e = Object.assign(document.createElement(tag), props);
-  if (dataset) Object.assign(e.dataset, dataset);
-  e.append(...children.filter((c) => c !== null && c !== undefined));
-  return e;
-};
 window.check = { done: false, parts: [] };
 let busy = false;
 // ?reference=0 leaves out our step beside each part (a quicker run, for comparing many hand-ins)
@@ -30,15 +25,6 @@ const REFERENCE = new URLSearchParams(location.search).get('reference') !== '0';
 
 function say(text, kind = 'error') {
   $('messages').replaceChildren(el('p', { className: kind, textContent: text }));
-}
-
-/** Whether a WebGPU adapter is there (the API alone is not enough: headless and some GPUs give none). */
-async function hasWebGPU() {
-  try {
-    return !!(navigator.gpu && (await navigator.gpu.requestAdapter()));
-  } catch {
-    return false;
-  }
 }
 
 /** An image { width, height, data } as a PNG data URL. */
@@ -163,13 +149,7 @@ $('zip').addEventListener('change', (e) => {
   if (list.length) run(() => (/\.zip$/i.test(list[0].name) ? entriesFromInput(list) : notZip()));
   e.target.value = '';
 });
-const drop = $('drop');
-for (const type of ['dragenter', 'dragover']) drop.addEventListener(type, (e) => { e.preventDefault(); drop.classList.add('over'); });
-drop.addEventListener('dragleave', () => drop.classList.remove('over'));
-drop.addEventListener('drop', (e) => {
-  e.preventDefault();
-  drop.classList.remove('over');
-  const items = e.dataTransfer;
+dropBox($('drop'), (items) => {
   const gathered = entriesFromDrop(items); // the entries must be read while the drop event lasts
   run(() => gathered);
 });

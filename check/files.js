@@ -99,14 +99,18 @@ export async function entriesFromInput(fileList) {
   return list.map((f) => ({ path: f.webkitRelativePath || f.name, blob: f }));
 }
 
-/** A drop: folders walked (FileSystemEntry), files taken, one .zip unpacked. */
-export async function entriesFromDrop(dataTransfer) {
+/**
+ * A drop: folders walked (FileSystemEntry), files taken, one .zip unpacked (with `zip` false, kept
+ * as it is); past `most` files the walk stops (the list then holds more than `most`: the caller
+ * says it is too much).
+ */
+export async function entriesFromDrop(dataTransfer, { most = MAX_FILES, zip = true } = {}) {
   const roots = [...dataTransfer.items]
     .filter((i) => i.kind === 'file')
     .map((i) => i.webkitGetAsEntry && i.webkitGetAsEntry())
     .filter(Boolean);
   if (!roots.length) return entriesFromInput(dataTransfer.files);
-  if (roots.length === 1 && roots[0].isFile && /\.zip$/i.test(roots[0].name)) return unzipEntries(dataTransfer.files[0]);
+  if (zip && roots.length === 1 && roots[0].isFile && /\.zip$/i.test(roots[0].name)) return unzipEntries(dataTransfer.files[0]);
   const out = [];
   const fileOf = (entry) => new Promise((resolve, reject) => entry.file(resolve, reject));
   const children = async (dir) => {
@@ -118,7 +122,7 @@ export async function entriesFromDrop(dataTransfer) {
     }
   };
   const walk = async (entry, prefix) => {
-    if (out.length > MAX_FILES) return;
+    if (out.length > most) return;
     const path = prefix ? `${prefix}/${entry.name}` : entry.name;
     if (skipped([entry.name])) return;
     if (entry.isFile) out.push({ path, blob: await fileOf(entry) });

@@ -36,3 +36,12 @@ export function notCheckedHere({ webgpuHere, usedWebGPU, api, broken = [] }) {
   }
   return null;
 }
+
+/** Whether this browser has a WebGPU adapter (the API alone is not enough: headless and some GPUs give none). */
+export async function hasWebGPU() {
+  try {
+    return !!(navigator.gpu && (await navigator.gpu.requestAdapter()));
+  } catch {
+    return false;
+  }
+}

@@ -8,6 +8,9 @@ import { gradeStudent } from './class-run.js';
 import { classFiles, gradingOf, writeInto, zipOf } from './results.js';
 import { startHost, unsupported } from '../check/host.js';
 import { frameScript as makeFrameScript } from '../check/runner.js';
+import { hasWebGPU } from '../check/not-checked.js';
+import { dropBox, el } from '../check/dom.js';
+import { entriesFromDrop } from '../check/files.js';
 import { PARTS } from '../grader/core/part-names.js';
 import { MS_PER_SECOND } from '../grader/core/units.js';
 import { matchRoster, parseRoster } from '../grader/class/roster.js';
@@ -16,11 +19,6 @@ import { gridOf } from './grid.js';
 import { beginPart, classKey, keepOverrides, keepStudent, keptOverrides, keptStudents } from './store.js';
 
 const $ = (id) => document.getElementById(id);
-const el = (tag, props = {}, ...children) => {
-  const e = Object.assign(document.createElement(tag), props);
-  e.append(...children.filter((c) => c !== null && c !== undefined));
-  return e;
-};
 window.grading = { done: false, students: [] };
 let busy = false;
 // ?reference=0 leaves out our step beside each part (a quicker run)
@@ -31,15 +29,6 @@ $('workers').value = String(Math.max(1, Math.min(MOST_WORKERS, Math.floor((navig
 
 function say(text, kind = 'error') {
   $('messages').replaceChildren(el('p', { className: kind, textContent: text }));
-}
-
-/** Whether a WebGPU adapter is there (the API alone is not enough: headless and some GPUs give none). */
-async function hasWebGPU() {
-  try {
-    return !!(navigator.gpu && (await navigator.gpu.requestAdapter()));
-  } catch {
-    return false;
-  }
 }
 
 /** The browser grading, as the report names it ("Chrome 131", "Firefox 128"), from its user agent. */
@@ -245,13 +234,16 @@ $('folder').addEventListener('change', (e) => {
   if (list.length) run(async () => ({ folder: list }));
   e.target.value = '';
 });
-const drop = $('drop');
-for (const type of ['dragenter', 'dragover']) drop.addEventListener(type, (e) => { e.preventDefault(); drop.classList.add('over'); });
-drop.addEventListener('dragleave', () => drop.classList.remove('over'));
-drop.addEventListener('drop', (e) => {
-  e.preventDefault();
-  drop.classList.remove('over');
-  const file = e.dataTransfer.files[0];
-  if (file && /\.zip$/i.test(file.name)) run(async () => ({ zip: file }));
-  else say('Drop the download\'s .zip here, or pick its folder with the button above.', 'notice');
+/** The most files of a dropped folder read (a class of 300 at the rubric's 2000 files each is far less). */
+const MOST_DROPPED = 200000;
+dropBox($('drop'), (items) => {
+  const [file] = items.files;
+  if (items.files.length === 1 && /\.zip$/i.test(file.name)) { run(async () => ({ zip: file })); return; }
+  // the entries must be read while the drop event lasts
+  const gathered = entriesFromDrop(items, { most: MOST_DROPPED, zip: false });
+  run(async () => {
+    const folder = await gathered;
+    if (folder.length > MOST_DROPPED) throw new IntakeError(`More than ${MOST_DROPPED} files were dropped: drop the download's .zip, or its own folder.`);
+    return { folder };
+  });
 });

@@ -2,14 +2,10 @@
 // it, and there the teacher's last word (a verdict and a note to the student), as overrides.tsv
 // gives it to the command: shown as the teacher's, the grader's beside it.
 import { PARTS } from '../grader/core/part-names.js';
+import { el } from '../check/dom.js';
 
 const VERDICTS = ['pass', 'review', 'fail'];
 
-const el = (tag, props = {}, ...children) => {
-  const e = Object.assign(document.createElement(tag), props);
-  e.append(...children.filter((c) => c !== null && c !== undefined));
-  return e;
-};
 
 /** The badge of a verdict (pass, review, fail; anything else, such as not graded here, is grey). */
 const badge = (verdict) => el('span', { className: `badge ${VERDICTS.includes(verdict) ? verdict : 'unchecked'}`, textContent: verdict });

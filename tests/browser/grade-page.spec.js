@@ -5,7 +5,7 @@
 // written into a folder the teacher picks); the teacher's verdicts set in its grid; a reload in the
 // middle resumes.
 import { test, expect } from '@playwright/test';
-import { mkdtempSync, readFileSync, writeFileSync } from 'node:fs';
+import { mkdirSync, mkdtempSync, readFileSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import path from 'node:path';
 import { unzipSync } from 'fflate';
@@ -123,15 +123,21 @@ test('a reload in the middle resumes where it stopped: the hand-ins graded are n
   ]);
 });
 
-test('the site published as static files under a path (npm run publish-site) grades a download on its class page there', async ({ page }) => {
+test('the site published as static files under a path (npm run publish-site) grades a download, picked as its folder, on its class page there', async ({ page }) => {
   test.setTimeout(300_000);
   const dir = mkdtempSync(path.join(tmpdir(), 'grade-page-published-'));
   publish(path.join(dir, 'site', '02561'));
   const server = await startServer(path.join(dir, 'site'));
   try {
+    // the download as the folder it unpacked into, picked as a folder
     const zip = writeClassDownload(path.join(dir, 'download.zip'));
+    const folder = path.join(dir, 'download');
+    for (const [name, data] of Object.entries(unzipSync(readFileSync(zip)))) {
+      mkdirSync(path.dirname(path.join(folder, name)), { recursive: true });
+      writeFileSync(path.join(folder, name), data);
+    }
     await page.goto(`${server.url}/02561/grade/?reference=0`);
-    await page.locator('#zip').setInputFiles(zip);
+    await page.locator('#folder').setInputFiles(folder);
     await page.waitForFunction(() => window.grading && window.grading.done, null, { timeout: 240_000, polling: 500 });
     const grading = await page.evaluate(() => window.grading);
     expect(grading.error).toBeUndefined();

@@ -1,0 +1,20 @@
+// What the check page and the class page share of the DOM: an element made with its properties
+// (its data- attributes under `dataset`) and its children (null and undefined left out), and the
+// box a hand-in or a download is dropped on.
+export const el = (tag, { dataset, ...props } = {}, ...children) => {
+  const e = Object.assign(document.createElement(tag), props);
+  if (dataset) Object.assign(e.dataset, dataset);
+  e.append(...children.filter((c) => c !== null && c !== undefined));
+  return e;
+};
+
+/** Makes `box` a drop target: marked while something is dragged over it, `dropped(dataTransfer)` on a drop. */
+export function dropBox(box, dropped) {
+  for (const type of ['dragenter', 'dragover']) box.addEventListener(type, (e) => { e.preventDefault(); box.classList.add('over'); });
+  box.addEventListener('dragleave', () => box.classList.remove('over'));
+  box.addEventListener('drop', (e) => {
+    e.preventDefault();
+    box.classList.remove('over');
+    dropped(e.dataTransfer);
+  });
+}
