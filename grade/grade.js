@@ -11,6 +11,7 @@ import { frameScript as makeFrameScript } from '../check/runner.js';
 import { hasWebGPU } from '../check/not-checked.js';
 import { dropBox, el } from '../check/dom.js';
 import { entriesFromDrop } from '../check/files.js';
+import { dueTime } from '../grader/class/intake/formats.js';
 import { PARTS } from '../grader/core/part-names.js';
 import { MS_PER_SECOND } from '../grader/core/units.js';
 import { matchRoster, parseRoster } from '../grader/class/roster.js';
@@ -45,16 +46,16 @@ const clock = (s) => `${Math.floor(s / 60)}:${String(Math.floor(s % 60)).padStar
  * The download as picked or dropped: a .zip (its bytes) or a folder ([{ path, bytes }]), taken in:
  * { got (take-in's), bytes (what the class's key is made of: the zip, or each file's path and bytes) }.
  */
-async function takeIn(input, rubric) {
+async function takeIn(input, rubric, due) {
   if (input.zip) {
     const bytes = new Uint8Array(await input.zip.arrayBuffer());
-    return { got: takeInZip(bytes, input.zip.name, rubric.unpack), bytes: [bytes] };
+    return { got: takeInZip(bytes, input.zip.name, rubric.unpack, due), bytes: [bytes] };
   }
   const read = async (f) => ({ path: f.path, bytes: new Uint8Array(await f.blob.arrayBuffer()) });
   const byPath = (a, b) => (a.path < b.path ? -1 : a.path > b.path ? 1 : 0);
   const entries = (await Promise.all(input.folder.map(read))).sort(byPath);
   const name = entries.length ? entries[0].path.split('/')[0] : 'the folder';
-  const got = takeInClass(folderListing(entries), name, rubric.unpack);
+  const got = takeInClass(folderListing(entries), name, rubric.unpack, due);
   return { got, bytes: entries.flatMap((e) => [new TextEncoder().encode(`\n${e.path}\n`), e.bytes]) };
 }
 
@@ -194,8 +195,9 @@ async function run(input) {
     const rubricText = await (await fetch(new URL('../grader/core/rubric.json', import.meta.url))).text();
     const rubric = JSON.parse(rubricText);
     $('progress').textContent = 'reading the download…';
-    const { got, bytes } = await takeIn(await input(), rubric);
-    const key = await classKey(bytes, `${rubricText}\nreference=${REFERENCE}`);
+    const due = $('due').value ? dueTime($('due').value) : null;
+    const { got, bytes } = await takeIn(await input(), rubric, due);
+    const key = await classKey(bytes, `${rubricText}\nreference=${REFERENCE}\ndue=${due}`);
     const roster = $('roster').files[0] ? parseRoster(await $('roster').files[0].text()) : null;
     for (const n of got.notes) $('messages').append(el('p', { className: 'notice', textContent: n }));
     const students = got.submissions;

@@ -34,12 +34,13 @@ test('a download dropped on the class page gets the command\'s verdicts and reas
   const zip = writeClassDownload(path.join(dir, 'download.zip'));
   const roster = path.join(dir, 'classlist.csv');
   writeFileSync(roster, CLASS_ROSTER);
-  const command = commandReport(zip, dir, ['--roster', roster]);
+  const command = commandReport(zip, dir, ['--roster', roster, '--due', '2025-10-10 10:00']);
   // nothing leaves the machine: every request the page makes is of its own origin (or its own data: and blob: URLs)
   const requests = [];
   page.on('request', (r) => requests.push(r.url()));
   await page.goto('/grade/?reference=0');
   await page.locator('#roster').setInputFiles(roster);
+  await page.locator('#due').fill('2025-10-10T10:00');
   await page.locator('#zip').setInputFiles(zip);
   await page.waitForFunction(() => window.grading && window.grading.done, null, { timeout: 240_000, polling: 500 });
   const grading = await page.evaluate(() => window.grading);
@@ -56,6 +57,7 @@ test('a download dropped on the class page gets the command\'s verdicts and reas
   // the grade files as the command writes them, and the feedback zip with the command's entries
   for (const f of GRADE_FILES) expect(text(files[f]), f).toBe(readFileSync(path.join(command.out, f), 'utf8'));
   expect(text(files['grades-brightspace.csv']), 'the class list\'s ids').toMatch(/00000101/);
+  expect(text(files['grades-points.csv']), 'handed in at 10:22, due at 10:00: late').toMatch(/^Wanda Wire,brightspace,640601,39701,2025-10-10T10:22,late,/m);
   const entries = (bytes) => Object.keys(unzipSync(bytes)).sort();
   expect(entries(files['feedback-brightspace.zip'])).toEqual(entries(readFileSync(path.join(command.out, 'feedback-brightspace.zip'))));
 
@@ -89,7 +91,7 @@ test('a download dropped on the class page gets the command\'s verdicts and reas
   const set = await downloadResults(page, dir);
   const tsv = path.join(dir, 'overrides.tsv');
   writeFileSync(tsv, set['overrides.tsv']);
-  const again = commandReport(zip, dir, ['--report-only', '--overrides', tsv, '--roster', roster]);
+  const again = commandReport(zip, dir, ['--report-only', '--overrides', tsv, '--roster', roster, '--due', '2025-10-10 10:00']);
   for (const f of GRADE_FILES) expect(text(set[f]), f).toBe(readFileSync(path.join(again.out, f), 'utf8'));
   expect(text(set['grades-points.csv'])).toMatch(/^Wanda Wire,.*,1,1,0,0,0,2,5,/m);
   const wanda = Object.keys(set).find((f) => /^feedback\/.*Wanda/.test(f));
