@@ -16,6 +16,7 @@ import { PARTS } from '../grader/core/part-names.js';
 import { withFindings, findingsOfResult } from '../grader/core/part-result.js';
 import { missingPage } from '../grader/core/audits/page.js';
 import { MS_PER_SECOND } from '../grader/core/units.js';
+import { NOT_GRADED } from '../grader/core/verdict.js';
 
 const $ = (id) => document.getElementById(id);
 window.check = { done: false, parts: [] };
@@ -48,11 +49,12 @@ function auditTooltip(f) {
 
 function card(r, index, total, file) {
   const findings = findingsOfResult(r);
-  const slides = r.verdict === 'pass' || r.verdict === NOT_CHECKED ? [] : missedSlides(findings);
+  const slides = r.verdict === 'pass' || r.verdict === NOT_CHECKED || r.verdict === NOT_GRADED ? [] : missedSlides(findings);
   const list = (title, items) => (items && items.length ? el('details', {}, el('summary', { textContent: `${title} (${items.length})` }),
     el('ul', {}, ...items.map((t) => el('li', { textContent: t })))) : null);
   const images = Object.entries(r.images || {}).filter(([k, im]) => CAPTIONS[k] && im && im.data);
-  const kind = r.verdict === NOT_CHECKED ? 'unchecked' : r.verdict;
+  // (no verdict here, the check's or the grader's own: grey)
+  const kind = r.verdict === NOT_CHECKED || r.verdict === NOT_GRADED ? 'unchecked' : r.verdict;
   return el('article', { className: `card ${kind}`, id: `card-${r.part}` },
     el('h2', {}, el('span', { textContent: r.part }), el('span', { className: `badge ${kind}`, textContent: BADGES[r.verdict] || r.verdict }),
       el('small', { textContent: `${file || 'not found'}${r.api ? ` · ${r.api}` : ''}${r.seconds ? ` · ${r.seconds.toFixed(0)} s` : ''} · part ${index + 1} of ${total}` })),

@@ -18,7 +18,8 @@ import { pixelsScript } from '../grader/browser/pixels.js';
 import { tamperScript } from '../grader/browser/tamper.js';
 import { webgpuCaptureScript } from '../grader/browser/webgpu-capture.js';
 import { gradePart } from '../grader/core/grade-part.js';
-import { judgement, notJudgedHere } from '../grader/core/part-result.js';
+import { judgement, notJudgedHere, statusOf } from '../grader/core/part-result.js';
+import { NOT_GRADED } from '../grader/core/verdict.js';
 import { timedOut, notOpened, asFail, graderTrouble } from '../grader/core/audits/page.js';
 import { referenceQuery, referencePicture } from '../grader/core/reference-state.js';
 import { deadlineOf } from '../grader/core/deadline.js';
@@ -127,6 +128,7 @@ export async function checkPart({ part, page, session, rubric, stage, progress =
     controls: graded.controls || {},
     numbers: graded.numbers || {},
     ...judgement(graded, errors),
+    status: statusOf(graded),
     actions: graded.actions || [],
     images: graded.images || {},
     errors,
@@ -134,6 +136,9 @@ export async function checkPart({ part, page, session, rubric, stage, progress =
     notes: [...session.log.notes],
     seconds,
   };
+  // a part the grader itself does not grade here (too slow or too heavy with nothing wrong found, the
+  // browser failing): no verdict, what was seen below, as part-result.js's applyAudit says it
+  if (graded.notGraded) notJudgedHere(result, NOT_GRADED, graded.notGraded, (r) => `(seen here: ${r})`, graded.notGradedId || 'not-graded');
   // what the grader would have said stays below, for the student to read, but is no verdict
   const usedWebGPU = session.log.webgpu || graded.api === 'webgpu' || errors.some((e) => /requestAdapter|navigator\.gpu|\bgpu is (undefined|null)/.test(e));
   const not = notCheckedHere({ webgpuHere, usedWebGPU, api: graded.api, broken: [...broken, ...fp.broken()] });

@@ -32,11 +32,8 @@ function asNotGraded(r) {
   if (r.verdict !== NOT_CHECKED) return r;
   const findings = r.findings.map((f) => (f.level === NOT_CHECKED
     ? { ...f, level: NOT_GRADED, reason: f.reason.replace(/^not checked here/, NOT_GRADED) } : f));
-  return { ...withFindings(r, findings), verdict: NOT_GRADED };
+  return { ...withFindings(r, findings), verdict: NOT_GRADED, status: NOT_GRADED };
 }
-
-/** The status report.json gives a graded part, from its verdict. */
-const statusOf = (verdict) => (verdict === NOT_GRADED ? NOT_GRADED : verdict === 'fail' ? 'failed' : 'ok');
 
 /** Our step beside `row` (the part graded: `r`, check/runner.js's result), its pictures kept by `keep`. */
 function beside(row, r, rubric, keep) {
@@ -59,7 +56,7 @@ function beside(row, r, rubric, keep) {
 /** The row of part `part` of student `name`, whose page `page` was graded: `r` (check/runner.js's result), `notes` first. */
 function gradedRow(name, part, page, r, { notes, browserVersion }) {
   return partRow(name, part, page, {
-    status: statusOf(r.verdict), verdict: r.verdict, api: r.api, reasons: r.reasons, findings: r.findings,
+    status: r.status, verdict: r.verdict, api: r.api, reasons: r.reasons, findings: r.findings,
     actions: r.actions, controls: r.controls, numbers: r.numbers, pass: r.verdict === 'pass',
     notes: [...notes, ...r.notes], errors: r.errors, blocked: r.blocked, images: {},
     ...(browserVersion ? { browserVersion } : {}), canvas: r.canvas, seconds: r.seconds,

@@ -57,6 +57,13 @@ export function notJudgedHere(result, verdict, reason, seen, id) {
   return withFindings(Object.assign(result, { verdict }), [{ id, level: verdict, reason }, ...kept]);
 }
 
+/** A judged part's status, as report.json says it: failed, too slow, too heavy, not graded here or ok. */
+export function statusOf(judged) {
+  const slow = judged.tooHeavy ? 'too heavy' : 'too slow';
+  if (judged.notGraded) return judged.tooSlow ? slow : NOT_GRADED;
+  return judged.fail ? 'failed' : judged.tooSlow ? slow : 'ok';
+}
+
 /**
  * Sets `result`'s judging from `judged` (grade-part.js's judged(): fail, checks, numbers, images
  * by name, actions, controls, api, canvas). `files` maps a picture's name to its path relative to
@@ -71,12 +78,10 @@ export function applyAudit(result, judged, files = {}) {
     actions: [...(judged.actions || [])],
   });
   Object.assign(result, judgement(judged, result.errors || []));
-  const slow = judged.tooHeavy ? 'too heavy' : 'too slow';
-  result.status = judged.fail ? 'failed' : judged.tooSlow ? slow : 'ok';
+  result.status = statusOf(judged);
   if (judged.notGraded) {
     // the browser could not run it (WebGPU in Firefox ESR): no verdict; what was seen stays below
     notJudgedHere(result, NOT_GRADED, judged.notGraded, (r) => `(seen here: ${r})`, judged.notGradedId || 'not-graded');
-    result.status = judged.tooSlow ? slow : NOT_GRADED;
   }
   result.pass = result.verdict === 'pass';
   const kept = result.images || {};

@@ -115,3 +115,18 @@ test('pages that begin with their scripts are checked as any other; no verdict w
   await expect(page.locator('#card-WP04P3 .badge')).toHaveText('not checked here');
   await expect(page.locator('#progress')).toHaveText(/: 2 of 5 parts pass, 2 not checked here$/);
 });
+
+// A part the grader itself gives no verdict (too heavy: past the rubric's budget of work, a count of
+// vertices, with nothing wrong found) gets none on the check page either: "not graded here", as
+// npm run grade says of it (grader.spec.js holds the command to it on the same page and budget).
+test('a part past the rubric\'s budget of work is not graded here on the check page, as the command says', async ({ page }) => {
+  test.setTimeout(240_000);
+  await page.route('**/rubric.json', async (route) => {
+    const rubric = await (await route.fetch()).json();
+    await route.fulfill({ json: { ...rubric, thresholds: { ...rubric.thresholds, gatherWork: 20e6 } } });
+  });
+  const { check } = await checkFolder(page, path.resolve('tests/fixtures/heavy/dagny'), { query: '?reference=0', timeout: 200_000 });
+  const p5 = check.parts.find((p) => p.part === 'WP04P5');
+  expect(p5.verdict).toBe('not graded here');
+  expect(p5.reasons[0]).toMatch(/^not graded here: too heavy to grade: the page's own work over the grading \(20 million vertices, draw calls at 80 each\) passed the rubric's budget of 20 million \(gatherWork\)/);
+});
