@@ -49,7 +49,10 @@ test('a download dropped on the class page gets the command\'s verdicts and reas
   const origin = new URL(page.url()).origin;
   expect(requests.filter((u) => !u.startsWith(`${origin}/`) && !/^(data|blob):/.test(u))).toEqual([]);
   await expect(page.locator('#messages')).toContainText('Not in the class list: Broken Zip');
-  await expectAccessible(page, 'the class page with its grid');
+  // a cell open: its reasons, its pictures beside ours and the teacher's controls
+  await page.locator('td[data-verdict]').filter({ has: page.getByLabel('Wanda Wire WP04P2: the teacher\'s verdict') }).locator('summary').click();
+  await expect(page.getByRole('img', { name: 'Wanda Wire WP04P2: judged' })).toBeVisible();
+  await expectAccessible(page, 'the class page with its grid, a cell open');
   const files = await downloadResults(page, dir);
   for (const f of ['report.html', 'report.json', 'grades.csv', 'grades-points.csv', 'grades-brightspace.csv', 'feedback-brightspace.zip']) {
     expect(Object.keys(files), f).toContain(f);
