@@ -75,9 +75,11 @@ async function load(stage, src, seconds) {
  * ... } as { width, height, data }).
  * A part not checked here has verdict NOT_CHECKED, its reason first, and notChecked: 'webgpu' | 'instrumentation'.
  * @param {object} o { part, page (path in the hand-in), session (host.js), rubric, stage (element), progress (text),
- *   webgpuHere (this browser has WebGPU and an adapter) }
+ *   webgpuHere (this browser has WebGPU and an adapter), graderWords (the class page: where the grader
+ *   itself gives no verdict, its words stand, as the command's report has them) }
  */
-export async function checkPart({ part, page, session, rubric, stage, progress = () => {}, webgpuHere = true }) {
+export async function checkPart(o) {
+  const { part, page, session, rubric, stage, progress = () => {}, webgpuHere = true, graderWords = false } = o;
   const started = performance.now();
   const loadSeconds = rubric.loadSeconds;
   let graded = { fail: null, checks: [], actions: [], images: {}, busy: 0 };
@@ -142,7 +144,9 @@ export async function checkPart({ part, page, session, rubric, stage, progress =
   // what the grader would have said stays below, for the student to read, but is no verdict
   const usedWebGPU = session.log.webgpu || graded.api === 'webgpu' || errors.some((e) => /requestAdapter|navigator\.gpu|\bgpu is (undefined|null)/.test(e));
   const not = notCheckedHere({ webgpuHere, usedWebGPU, api: graded.api, broken: [...broken, ...fp.broken()] });
-  if (not) Object.assign(notJudgedHere(result, NOT_CHECKED, not.reason, (r) => `(the check saw: ${r})`, 'not-checked'), { notChecked: not.why });
+  if (not && !(graderWords && result.verdict === NOT_GRADED)) {
+    Object.assign(notJudgedHere(result, NOT_CHECKED, not.reason, (r) => `(the check saw: ${r})`, 'not-checked'), { notChecked: not.why });
+  }
   return result;
 }
 

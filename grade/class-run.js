@@ -113,7 +113,8 @@ export async function gradeStudent(o) {
       if ((await begin(part)) >= MOST_LOST) { rows.push(lostRow(name, part, page)); continue; }
       session.clearLog();
       const told = (what) => progress(part, what);
-      const r = asNotGraded(await checkPart({ part, page, session, rubric, stage, webgpuHere, progress: told }));
+      const args = { part, page, session, rubric, stage, webgpuHere, progress: told, graderWords: true };
+      const r = asNotGraded(await checkPart(args));
       const row = gradedRow(name, part, page, r, { notes, browserVersion: o.browserVersion });
       const keep = (key, img, href) => {
         pictures.set(href, pngURL(img));

@@ -13,6 +13,7 @@ import path from 'node:path';
 import { readArtifact } from '../../grader/node/run/artifacts.js';
 import { judged } from '../../grader/core/grade-part.js';
 import { applyAudit } from '../../grader/core/part-result.js';
+import { isEngineNotice } from '../../grader/node/run/firefox-page.js';
 import { NOT_GRADED } from '../../grader/core/verdict.js';
 import { parseLabels, agreement, agreementText } from '../../grader/node/report/labels.js';
 import { writeReport } from '../../grader/node/report/report.js';
@@ -88,4 +89,11 @@ test('--browser: chromium or firefox (2 on anything else); Firefox missing says 
   assert.equal(missing.status, 1);
   assert.match(missing.stderr, /Firefox is not at \/nonexistent\/firefox-esr \(FIREFOX_PATH\): set FIREFOX_PATH to a browser's executable, or unset it and install one: sudo apt-get update && sudo apt-get install -y firefox-esr/);
   assert.match(missing.stderr, /or grade in Chromium/);
+});
+
+test('Firefox\'s notice on a document with no declared character encoding is the engine\'s, not a page error; a script\'s error is', () => {
+  assert.equal(isEngineNotice('The character encoding of the document was not declared, so the encoding was guessed from content. The character encoding needs to be declared in the Content-Type HTTP header, using a meta tag, or using a byte order mark.'), true);
+  assert.equal(isEngineNotice('The character encoding of the HTML document was not declared. The document will render with garbled text in some browser configurations if the document contains characters from outside the US-ASCII range.'), true);
+  assert.equal(isEngineNotice('ReferenceError: vPosition is not defined'), false);
+  assert.equal(isEngineNotice('Error: The character encoding of the document was not declared'), false);
 });

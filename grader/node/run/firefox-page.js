@@ -9,6 +9,13 @@ import { submissionAnswers, urlOf } from './serve-submission.js';
 import { pageDriver } from './playwright-page.js';
 
 /**
+ * Whether a "page error" Firefox reports is its own notice about the document, not an error of the
+ * page's scripts: its HTML parser's word on a document that declares no character encoding (Chromium
+ * says nothing of it, and the check page's frames never see it), so that it never becomes a reason.
+ */
+export const isEngineNotice = (message) => /^The character encoding of the (HTML |plain text )?document was not declared/.test(String(message));
+
+/**
  * Opens the parts a worker grades, one after another, in `browser` (a puppeteer Browser of Firefox):
  * each part in a browser context of its own (its storage apart from the others'), at an origin of
  * its own (`http://p<n>.<host>`), with time frozen anew. The same shape as playwright-page.js's
@@ -51,7 +58,7 @@ export function firefoxOpener(browser, host) {
         log.blocked.push(`popup: ${first || popup.url()}`);
         popup.close().catch(() => {});
       });
-      page.on('pageerror', (e) => log.errors.push(`page error: ${e.message}`));
+      page.on('pageerror', (e) => { if (!isEngineNotice(e.message)) log.errors.push(`page error: ${e.message}`); });
       page.on('console', (m) => { if (m.type() === 'error' && !/Failed to load resource/.test(m.text())) log.errors.push(`console: ${m.text()}`); });
       page.on('dialog', (d) => {
         log.errors.push(`dialog: ${d.message()}`);
