@@ -60,6 +60,8 @@ export function framePage(frame, log) {
     async controls() {
       return plain(g().controls());
     },
+    /** The picture's two channels (grader/core/measure/shown.js), as far as a page can see them: see shownInFrame. */
+    shown: async () => settle().then(() => shownInFrame(win(), () => g().readBack())),
     /** A click as a user's (window.__grade.click): { ok, why }. */
     async click(c) {
       newTask();
@@ -127,4 +129,80 @@ async function surfaceOut(r, opts, plain) {
   if (s.why) return plain(s);
   const image = (bytes) => ({ width: s.width, height: s.height, data: new Uint8Array(bytes) });
   return { ...plain({ ...s, normals: null, points: null }), normals: image(s.normals), points: image(s.points) };
+}
+
+/** A PNG data URL's pixels as { width, height, data } and the decoded image (drawn in the check page's document). */
+async function decoded(url) {
+  const img = new Image();
+  img.src = url;
+  await img.decode();
+  const c = Object.assign(document.createElement('canvas'), { width: img.naturalWidth, height: img.naturalHeight });
+  const ctx = c.getContext('2d', { willReadFrequently: true });
+  ctx.drawImage(img, 0, 0);
+  const data = new Uint8Array(ctx.getImageData(0, 0, c.width, c.height).data);
+  return { img, pixels: { width: c.width, height: c.height, data } };
+}
+
+/** A canvas's picture box in the viewport, inside its border (as pixels.js's readBack gives the target's). */
+const pictureBox = (c) => {
+  const r = c.getBoundingClientRect();
+  return { x: r.x + c.clientLeft, y: r.y + c.clientTop, width: c.clientWidth, height: c.clientHeight };
+};
+
+/** The canvases of `doc` the browser paints over the canvas whose picture box is `box`, bottom first: [{ c, b (its box) }]. */
+function canvasesOver(doc, box) {
+  const canvases = [...doc.querySelectorAll('canvas')];
+  const same = (b) => b.x === box.x && b.y === box.y && b.width === box.width && b.height === box.height;
+  const target = canvases.find((c) => same(pictureBox(c)));
+  const over = [];
+  for (const c of canvases) {
+    const b = pictureBox(c);
+    const ix0 = Math.max(b.x, box.x), iy0 = Math.max(b.y, box.y);
+    const ix1 = Math.min(b.x + b.width, box.x + box.width), iy1 = Math.min(b.y + b.height, box.y + box.height);
+    if (c === target || !target || ix1 <= ix0 || iy1 <= iy0) continue;
+    // painted over the page's canvas where both are: before it in the elements at a point of both
+    const at = doc.elementsFromPoint((ix0 + ix1) / 2, (iy0 + iy1) / 2);
+    if (at.includes(c) && at.indexOf(c) < at.indexOf(target)) over.push({ c, b, depth: at.indexOf(c) });
+  }
+  return over.sort((p, q) => q.depth - p.depth);
+}
+
+/**
+ * The picture's two channels in a frame of the check page, which cannot photograph itself as the
+ * command's browser is photographed (playwright-page.js's shownChannels): the read-back, and as shown, that picture with every other canvas the browser paints over
+ * it drawn on top (a 2D canvas laid over the page's WebGL canvas shows what the page read back does
+ * not). An element other than a canvas laid over it, or a CSS filter, is not seen here.
+ * `readBack()`: pixels.js's readBack, called where another canvas is there. { raw, shown, box, clip }
+ * in the frame's CSS pixels, or { why }.
+ */
+async function shownInFrame(W, readBack) {
+  const alone = 'no other canvas over the page\'s canvas: as far as a page can see, it shows what it reads back';
+  if (W.document.querySelectorAll('canvas').length < 2) return { why: alone };
+  const rb = readBack();
+  if (!rb) return { why: 'no canvas read back' };
+  const { box, view } = rb;
+  if (!(box.width >= 1 && box.height >= 1)) return { why: 'the canvas has no size on the page' };
+  // the box in view, on whole pixels, a pixel more on each side, as the command's screenshot is taken
+  const x0 = Math.max(view.x, Math.floor(box.x) - 1), y0 = Math.max(view.y, Math.floor(box.y) - 1);
+  const x1 = Math.min(view.x + view.width, Math.ceil(box.x + box.width) + 1),
+    y1 = Math.min(view.y + view.height, Math.ceil(box.y + box.height) + 1);
+  if (x1 - x0 < box.width / 2 || y1 - y0 < box.height / 2) return { why: 'the canvas is mostly out of view' };
+  const clip = { x: x0, y: y0, width: x1 - x0, height: y1 - y0 };
+  const over = canvasesOver(W.document, box);
+  if (!over.length) return { why: alone };
+  const { img, pixels: raw } = await decoded(rb.png);
+  const out = Object.assign(document.createElement('canvas'), { width: clip.width, height: clip.height });
+  const ctx = out.getContext('2d', { willReadFrequently: true });
+  ctx.imageSmoothingEnabled = false;
+  ctx.drawImage(img, box.x - clip.x, box.y - clip.y, box.width, box.height);
+  for (const { c, b } of over) {
+    try {
+      ctx.drawImage(c, b.x - clip.x, b.y - clip.y, b.width, b.height);
+    } catch {
+      // (a canvas that cannot be read, tainted by another site's image: not drawn)
+    }
+  }
+  const data = new Uint8Array(ctx.getImageData(0, 0, clip.width, clip.height).data);
+  const shown = { width: clip.width, height: clip.height, data };
+  return { raw, shown, box, clip };
 }

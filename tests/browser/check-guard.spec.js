@@ -130,3 +130,15 @@ test('a part past the rubric\'s budget of work is not graded here on the check p
   expect(p5.verdict).toBe('not graded here');
   expect(p5.reasons[0]).toMatch(/^not graded here: too heavy to grade: the page's own work over the grading \(20 million vertices, draw calls at 80 each\) passed the rubric's budget of 20 million \(gatherWork\)/);
 });
+
+// tove's WP04P1 clears its WebGL canvas and paints a sphere on a 2D canvas laid over it: the browser
+// shows a sphere, a read-back of the WebGL canvas one grey. The command sees it in its screenshot; the
+// check page (and the class page), which cannot photograph the page, draw the canvases laid over it
+// (check/frame-page.js's shown): the same review, in the command's words (tests/fixtures/handins/labels.json).
+test('a canvas laid over the page\'s canvas is seen on the check page as the command sees it', async ({ page }) => {
+  test.setTimeout(120_000);
+  const { check } = await checkFolder(page, path.resolve('tests/fixtures/handins/tove'), { query: '?reference=0', timeout: 100_000 });
+  const p1 = check.parts.find((p) => p.part === 'WP04P1');
+  expect(p1.verdict).toBe('review');
+  expect(p1.reasons[0]).toBe('REVIEW: what the page reads back differs from what the browser shows, at the first frame: 56% of the canvas\'s opaque pixels in view (another canvas or an element laid over it, or a CSS filter on it?); the browser\'s picture is shown: a teacher looks');
+});
