@@ -5,6 +5,7 @@
 // (grader/browser/webgpu-capture.js), window.__checkClock (grader/browser/clock.js), window.__checkWatch
 // (check/frame-watch.js).
 import { FRAME_MS } from '../grader/core/units.js';
+import { shownClip } from '../grader/core/measure/shown.js';
 
 /** keydown, keypress (a character), keyup of `key` at the focused element (or the body) of the frame's window `W`. */
 function pressKey(W, key) {
@@ -181,13 +182,9 @@ async function shownInFrame(W, readBack) {
   const rb = readBack();
   if (!rb) return { why: 'no canvas read back' };
   const { box, view } = rb;
-  if (!(box.width >= 1 && box.height >= 1)) return { why: 'the canvas has no size on the page' };
-  // the box in view, on whole pixels, a pixel more on each side, as the command's screenshot is taken
-  const x0 = Math.max(view.x, Math.floor(box.x) - 1), y0 = Math.max(view.y, Math.floor(box.y) - 1);
-  const x1 = Math.min(view.x + view.width, Math.ceil(box.x + box.width) + 1),
-    y1 = Math.min(view.y + view.height, Math.ceil(box.y + box.height) + 1);
-  if (x1 - x0 < box.width / 2 || y1 - y0 < box.height / 2) return { why: 'the canvas is mostly out of view' };
-  const clip = { x: x0, y: y0, width: x1 - x0, height: y1 - y0 };
+  // the clip the command's screenshot takes
+  const { clip, why } = shownClip(box, view);
+  if (why) return { why };
   const over = canvasesOver(W.document, box);
   if (!over.length) return { why: alone };
   const { img, pixels: raw } = await decoded(rb.png);

@@ -60,3 +60,18 @@ export function shownDifference(two, thresholds) {
   if (!best) return { compared: false, why: 'no opaque pixel of the canvas is in view' };
   return { compared: true, opaque: best.opaque, share: best.differ / best.opaque };
 }
+
+/**
+ * The screenshot's clip for a canvas whose picture lies at `box` in a viewport `view` (CSS pixels):
+ * the box in view, on whole pixels, a pixel more on each side (a canvas at a fractional place);
+ * { clip } or { why } (no size, mostly out of view). The command's screenshot and the check page's
+ * composite (check/frame-page.js) take the same.
+ */
+export function shownClip(box, view) {
+  if (!(box.width >= 1 && box.height >= 1)) return { why: 'the canvas has no size on the page' };
+  const x0 = Math.max(view.x, Math.floor(box.x) - 1), y0 = Math.max(view.y, Math.floor(box.y) - 1);
+  const x1 = Math.min(view.x + view.width, Math.ceil(box.x + box.width) + 1),
+    y1 = Math.min(view.y + view.height, Math.ceil(box.y + box.height) + 1);
+  if (x1 - x0 < box.width / 2 || y1 - y0 < box.height / 2) return { why: 'the canvas is mostly out of view' };
+  return { clip: { x: x0, y: y0, width: x1 - x0, height: y1 - y0 } };
+}

@@ -9,6 +9,7 @@ import { decodePng } from './png.js';
 import { gradedPageScripts } from './graded-page-scripts.js';
 import { serveSubmission, urlOf } from './serve-submission.js';
 import { FRAME_MS } from '../../core/units.js';
+import { shownClip } from '../../core/measure/shown.js';
 
 // the pictures a part's driver remembers by their bytes (in ../shared/handins, 135 of 497 snaps
 // repeat an earlier one of the same part: 129 one of the last two, 132 one of the last four)
@@ -114,13 +115,8 @@ async function shownChannels(page) {
   });
   if (!r) return { why: 'no canvas read back' };
   const { box, view } = r;
-  if (!(box.width >= 1 && box.height >= 1)) return { why: 'the canvas has no size on the page' };
-  // the box in view, on whole pixels, a pixel more on each side (a canvas at a fractional place)
-  const x0 = Math.max(view.x, Math.floor(box.x) - 1), y0 = Math.max(view.y, Math.floor(box.y) - 1);
-  const x1 = Math.min(view.x + view.width, Math.ceil(box.x + box.width) + 1),
-    y1 = Math.min(view.y + view.height, Math.ceil(box.y + box.height) + 1);
-  if (x1 - x0 < box.width / 2 || y1 - y0 < box.height / 2) return { why: 'the canvas is mostly out of view' };
-  const clip = { x: x0, y: y0, width: x1 - x0, height: y1 - y0 };
+  const { clip, why } = shownClip(box, view);
+  if (why) return { why };
   const png = await page.screenshot({ clip, animations: 'disabled', caret: 'hide', timeout: 10_000 });
   return { raw: decodePng(r.png), shown: decodePng(png), box, clip };
 }
