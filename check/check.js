@@ -11,7 +11,7 @@ import { handInSource } from './serve.js';
 import { missedSlides, stepLink } from './slides.js';
 import { AUDITS } from '../grader/core/audits/index.js';
 import { NOT_CHECKED, NO_WEBGPU_HERE, hasWebGPU } from './not-checked.js';
-import { dropBox, el } from './dom.js';
+import { dropBox, el, pngURL } from './dom.js';
 import { PARTS } from '../grader/core/part-names.js';
 import { withFindings, findingsOfResult } from '../grader/core/part-result.js';
 import { missingPage } from '../grader/core/audits/page.js';
@@ -26,14 +26,6 @@ const REFERENCE = new URLSearchParams(location.search).get('reference') !== '0';
 
 function say(text, kind = 'error') {
   $('messages').replaceChildren(el('p', { className: kind, textContent: text }));
-}
-
-/** An image { width, height, data } as a PNG data URL. */
-function pictureURL(img) {
-  const c = el('canvas', { width: img.width, height: img.height });
-  const pixels = new Uint8ClampedArray(img.data.buffer, img.data.byteOffset, img.data.byteLength);
-  c.getContext('2d').putImageData(new ImageData(pixels, img.width, img.height), 0, 0);
-  return c.toDataURL('image/png');
 }
 
 const CAPTIONS = { first: 'first frame', coarse: 'a coarse level', judged: 'judged', leastS: 's at its least', reference: 'our step, same size and light' };
@@ -64,7 +56,7 @@ function card(r, index, total, file) {
     ...slides.map((s) => el('p', { className: 'slide', dataset: { audit: s.id } }, el('b', { textContent: 'The slide asks: ' }), `${s.slide} `,
       s.note ? el('i', { textContent: `(${s.note}) ` }) : null, el('a', { href: stepLink(r.part), textContent: `See our ${r.part}` }))),
     images.length ? el('div', { className: 'pictures' }, ...images.map(([k, im]) => el('figure', {},
-        el('img', { src: pictureURL(im), alt: `${r.part}: ${CAPTIONS[k]}`, width: im.width, height: im.height }),
+        el('img', { src: pngURL(im), alt: `${r.part}: ${CAPTIONS[k]}`, width: im.width, height: im.height }),
         el('figcaption', { textContent: CAPTIONS[k] })))) : null,
     el('p', {}, el('a', { href: stepLink(r.part), textContent: `Our ${r.part}, which does it as the slide asks` })),
     list('What the check did', r.actions),

@@ -13,19 +13,11 @@ import { PARTS } from '../grader/core/part-names.js';
 import { NOT_GRADED } from '../grader/core/verdict.js';
 import { withFindings } from '../grader/core/part-result.js';
 import { linkedPage } from '../grader/core/audits/page.js';
-import { besideOurs } from '../grader/class/beside-ours.js';
+import { beside } from '../grader/class/beside-ours.js';
 import { linkedPart, POSIX_PATHS } from '../grader/class/linked-part.js';
 import { missingRow, notUnpackedRow, partRow } from '../grader/class/part-rows.js';
 import { safeName } from '../grader/files/safe-name.js';
-
-/** An image { width, height, data } as a PNG data: URL. */
-export function pngURL(img) {
-  const c = document.createElement('canvas');
-  Object.assign(c, { width: img.width, height: img.height });
-  const pixels = new Uint8ClampedArray(img.data.buffer, img.data.byteOffset, img.data.byteLength);
-  c.getContext('2d').putImageData(new ImageData(pixels, img.width, img.height), 0, 0);
-  return c.toDataURL('image/png');
-}
+import { pngURL } from '../check/dom.js';
 
 /** A verdict the check page gives for want of WebGPU (or its own trouble), in the command's words: not graded here. */
 function asNotGraded(r) {
@@ -33,24 +25,6 @@ function asNotGraded(r) {
   const findings = r.findings.map((f) => (f.level === NOT_CHECKED
     ? { ...f, level: NOT_GRADED, reason: f.reason.replace(/^not checked here/, NOT_GRADED) } : f));
   return { ...withFindings(r, findings), verdict: NOT_GRADED, status: NOT_GRADED };
-}
-
-/** Our step beside `row` (the part graded: `r`, check/runner.js's result), its pictures kept by `keep`. */
-function beside(row, r, rubric, keep) {
-  const { part } = row;
-  try {
-    const query = (rubric.parts[part] || {}).referenceQuery;
-    const ours = besideOurs({ part, judged: r.images.judged, numbers: r.numbers, rubric, query });
-    row.notes.push(...ours.notes);
-    if (ours.referenceState) row.referenceState = ours.referenceState;
-    if (ours.reference) {
-      Object.assign(row, ours.compared);
-      keep('reference', ours.reference, `parts/${safeName(row.name)}/${part}-reference.png`);
-      keep('diff', ours.diff, `parts/${safeName(row.name)}/${part}-diff.png`);
-    }
-  } catch (err) {
-    row.notes.push(`our reference could not be drawn: ${String(err && err.message).split('\n')[0]}`);
-  }
 }
 
 /** The row of part `part` of student `name`, whose page `page` was graded: `r` (check/runner.js's result), `notes` first. */
@@ -116,16 +90,19 @@ export async function gradeStudent(o) {
       const args = { part, page, session, rubric, stage, webgpuHere, progress: told, graderWords: true };
       const r = asNotGraded(await checkPart(args));
       const row = gradedRow(name, part, page, r, { notes, browserVersion: o.browserVersion });
-      const keep = (key, img, href) => {
+      // each picture kept under the name the command's out folder gives it
+      const keep = (href, img) => {
         pictures.set(href, pngURL(img));
-        row.images[key] = href;
+        return href;
       };
       for (const [key, img] of Object.entries(r.images)) {
-        if (img && img.data) keep(key, img, `artifacts/${safeName(name)}/${part}/${key}.png`);
+        if (img && img.data) row.images[key] = keep(`artifacts/${safeName(name)}/${part}/${key}.png`, img);
       }
       if (reference && r.images.judged && r.verdict !== 'fail' && r.verdict !== NOT_GRADED) {
         progress(part, 'drawing our reference beside it');
-        beside(row, r, rubric, keep);
+        const query = (rubric.parts[part] || {}).referenceQuery;
+        beside(row, { part, judged: r.images.judged, numbers: r.numbers, rubric, query },
+          (ours, img) => keep(`parts/${safeName(name)}/${part}-${ours}.png`, img));
       }
       rows.push(row);
     }

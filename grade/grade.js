@@ -66,7 +66,7 @@ const picturesOf = (rows, pictures) => rows.flatMap((r) => Object.values(r.image
 /**
  * Grades `students` (take-in's submissions), `workers` at once, each in a frame stage of its own;
  * each part's row shown as it ends (`show`) and the progress line kept; `pictures` (Map href → data:
- * URL) gets each part's pictures. Returns { graded: Map name → rows, pictures }.
+ * URL) gets each part's pictures. Returns Map name → rows.
  */
 async function gradeAll(students, { rubric, workers, show, started, key, pictures }) {
   const why = unsupported();
@@ -118,7 +118,7 @@ async function gradeAll(students, { rubric, workers, show, started, key, picture
   } finally {
     $('stages').replaceChildren();
   }
-  return { graded, pictures };
+  return graded;
 }
 
 /** The teacher's verdicts set in the grid: Map "name\npart" → { student, part, verdict, note }. */
@@ -213,7 +213,7 @@ async function run(input) {
     $('results').append(el('p', { textContent: `Found ${got.found}: ${students.length} hand-in(s)${failed ? `; ${failed} could not be unpacked` : ''}.` }), table);
     const workers = Math.max(1, Math.min(MOST_WORKERS, Number($('workers').value) || 1));
     for (const o of overrides.values()) grid.teacher(o.student, o.part, o);
-    const { graded } = await gradeAll(students, { rubric, workers, show, started, key, pictures });
+    const graded = await gradeAll(students, { rubric, workers, show, started, key, pictures });
     $('progress').textContent = `done in ${clock((performance.now() - started) / MS_PER_SECOND)}: ${students.length * PARTS.length} parts of ${students.length} hand-ins`;
     last = { key, got, students, graded, pictures, rubric, roster };
     giveBack(last);

@@ -27,3 +27,23 @@ export function besideOurs({ part, judged, numbers, rubric, query = {}, draw = r
   const compared = { mismatch, rmse, comparison, mismatchFull, mismatchObject };
   return { notes, referenceState, compared, reference: cmp.reference, diff: cmp.diff };
 }
+
+/**
+ * Our step beside a graded part's `row` (report.json's, its `images` an object): besideOurs(`args`)
+ * said in its notes, its referenceState and its comparison's numbers set, and each of our two
+ * pictures (reference, diff) kept by the caller's `keep(name, picture)`, which gives its href.
+ * Where ours could not be drawn, the row's notes say why and the grading goes on.
+ */
+export function beside(row, args, keep) {
+  try {
+    const ours = besideOurs(args);
+    row.notes.push(...ours.notes);
+    if (ours.referenceState) row.referenceState = ours.referenceState;
+    if (!ours.reference) return;
+    Object.assign(row, ours.compared);
+    const reference = keep('reference', ours.reference), diff = keep('diff', ours.diff);
+    Object.assign(row.images, { reference, diff });
+  } catch (err) {
+    row.notes.push(`our reference could not be drawn: ${String(err && err.message).split('\n')[0]}`);
+  }
+}

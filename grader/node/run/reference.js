@@ -8,7 +8,7 @@ import { LRUCache } from 'lru-cache';
 import { pngBytes } from './png.js';
 import { hrefOf } from '../../files/layout.js';
 import { referencePicture } from '../../core/reference-state.js';
-import { besideOurs } from '../../class/beside-ours.js';
+import { beside } from '../../class/beside-ours.js';
 import { addStep } from '../../core/grade-part.js';
 
 // the pictures a worker keeps, in bytes of RGBA: 64 MiB holds 64 drawings at 512×512
@@ -28,34 +28,22 @@ export const REFERENCE_STEP = 'drawing and comparing our reference';
  * Draws (or recalls) our reference for `item`, compares it with graded.images.judged and writes
  * both pictures beside item.resultFile; the time it took goes into result.steps (REFERENCE_STEP).
  */
-export async function drawReference(args) {
+export async function drawReference({ item, plan, result, graded }) {
   const t0 = Date.now();
-  try {
-    compareWithOurs(args);
-  } catch (err) {
-    args.result.notes.push(`our reference could not be drawn: ${String(err && err.message).split('\n')[0]}`);
-  } finally {
-    addStep(args.result.steps, REFERENCE_STEP, Date.now() - t0);
-  }
-}
-
-function compareWithOurs({ item, plan, result, graded }) {
   const draw = (part, query, judged) => {
     const key = `${part}?${query}`;
     let drawing = drawings.get(key);
     if (!drawing) drawings.set(key, (drawing = referencePicture(part, query, judged)));
     return drawing;
   };
-  const ours = besideOurs({ part: item.part, judged: graded.images.judged, numbers: result.numbers, rubric: plan.rubric,
-    query: item.referenceQuery, draw });
-  result.notes.push(...ours.notes);
-  if (ours.referenceState) result.referenceState = ours.referenceState;
-  if (!ours.reference) return;
-  Object.assign(result, ours.compared);
-  const dir = path.dirname(item.resultFile);
-  const stem = path.basename(item.resultFile, '.json');
-  const reference = path.join(dir, `${stem}-reference.png`), diff = path.join(dir, `${stem}-diff.png`);
-  writeFileSync(reference, pngBytes(ours.reference));
-  writeFileSync(diff, pngBytes(ours.diff));
-  Object.assign(result.images, { reference: hrefOf(plan.out, reference), diff: hrefOf(plan.out, diff) });
+  // each picture written beside the part's result file
+  const keep = (name, img) => {
+    const file = path.join(path.dirname(item.resultFile), `${path.basename(item.resultFile, '.json')}-${name}.png`);
+    writeFileSync(file, pngBytes(img));
+    return hrefOf(plan.out, file);
+  };
+  const { part, referenceQuery: query } = item;
+  const judged = graded.images.judged;
+  beside(result, { part, judged, numbers: result.numbers, rubric: plan.rubric, query, draw }, keep);
+  addStep(result.steps, REFERENCE_STEP, Date.now() - t0);
 }
