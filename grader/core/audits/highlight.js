@@ -36,6 +36,15 @@ export function judgePlace({ thresholds, sayAs, numbers }, place) {
 }
 
 /**
+ * The highlight's place not judged: it showed only in views along the orbit at a coarser level than
+ * the judged one (`coarser`: { vertices, judged }, the vertices a frame drew), and no view at the
+ * judged level was found.
+ */
+export function sayCoarse({ sayAs }, coarser) {
+  sayAs('highlight-place')('pass', `note: the highlight's place is not judged: it showed only in views along the orbit at a coarser level than the judged one (${coarser.vertices} vertices a frame, against ${coarser.judged}), and per vertex a coarse mesh moves a highlight (the slides: Gouraud shading needs many triangles, for highlights in particular)`);
+}
+
+/**
  * Says whether the highlight sits at w_h in `place` ({ fit, where, img }): on the page's own
  * `surface` where it was read with that picture (placeOnSurface), else on the picture's fit.
  */

@@ -52,6 +52,22 @@ export const shadingOf = memo((img, an, thresholds) => {
   return { img, fit, judgedFit, pointLight, nearModel };
 });
 
+/**
+ * Whether the lit view `v` (facts.views') was taken at a coarser level than the judged one: the
+ * judged level draws levelWorkRatio times its vertices or more (the page's draws: a view along the
+ * orbit sampled before the ladder). { vertices, judged } then, else null.
+ */
+export function coarserView(v, facts, thresholds) {
+  const judged = facts.judgedVertices;
+  const coarser = v.vertices > 0 && judged > 0 && judged >= thresholds.levelWorkRatio * v.vertices;
+  return coarser ? { vertices: v.vertices, judged } : null;
+}
+
+/** The lit views `views` (facts.views' entries) with their pictures from `images`, their full fits and whether each is coarser. */
+export function litViewFits(views, facts, images, thresholds) {
+  return viewFits(views.map((v) => ({ img: images[v.image], coarser: coarserView(v, facts, thresholds) })), thresholds);
+}
+
 /** The kept views' full fits (the lit views along the orbit), in the order kept. */
 export function viewFits(views, thresholds) {
   return views.map((v) => ({ ...v, fit: fullFit(v.img, thresholds) }));
@@ -67,26 +83,27 @@ export function highlightShown(shading, views, thresholds) {
     return { fit: shading.judgedFit, where: 'the judged view', img: shading.img, atJudged: true };
   }
   if (shading.nearModel) return null;
-  const other = views.find((v) => v.fit && highlightSeen(v.fit, thresholds));
-  return other ? { fit: other.fit, where: `one of ${views.length} lit views along the orbit` } : null;
+  // (one at the judged level first: a coarser one's highlight shows, but its place is not read there)
+  const shows = (v) => v.fit && highlightSeen(v.fit, thresholds);
+  const other = views.find((v) => shows(v) && !v.coarser) || views.find(shows);
+  if (!other) return null;
+  return { fit: other.fit, where: `one of ${views.length} lit views along the orbit`, coarser: other.coarser || null };
 }
 
 /**
  * The view to place the highlight in: the one that tells w_h from w_i best, of those that show the
  * highlight over a clean diffuse fit, the light farthest from the viewer; not where only a
- * broadened highlight (s lowered to 10) shows. { fit, where } or null.
+ * broadened highlight (s lowered to 10) shows, nor in a view at a coarser level than the judged one
+ * (per vertex, a coarse mesh moves a highlight: the slides' Gouraud shading needs many triangles,
+ * for highlights in particular). { fit, where } or null.
  */
 export function placeView(seen, views, thresholds) {
   const clean = (f) => f.r2 >= thresholds.diffuseR2;
-  let place = seen.broad ? null : seen;
+  let place = seen.broad || seen.coarser ? null : seen;
   for (const v of views) {
     const f = v.fit;
-    if (
-      f &&
-      highlightSeen(f, thresholds) &&
-      clean(f) &&
-      (!place || !clean(place.fit) || lightAngle(f) > lightAngle(place.fit))
-    ) {
+    const shows = f && !v.coarser && highlightSeen(f, thresholds) && clean(f);
+    if (shows && (!place || !clean(place.fit) || lightAngle(f) > lightAngle(place.fit))) {
       place = { fit: f, where: 'a lit view along the orbit' };
     }
   }
@@ -117,12 +134,16 @@ export function raisedSeen(raised, images, thresholds) {
  * The highlight's evidence, as the gatherer acts on it and the audit judges it: where it shows (the
  * judged view, a lit view along the orbit, else with the page's sliders raised: `raised`, absent
  * before they are tried) and the view to place it in (none with a near point light). `farther`:
- * the light in that view is too near the viewer to tell w_h from w_i, so the place is better
- * judged farther along the orbit. { seen, place, farther }.
+ * the light in that view is too near the viewer to tell w_h from w_i, or (`coarse`) the highlight
+ * showed only in views at a coarser level than the judged one, so the place is better judged
+ * farther along the orbit. { seen, place, coarse, farther }.
  */
 export function highlightEvidence(shading, views, raised, images, thresholds) {
   let seen = highlightShown(shading, views, thresholds);
   if (!seen && !shading.nearModel && raised) seen = raisedSeen(raised, images, thresholds);
   const place = seen && !shading.nearModel ? placeView(seen, views, thresholds) : null;
-  return { seen, place, farther: !!place && lightAngle(place.fit) < thresholds.highlightPlaceLightDegrees };
+  // seen only in views at a coarser level: its place is looked for along the orbit at the judged level
+  const coarse = !!seen && !shading.nearModel && !place && !seen.broad && !!seen.coarser;
+  const near = !!place && lightAngle(place.fit) < thresholds.highlightPlaceLightDegrees;
+  return { seen, place, coarse, farther: coarse || near };
 }

@@ -18,7 +18,7 @@ import { trySliders, leastShininess } from './sliders.js';
 import { unclip, brighten } from './visible.js';
 import { readGeometry, readSurface } from './geometry.js';
 import { lookAllRound } from './all-round.js';
-import { sphereView, shadingOf, viewFits, highlightEvidence } from '../computed/evidence.js';
+import { sphereView, shadingOf, litViewFits, highlightEvidence } from '../computed/evidence.js';
 import { shownDifference } from '../measure/shown.js';
 import { browserFailed } from '../audits/page.js';
 
@@ -171,6 +171,8 @@ async function orbitAndLevel(session, controls) {
   facts.ladder = ladder.map((s, k) => ({ roundness: s.an.roundness, blank: !!s.an.blank,
     ...(k === j || must.has('per-fragment') ? { image: session.keep(`level-${k}`, s.img) } : {}) }));
   facts.judgedLevel = j;
+  // the vertices a frame draws at the judged level (the page's draws), where it is the level the page shows now
+  if (j === ladder.length - 1 && session.frameVertices > 0) facts.judgedVertices = Math.round(session.frameVertices);
   session.mark('reading the geometry and the surface');
   facts.geometry = await readGeometry(session);
   // the judged view's surface per pixel, where the lighting or the side seen is judged: each pixel's
@@ -197,7 +199,7 @@ async function whatTheStepAsks(session, controls, img) {
   const shading = shaded ? shadingOf(shadeImg, an, thresholds) : null;
   let placeLater = false;
   if (must.has('highlight') && shading.fit) {
-    const views = viewFits(facts.views.map((v) => ({ img: session.images[v.image] })), thresholds);
+    const views = litViewFits(facts.views, facts, session.images, thresholds);
     if (!highlightEvidence(shading, views, null, session.images, thresholds).seen && !shading.nearModel) {
       session.mark('raising the highlight');
       await raiseHighlight(session, controls);

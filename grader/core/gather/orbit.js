@@ -18,6 +18,8 @@ export function keepIfLit(session, img, { orbiting = true, keep = true } = {}) {
       image: session.keep(`view-${session.facts.views.length}`, img),
       orbiting,
       ...(orbiting && session.camera ? { camera: session.camera } : {}),
+      // the vertices a frame drew there (the page's draws): a view taken before the ladder is coarser than the judged one
+      ...(session.frameVertices > 0 ? { vertices: Math.round(session.frameVertices) } : {}),
     });
   }
   return lit;

@@ -7,7 +7,8 @@ import { unit } from '../unit.js';
 function readLitViews({ facts, images, thresholds }, { shading }) {
   if (!shading.shaded) return [];
   return facts.views
-    .map((v) => ({ ...litView(images[v.image], thresholds), orbiting: v.orbiting, image: v.image, camera: v.camera }))
+    .map((v) => ({ ...litView(images[v.image], thresholds), orbiting: v.orbiting, image: v.image, camera: v.camera,
+      vertices: v.vertices }))
     .filter((v) => v.lit);
 }
 
