@@ -18,6 +18,7 @@ import { trySliders, leastShininess } from './sliders.js';
 import { unclip, brighten } from './visible.js';
 import { readGeometry, readSurface } from './geometry.js';
 import { lookAllRound } from './all-round.js';
+import { startToDraw } from './start.js';
 import { sphereView, shadingOf, litViewFits, highlightEvidence } from '../computed/evidence.js';
 import { shownDifference } from '../measure/shown.js';
 import { browserFailed } from '../audits/page.js';
@@ -92,10 +93,15 @@ async function firstFrame(session) {
     if (k >= thresholds.errorTicks && page.errors().some((e) => /^(page error|dialog)/.test(e))) break;
     await session.tick(thresholds.frameMs);
   }
-  const g = await page.state();
+  let g = await page.state();
+  // no draw call yet and no shader or GPU error: a control named for starting the page is clicked
+  const startedBy = !g.draws && g.adapter !== null && !g.shaderErrors.length && !g.gpuErrors.length
+    ? await startToDraw(session) : null;
+  if (startedBy) g = await page.state();
   facts.api = g.api;
   facts.first = { api: g.api, adapter: g.adapter, draws: g.draws, shaderErrors: g.shaderErrors, gpuErrors: g.gpuErrors,
-    ...(g.webgpuMissing ? { webgpuMissing: true } : {}) }; // it asked for WebGPU where the browser has none (Firefox ESR)
+    ...(g.webgpuMissing ? { webgpuMissing: true } : {}), // it asked for WebGPU where the browser has none (Firefox ESR)
+    ...(startedBy ? { startedBy } : {}) };
   let firstShot = await session.shot();
   if (!firstShot) return null;
   // a page that drew without an error and shows one colour (its unlit side on a background of the

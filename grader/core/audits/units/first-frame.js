@@ -6,7 +6,7 @@ import { unit, end } from '../unit.js';
 
 /** The audits this unit says: id → title, the slide's sentence it checks, the artifacts it reads. */
 export const META = {
-  'first-frame': { title: 'The page draws its first frame', slide: SLIDE.sphere, failureTitle: 'The page draws no visible first frame', description: 'Waits for the page\'s first frame (frames run once nothing it awaits is pending) and reads the canvas back; a page that draws only lines shows a wireframe, not a solid sphere (a mistake).', reads: ['facts.first', 'images.first', 'facts.errors'] },
+  'first-frame': { title: 'The page draws its first frame', slide: SLIDE.sphere, failureTitle: 'The page draws no visible first frame', description: 'Waits for the page\'s first frame (frames run once nothing it awaits is pending) and reads the canvas back (a page that draws nothing, with no error, is started first by a control named for starting it: a note); a page that draws only lines shows a wireframe, not a solid sphere (a mistake).', reads: ['facts.first', 'images.first', 'facts.errors'] },
   'shaders-compile': { title: 'The shaders compile and link', slide: SLIDE.uniforms, note: 'the shaders must compile first: the error above gives the line', failureTitle: 'A shader does not compile or link', description: 'Reads every shader\'s compile and link status (WebGL) and compilation messages (WebGPU), with the line of the error.', reads: ['facts.first'] },
   'webgpu-adapter': { title: 'WebGPU starts', slide: SLIDE.sphere, note: 'this browser has no WebGPU adapter: try the WebGL view, or a browser with WebGPU', failureTitle: 'WebGPU did not start', description: 'The page asked for a WebGPU adapter and got none.', reads: ['facts.first'] },
 };
@@ -26,6 +26,7 @@ export function auditFirstFrame({ facts, images, thresholds, sayAs }) {
   for (const e of g.shaderErrors) sayAs('shaders-compile')('fail', e);
   if (g.api === 'webgpu' && g.adapter === null) sayAs('webgpu-adapter')('fail', 'no WebGPU adapter: the page could not start WebGPU');
   if (!analyse(images.first, thresholds).blank) {
+    if (g.startedBy) say('pass', `note: the page drew nothing until ${g.startedBy} was clicked; the grader clicked it first, as a teacher would, and judged the page from there`);
     if (g.orbitStarted) say('pass', `note: the canvas stayed one colour${g.waited ? ` for ${g.waited} frames more` : ''} (the unlit side toward the camera?); the orbit, started by ${g.orbitStarted}, showed the sphere, and it was judged from there`);
     return null;
   }
