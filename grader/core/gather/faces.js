@@ -3,10 +3,12 @@
 // culling as the page set them.
 import { samples, normalColours, facesViewer } from '../measure.js';
 import { freeControlNamed } from './params.js';
+import { readSurface } from './geometry.js';
 
 /**
  * P2: the page may start with the depth test off or culling on the wrong side: its own controls
- * set as the step ends, until the colours face the viewer (facts.facesImage: the picture after).
+ * set as the step ends, until the colours face the viewer (facts.facesImage: the picture after;
+ * facts.facesSurface: its surface).
  * Then, where the colours are the normals reflected, a frame with culling off (WebGL): the same
  * picture means the nearest faces were showing (facts.noCull; its `draws`, the page's draw calls
  * meanwhile: none, and the picture tells nothing).
@@ -27,6 +29,8 @@ export async function probeFaces(session, controls, judged) {
       nc = normalColours(samples(img, an, thresholds), thresholds);
       if (facesViewer(nc, thresholds)) break;
     }
+    // the side seen is read on the surface of the picture the controls gave (the judged view's is before them)
+    if (facts.facesImage) facts.facesSurface = await readSurface(session, 'faces-');
   }
   if (nc && nc.det < 0 && nc.residual <= thresholds.facingResidual && facts.api !== 'webgpu') {
     const faces = (await session.page.state()).faces || {};

@@ -10,7 +10,7 @@ import { unit } from '../unit.js';
 /** The audits this unit says: id → title, the slide's sentence it checks, the artifacts it reads. */
 export const META = {
   'normal-colours': { title: 'Colours that are the normals, 0.5·n + 0.5', slide: SLIDE.normalColour, failureTitle: 'The colours are not the normals, 0.5·n + 0.5', description: 'Reads the colours inside the outline as normals (colour = 0.5·n + 0.5) and fits them to a sphere\'s.', reads: ['images.judged', 'facts.facesImage', 'facts.api'] },
-  'front-faces': { title: 'The normals facing the viewer: front faces only', slide: SLIDE.depthCulling, failureTitle: 'The normals shown do not face the viewer', description: 'Reads on the page\'s own surface, after its own projection, whether the visible pixels are the near half\'s outside (each pixel\'s normal facing the camera its matrices set up) and, where not, what in the projection turns it; where the surface was not read, checks that the colours show normals facing the viewer, and draws once with culling off to see what culling hides.', reads: ['facts.surface', 'images.judged', 'facts.noCull', 'facts.faces'] },
+  'front-faces': { title: 'The normals facing the viewer: front faces only', slide: SLIDE.depthCulling, failureTitle: 'The normals shown do not face the viewer', description: 'Reads on the page\'s own surface (of the picture the page\'s own depth and culling controls gave, where they changed it), after its own projection, whether the visible pixels are the near half\'s outside (each pixel\'s normal facing the camera its matrices set up) and, where not, what in the projection turns it; where the surface was not read, checks that the colours show normals facing the viewer, and draws once with culling off to see what culling hides.', reads: ['facts.surface', 'images.judged', 'facts.noCull', 'facts.faces', 'facts.facesImage', 'facts.facesSurface'] },
 };
 
 /**
@@ -71,10 +71,13 @@ const FAR_SIDE_CAUSE = {
  * surface was not read (the colours decide, as before).
  */
 function surfaceFaces(facts, images, thresholds, say) {
-  const s = facts.surface && surfaceOf(facts.surface, images, thresholds);
+  // (the picture the page's own face controls gave, where they changed it: its surface)
+  const surface = facts.facesImage && facts.facesSurface ? facts.facesSurface : facts.surface;
+  const s = surface && surfaceOf(surface, images, thresholds);
   const side = s && !s.why ? sideSeen(s) : null;
   if (!side) return false;
-  const read = `read on the page's own surface: ${pct(side.share)} of the ${side.samples} pixels read have a normal that faces the camera its matrices (P·V·M) set up`;
+  const controls = surface === facts.facesSurface ? ', with the page\'s own depth and culling controls set as the step asks: they start off' : '';
+  const read = `read on the page's own surface${controls}: ${pct(side.share)} of the ${side.samples} pixels read have a normal that faces the camera its matrices (P·V·M) set up`;
   if (side.share >= thresholds.nearSideShare) say('pass', `the visible pixels are the near half's outside (${read})`);
   else if (clockwiseExperiment(facts)) say('pass', `note: the back side of the sphere shows, as the slide's clockwise experiment asks ("You should now see the back side of the sphere"): ${facts.api === 'webgpu' ? "frontFace: 'cw'" : 'gl.frontFace(gl.CW)'} with back-face culling on (${read})`);
   else if (side.share <= 1 - thresholds.nearSideShare) say('mistake', `the inside of the far half shows, not the near half's outside (${read})${side.cause ? `: ${FAR_SIDE_CAUSE[side.cause]}` : ''}`);
