@@ -19,6 +19,7 @@ import { unclip, brighten } from './visible.js';
 import { readGeometry, readSurface } from './geometry.js';
 import { lookAllRound } from './all-round.js';
 import { startToDraw } from './start.js';
+import { setStepShading } from './shading-control.js';
 import { sphereView, shadingOf, litViewFits, highlightEvidence } from '../computed/evidence.js';
 import { shownDifference } from '../measure/shown.js';
 import { browserFailed } from '../audits/page.js';
@@ -64,6 +65,7 @@ async function gather(session) {
   const controls = await session.page.controls();
   session.facts.controls = controls;
   session.cur = first;
+  await setStepShading(session, controls);
   const judged = await orbitAndLevel(session, controls);
   if (judged) await whatTheStepAsks(session, controls, judged.img);
   // (the last frames the gathering ran: no frame is run for it)
