@@ -3,6 +3,7 @@
 // culling as the page set them.
 import { samples, normalColours, facesViewer } from '../measure.js';
 import { freeControlNamed } from './params.js';
+import { named, describe } from '../controls.js';
 import { readSurface } from './geometry.js';
 
 /**
@@ -22,6 +23,7 @@ export async function probeFaces(session, controls, judged) {
       const c = freeControlNamed(session, controls, r);
       if (!c || (c.type === 'checkbox' && c.checked === want)) continue;
       if (!await session.press(c, `the ${r === 'clockwise' ? 'clockwise-front-faces' : r} control`)) continue;
+      if (r !== 'clockwise') facts.facesSetBy = { ...facts.facesSetBy, [r]: describe(c) };
       const s = await session.shot();
       if (!s || s.an.blank) break;
       ({ img, an } = s);
@@ -49,13 +51,29 @@ export async function probeFaces(session, controls, judged) {
   }
 }
 
-/** P2: the depth test and culling as the page set them, its own toggles switched on where they start off. */
+/**
+ * P2: the depth test and culling as the page set them, its own toggles switched on where they start
+ * off, and its own menu of face culling (none, front, back: the slides' WebGPU cullMode) set to back.
+ */
 export async function probeDepthCulling(session, controls) {
   let faces = (await session.page.state()).faces || {};
+  const setBy = {}; // the page's own controls that switched them on: facts.facesSetBy
   for (const [r, on] of [['depth', 'depthTest'], ['cull', 'culling']]) {
     const c = freeControlNamed(session, controls, r);
     if (faces[on] || !c) continue;
     if (await session.press(c, `the ${r} control`)) faces = (await session.page.state()).faces || {};
+    if (faces[on]) setBy[r] = describe(c);
+  }
+  const menu = !faces.culling && controls.find((x) => x.type === 'select' && !session.taken.has(x.index) &&
+    named(x, 'cull', session.patterns) && (x.options || []).some((o) => /back/i.test(o)));
+  if (menu) {
+    const back = menu.options.find((o) => /back/i.test(o));
+    await session.set(menu, back);
+    session.act(`set the face culling menu ${describe(menu)} to ${back}`);
+    await session.tick(session.thresholds.actionTickMs);
+    faces = (await session.page.state()).faces || {};
+    if (faces.culling) setBy.cull = `${describe(menu)} set to ${back}`;
   }
   session.facts.faces = faces;
+  if (Object.keys(setBy).length) session.facts.facesSetBy = { ...session.facts.facesSetBy, ...setBy };
 }
