@@ -12,12 +12,16 @@ import { unit } from '../unit.js';
 
 /** The audits this unit says: id → title, the slide's sentence it checks, the artifacts it reads. */
 export const META = {
-  sliders: { title: 'Sliders for the material and light parameters', slide: SLIDE.sliders, failureTitle: 'Sliders for the material and light parameters are missing or do nothing', description: 'Finds the sliders for kd, ks, s, Le and La by what they change, and sets each far from where it is, against the picture just before it.', reads: ['facts.sliders', 'facts.slidersFound'] },
+  sliders: { title: 'Sliders for the material and light parameters', slide: SLIDE.sliders, failureTitle: 'Sliders for the material and light parameters are missing or do nothing', description: 'Finds the sliders for kd, ks, s, Le and La by what they change, and sets each far from where it is, against the picture just before it.', reads: ['facts.sliders', 'facts.slidersFound', 'facts.frameDraws', 'facts.stopped'] },
   'input-event': { title: 'Sliders that act on the input event', slide: SLIDE.inputEvent, failureTitle: 'A slider acts on the change event, not on input', description: 'Sets each slider on the input event first, and on the change event only where input showed nothing.', reads: ['facts.sliders'] },
   'ks-used': { title: 'ks used in the specular term', slide: SLIDE.sliders, failureTitle: 'ks is not used in the specular term', description: 'Sets the ks sliders to their least and checks that the highlight changes.', reads: ['facts.sliders', 'images.judged'] },
 };
 
 const SLIDERS = ['kd', 'ks', 's', 'Le', 'La'];
+
+/** The page drew no frame of its own with its orbit stopped, when the gathering ended (facts.frameDraws: the page's draw calls a frame). */
+const drawsOnlyMoving = (facts) =>
+  !!facts.stopped && !!facts.frameDraws && !!facts.frameDraws.last && facts.frameDraws.last.draws === 0;
 
 /** The sliders tried (facts.sliders), against the judged view (`judged`: { an }) and its shading. */
 export function auditSliders({ facts, images, thresholds, must, sayAs, rubric, part }, judged, shading) {
@@ -101,7 +105,9 @@ export function auditSliders({ facts, images, thresholds, must, sayAs, rubric, p
   const changeOnlyWords = `${changeOnly} slider(s) update the picture only on the change event, not while sliding (the slide asks for the input event)`;
   if (inputOk) say('pass', `${inputOk} slider(s) change the material or light on the input event${named.length ? ` (${named.join(', ')})` : ''}`);
   else if (changeOnly) sayEvent('review', changeOnlyWords);
-  else say('review', `no slider changes the material or light (${facts.slidersFound} tried; the slide asks for sliders for the parameters)`);
+  else if (drawsOnlyMoving(facts)) {
+    say('review', `no slider changes the picture: the page draws no frame of its own once its orbit is stopped (0 draw calls a frame), so a slider whose value shows only in the next frame drawn shows nothing there (${facts.slidersFound} tried; the slides: "use the input event for the sliders to get immediate response while sliding")`);
+  } else say('review', `no slider changes the material or light (${facts.slidersFound} tried; the slide asks for sliders for the parameters)`);
   if (inputOk && changeOnly) sayEvent('review', changeOnlyWords);
   const requiredMissing = required.filter((k) => !found[k]);
   if (requiredMissing.length) say('review', `no slider found for ${requiredMissing.join(', ')} (this rubric asks for each)`);
