@@ -20,6 +20,7 @@ import { readGeometry, readSurface } from './geometry.js';
 import { lookAllRound } from './all-round.js';
 import { startToDraw } from './start.js';
 import { setStepShading } from './shading-control.js';
+import { revealSliders } from './reveal.js';
 import { sphereView, shadingOf, litViewFits, highlightEvidence } from '../computed/evidence.js';
 import { shownDifference } from '../measure/shown.js';
 import { browserFailed } from '../audits/page.js';
@@ -218,7 +219,7 @@ async function whatTheStepAsks(session, controls, img) {
       !!orbit.stop &&
       stopped;
   }
-  if (must.has('sliders')) await trySliders(session, controls);
+  if (must.has('sliders')) await trySliders(session, await revealSliders(session, controls));
   session.mark('s at its least');
   if (must.has('highlight') && shading.fit && stopped) await leastShininess(session, controls);
   session.mark('the highlight\'s place');

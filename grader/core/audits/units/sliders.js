@@ -12,7 +12,7 @@ import { unit } from '../unit.js';
 
 /** The audits this unit says: id → title, the slide's sentence it checks, the artifacts it reads. */
 export const META = {
-  sliders: { title: 'Sliders for the material and light parameters', slide: SLIDE.sliders, failureTitle: 'Sliders for the material and light parameters are missing or do nothing', description: 'Finds the sliders for kd, ks, s, Le and La by what they change, and sets each far from where it is, against the picture just before it.', reads: ['facts.sliders', 'facts.slidersFound', 'facts.frameDraws', 'facts.stopped'] },
+  sliders: { title: 'Sliders for the material and light parameters', slide: SLIDE.sliders, failureTitle: 'Sliders for the material and light parameters are missing or do nothing', description: 'Finds the sliders for kd, ks, s, Le and La by what they change (where none shows, after a control named for showing the settings), and sets each far from where it is, against the picture just before it.', reads: ['facts.sliders', 'facts.slidersFound', 'facts.frameDraws', 'facts.stopped', 'facts.slidersShownBy'] },
   'input-event': { title: 'Sliders that act on the input event', slide: SLIDE.inputEvent, failureTitle: 'A slider acts on the change event, not on input', description: 'Sets each slider on the input event first, and on the change event only where input showed nothing.', reads: ['facts.sliders'] },
   'ks-used': { title: 'ks used in the specular term', slide: SLIDE.sliders, failureTitle: 'ks is not used in the specular term', description: 'Sets the ks sliders to their least and checks that the highlight changes.', reads: ['facts.sliders', 'images.judged'] },
 };
@@ -133,5 +133,13 @@ export function restoredElsewhere(s, thresholds) {
 }
 
 /** The unit (audits/list.js runs it in its order). */
-export const UNIT = unit(META, 'sliders', (context, results) => auditSliders(context, results['judged-picture'], results.shading.shading),
+/** Where the page's sliders showed only once a control was clicked (gather/reveal.js): a note naming it. */
+function sayShownBy({ facts, must, sayAs }) {
+  if (must.has('sliders') && facts.slidersShownBy) sayAs('sliders')('pass', `note: the sliders show only once ${facts.slidersShownBy} is clicked; the grader clicked it, as a teacher looking for them would`);
+}
+
+export const UNIT = unit(META, 'sliders', (context, results) => {
+  sayShownBy(context);
+  return auditSliders(context, results['judged-picture'], results.shading.shading);
+},
   { also: ['input-event', 'ks-used'], uses: ['judged-picture', 'shading'] });
