@@ -9,7 +9,7 @@
 // grader, check/frame-page.js for the check page): state(), snap(), controls(), click(c),
 // setValue(c, v, events), press(key), tick(ms, frames) → state(), setNoCull(on), sources(), errors(),
 // tampered(), stayed().
-import { openSession, TooSlow, TooHeavy, FIRST_FRAME, addStep } from './session.js';
+import { openSession, TooSlow, TooHeavy, FIRST_FRAME, addStep, drewAFrame } from './session.js';
 import { findOrbit, sampleOrbit, keepIfLit, startOrbitToSee } from './orbit.js';
 import { findLevel, climbLevelLadder } from './level.js';
 import { probeFaces, probeDepthCulling } from './faces.js';
@@ -90,7 +90,7 @@ async function firstFrame(session) {
   await session.tick(thresholds.firstTickMs, 1);
   for (let k = 0; k < thresholds.firstFrameTicks; k++) {
     const s = await session.settle();
-    if (s.draws > 0 && (s.api !== 'webgpu' || s.frames > 0)) break;
+    if (drewAFrame(s)) break;
     if (s.adapter === null || s.shaderErrors.length || (!s.api && k >= thresholds.noContextTicks)) break;
     // it threw or alerted: no need to wait longer
     if (k >= thresholds.errorTicks && page.errors().some((e) => /^(page error|dialog)/.test(e))) break;

@@ -3,7 +3,8 @@
 // one that starts it. Samples are at fixed virtual times, orbitSampleSeconds apart, with a number of
 // frames each that depends only on the sample's index and the page's own work a frame.
 import { analyse } from '../measure.js';
-import { describe, named, trialOrder, isClickable, sentChanges } from '../controls.js';
+import { describe, trialOrder, isClickable, sentChanges } from '../controls.js';
+import { freeClickablesNamed } from './params.js';
 import { litView } from '../computed/views.js';
 import { readGeometry, readSent } from './geometry.js';
 import { cameraOf, cameraTurn, cameraPath } from '../computed/camera.js';
@@ -143,7 +144,7 @@ export async function findOrbit(session, controls) {
   } else if (shaded) {
     // the orbit may be off at first: a control that starts it (named for it first; a start and a stop button)
     session.step('looking for the control that starts the orbit');
-    const namedOrbit = trialOrder(clickables, 'orbit', patterns, session.taken).filter((c) => named(c, 'orbit', patterns));
+    const namedOrbit = freeClickablesNamed(session, controls, 'orbit');
     for (const c of namedOrbit) {
       session.trialsMade++;
       if (await session.tryClick(c, 'a control', { watchMotion: true }) !== 'starts') continue;
@@ -172,10 +173,9 @@ export async function findOrbit(session, controls) {
  * orbit is then found moving), or null.
  */
 export async function startOrbitToSee(session) {
-  const { thresholds, patterns } = session;
+  const { thresholds } = session;
   session.step('starting the orbit to see the lit side');
-  const clickables = (await session.page.controls()).filter(isClickable);
-  const namedOrbit = trialOrder(clickables, 'orbit', patterns, session.taken).filter((x) => named(x, 'orbit', patterns));
+  const namedOrbit = freeClickablesNamed(session, await session.page.controls(), 'orbit');
   for (const c of namedOrbit.slice(0, thresholds.maxControlTrials)) {
     session.trialsMade++;
     if (!await session.press(c, 'a control named for the orbit, to see the lit side,')) continue;

@@ -1,13 +1,17 @@
 // The page's own parameter controls, as the gatherers set them: a slider's least and greatest values,
 // the parameters its free sliders set (ks r, g, b as one group), a group set and described in facts,
 // and a free control found by its name. Shared by faces.js, highlight.js, sliders.js and visible.js.
-import { nameRole, parameterGroups } from '../controls.js';
+import { nameRole, parameterGroups, named, isClickable, trialOrder } from '../controls.js';
 
 const role = (session, c) => nameRole(c, session.patterns);
 
 /** The first of `controls` not yet given a role whose name says `r` (and `pred` holds). */
 export const freeControlNamed = (session, controls, r, pred = () => true) =>
   controls.find((x) => !session.taken.has(x.index) && pred(x) && role(session, x) === r);
+
+/** The clickable controls (buttons, links, checkboxes) not yet given a role whose name says `r`, in trial order. */
+export const freeClickablesNamed = (session, controls, r) =>
+  trialOrder(controls.filter(isClickable), r, session.patterns, session.taken).filter((c) => named(c, r, session.patterns));
 
 /** An <input type=range> without min or max runs from 0 to 100: HTML's defaults. */
 export const RANGE_DEFAULT_MAX = 100;

@@ -33,6 +33,9 @@ export class TooHeavy extends TooSlow {
 /** What the gathering is doing until the page's first frame is seen (past it, the page draws): the step it starts in. */
 export const FIRST_FRAME = 'waiting for the first frame';
 
+/** The page has drawn a frame (`s`: the page's state(): draw calls, and a WebGPU frame presented). */
+export const drewAFrame = (s) => s.draws > 0 && (s.api !== 'webgpu' || s.frames > 0);
+
 export const effectWords = {
   finer: 'the silhouette got rounder', coarser: 'the silhouette got coarser', starts: 'the picture started moving', stops: 'the picture stopped moving',
   shading: 'the shading changed, not the silhouette', blank: 'the picture went blank', none: 'nothing visible changed', unclickable: 'could not be used',
