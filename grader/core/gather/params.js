@@ -10,8 +10,10 @@ export const freeControlNamed = (session, controls, r, pred = () => true) =>
   controls.find((x) => !session.taken.has(x.index) && pred(x) && role(session, x) === r);
 
 /** The clickable controls (buttons, links, checkboxes) not yet given a role whose name says `r`, in trial order. */
-export const freeClickablesNamed = (session, controls, r) =>
-  trialOrder(controls.filter(isClickable), r, session.patterns, session.taken).filter((c) => named(c, r, session.patterns));
+export const freeClickablesNamed = (session, controls, r) => {
+  const { patterns, taken } = session;
+  return trialOrder(controls.filter(isClickable), r, patterns, taken).filter((c) => named(c, r, patterns));
+};
 
 /** An <input type=range> without min or max runs from 0 to 100: HTML's defaults. */
 export const RANGE_DEFAULT_MAX = 100;
