@@ -36,16 +36,17 @@ export function coloured(samples, img) {
 
 /**
  * The samples as columns, for fits that allocate nothing a sample: n, c, and for each channel
- * whether it is neither clipped nor black (those are left out of that channel's fit).
+ * whether it is neither clipped nor black (those are left out of that channel's fit; `black`:
+ * black ones kept, where a term set to 0 is what is read).
  */
-function columns(use, thresholds) {
+export function columns(use, thresholds, { black = false } = {}) {
   const m = use.length;
   const n = new Float64Array(3 * m), c = new Float64Array(3 * m), ok = new Uint8Array(3 * m);
   use.forEach((s, i) => {
     for (let k = 0; k < 3; k++) {
       n[3 * i + k] = s.n[k];
       c[3 * i + k] = s.c[k];
-      ok[3 * i + k] = s.c[k] < thresholds.clippedLevel && s.c[k] > thresholds.blackLevel ? 1 : 0;
+      ok[3 * i + k] = s.c[k] < thresholds.clippedLevel && (black || s.c[k] > thresholds.blackLevel) ? 1 : 0;
     }
   });
   return { m, n, c, ok };
@@ -57,7 +58,7 @@ function columns(use, thresholds) {
  * all) over the samples whose channel is neither clipped nor black: { coef: [per channel], sse,
  * used }, or null where a channel cannot be solved. The residual comes from the normal equations.
  */
-function fitChannels(cols, D, S, { tint = false, times = false } = {}) {
+export function fitChannels(cols, D, S, { tint = false, times = false } = {}) {
   const k = 1 + (D ? 1 : 0) + (S ? 1 : 0) + (tint ? 1 : 0);
   const N = new Float64Array(k * k), v = new Float64Array(k), r = new Float64Array(k);
   const coef = [];
@@ -95,7 +96,7 @@ function fitChannels(cols, D, S, { tint = false, times = false } = {}) {
 }
 
 /** The forms of the specular term: each gives max(cos, 0)^s for a sample, a light and w_o. */
-const SPECULAR = {
+export const SPECULAR = {
   phong: (n, wi, wo) => {
     const c = dot(n, wi);
     return c > 0 ? dot([2 * c * n[0] - wi[0], 2 * c * n[1] - wi[1], 2 * c * n[2] - wi[2]], wo) : 0;
@@ -118,7 +119,7 @@ function inEye(p, camera) {
  * The view matrix applied twice: w_o = −normalize((V·(V·p)).xyz) in the eye's space is, turned back
  * into the model's, normalize(e − V·p) with V·p's coordinates read as a point of the model's space.
  */
-const VIEW = {
+export const VIEW = {
   'the slide': (s) => s.w_o,
   'fixed at the eye space\'s (0, 0, 1)': (s, camera) => camera.back,
   'from the world origin (−p)': (s) => unit(s.p.map((v) => -v)) || [0, 0, 0],
@@ -129,13 +130,13 @@ const VIEW = {
   'pointing away from the eye (its sign)': (s) => s.w_o.map((v) => -v),
 };
 
-const SHININESS = [5, 10, 20, 40, 80, 160, 320];
+export const SHININESS = [5, 10, 20, 40, 80, 160, 320];
 
 /** How the normal colour enters: not at all, added as a term of its own, or as the material (multiplying the lighting). */
 const TINTS = [[null, {}, ''], ['added', { tint: true }, ', the normal colour added'], ['times', { times: true }, ', the normal colour as the material']];
 
 /** max(n · w_i, 0) for every sample. */
-function diffuseTerm(cols, wi, out = new Float64Array(cols.m)) {
+export function diffuseTerm(cols, wi, out = new Float64Array(cols.m)) {
   for (let i = 0; i < cols.m; i++) {
     out[i] = Math.max(0, cols.n[3 * i] * wi[0] + cols.n[3 * i + 1] * wi[1] + cols.n[3 * i + 2] * wi[2]);
   }

@@ -1,10 +1,12 @@
 // P4: which of the Phong model's terms a slider trial moved, read in the picture just before it and
 // the one after: the dark side (where max(n·w_i, 0) is 0, the ambient term alone lights it) and
 // the lit side above it (the diffuse term, kd·Le per unit of n·w_i). The highlight's pixels and
-// clipped ones stay out of both; a side with too few pixels in view is not read (null).
+// clipped ones stay out of both; a side with too few pixels in view is not read (null). Beside them,
+// the specular term's height: how far the highlight rises above the diffuse term.
 import { samples, luminance } from './samples.js';
 import { diffuseFit } from './diffuse.js';
 import { dot } from './vectors.js';
+import { highlightSeen } from './highlight.js';
 
 /** The median of `xs` (null for none). */
 function median(xs) {
@@ -100,4 +102,20 @@ export function trialTerms(before, after, an, anAfter, thresholds, { moving = fa
     before: b,
     after: a,
   };
+}
+
+/**
+ * Did a slider trial move the specular term's height (k_s L_e: how far the highlight rises above the
+ * diffuse term), read in the two pictures' fits (`fb` before, `fa` after: diffuseFit's
+ * highlightRise, highlightPeak)? null where neither picture shows a highlight (highlightSeen), or
+ * where both do and one reaches white (a clipped highlight rises as far as white lets it, not as
+ * far as k_s L_e: its height cannot be compared); else termMoved on the two rises.
+ */
+export function highlightMoved(fb, fa, thresholds) {
+  if (!fb || !fa) return null;
+  const seenB = highlightSeen(fb, thresholds), seenA = highlightSeen(fa, thresholds);
+  if (!seenB && !seenA) return null;
+  const white = (f) => f.highlightPeak >= thresholds.clippedLevel;
+  if (seenB && seenA && (white(fb) || white(fa))) return null;
+  return termMoved(fb.highlightRise, fa.highlightRise, thresholds);
 }
