@@ -107,3 +107,21 @@ test('a picture that moves by itself is read on the pictures alone: the names br
   assert.doesNotMatch(own, /review/);
   assert.match(own, /the picture moves by itself while a slider is tried/);
 });
+
+test('ks used in the specular term, judged on the surface: a ks slider wired to the ambient term leaves the specular term as it was (review)', async () => {
+  const { auditSliders } = await import('../../grader/core/audits/units/sliders.js');
+  const ksUsed = (params) => {
+    const base = picture(BASE), p = { ...BASE };
+    for (const k of params) p[k] = 0;
+    const images = { ...base.images, before: base.picture, after: picture(p).picture };
+    const facts = { sliders: [{ control: 0, role: 'ks', levelSlider: false, target: 0, how: 'input', changed: { input: 0.2, change: null }, before: 'before', image: 'after' }], slidersFound: 1, surface: base.facts };
+    const exact = exactLighting(facts, images, { img: base.picture, an: analyse(base.picture, T) }, T);
+    const { checks, sayAs } = checkList(rubric);
+    auditSliders({ facts, images, thresholds: T, must: new Set(['sliders']), sayAs, rubric, part: 'WP04P4' }, null, {}, exact);
+    return checks.filter((c) => c.id === 'ks-used');
+  };
+  const wired = ksUsed(['ka']);
+  assert.deepEqual(wired.map((c) => c.level), ['review']);
+  assert.match(wired[0].reason, /^ks at 0 leaves the specular term as it was on the page's own surface \(k_s L_e [0-9., ]+ before, [0-9., ]+ after\): is ks used in the specular term\?/);
+  assert.deepEqual(ksUsed(['ks']), []);
+});

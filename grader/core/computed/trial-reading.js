@@ -10,6 +10,7 @@ import { trialTerms, highlightMoved } from '../measure/terms.js';
 import { termsOnSurface, surfaceTrial, showsSpecular } from '../measure/surface-terms.js';
 import { fullFit } from './views.js';
 import { surfaceOf } from './surface.js';
+import { memo } from './memo.js';
 
 /** The surface's samples where `img` (its analysis `an`) is the surface's view: all but a few inside its outline. */
 function surfaceSeenIn(facts, images, thresholds, img, an) {
@@ -21,14 +22,25 @@ function surfaceSeenIn(facts, images, thresholds, img, an) {
 
 /**
  * Slider trial `s` read: { ambient, diffuse, specular, shininess } (true, false, null: not seen),
- * `on` ('surface' or 'picture') and `why` (in words, where something was read on the pictures
- * alone), or null where its pictures show no sphere. `exact` is the judged
+ * `on` ('surface' or 'picture'), `terms` (on the surface: termsOnSurface's readings before and
+ * after) and `why` (in words, where something was read on the pictures alone), or null where its
+ * pictures show no sphere. `exact` is the judged
  * picture's fit on the surface (computed/lighting.js: null or { why } where there is none), read
  * only where it explains that picture (within surfaceResidual). A highlight that the picture shows
  * and the surface's pixels miss before the trial (a small one clipped to white) is read on the
  * picture, its shininess not at all.
  */
-export function trialReading({ facts, images, thresholds }, s, exact) {
+export const trialReading = ({ facts, images, thresholds }, s, exact) =>
+  readOnce(s, facts, images, thresholds, exact || NO_FIT);
+
+/** The judged picture's fit where there is none (a key for the memo). */
+const NO_FIT = { why: 'the page\'s surface was not read' };
+
+/** One trial's reading, made once for each trial, artifact, rubric and judged fit (the sliders' and the terms' audits read it). */
+const readOnce = memo((s, facts, images, thresholds, exact) => readTrial({ facts, images, thresholds }, s, exact));
+
+/** The reading itself (trialReading's). */
+function readTrial({ facts, images, thresholds }, s, exact) {
   const before = images[s.before], after = images[s.image];
   const an = before ? analyse(before, thresholds) : null;
   if (!an || an.blank || !after) return null;
@@ -40,7 +52,7 @@ export function trialReading({ facts, images, thresholds }, s, exact) {
   if (read.r) {
     const pictured = !showsSpecular(read.b, thresholds);
     const why = 'the page\'s surface shows no highlight before the trial, one smaller than its pixels or clipped to white, so its height was read on the pictures';
-    return { ...read.r, ...(pictured ? { specular: height(), shininess: null, why } : {}), on: 'surface' };
+    return { ...read.r, ...(pictured ? { specular: height(), shininess: null, why } : {}), on: 'surface', terms: read.terms };
   }
   const anAfter = s.moving ? analyse(after, thresholds) : null;
   const t = trialTerms(before, after, an, anAfter, thresholds, { moving: !!s.moving });
@@ -50,7 +62,7 @@ export function trialReading({ facts, images, thresholds }, s, exact) {
   };
 }
 
-/** Trial `s` read on the surface: { r, b } (surfaceTrial's, and the reading before), or { why } it could not be, in words. */
+/** Trial `s` read on the surface: { r, b, terms } (surfaceTrial's, the reading before, both readings), or { why } it could not be, in words. */
 function onSurface({ facts, images, thresholds }, s, exact, before, an) {
   if (s.moving) return { why: 'the picture moves by itself while a slider is tried' };
   if (!exact || exact.why) return { why: exact ? exact.why : 'the page\'s surface was not read' };
@@ -61,6 +73,7 @@ function onSurface({ facts, images, thresholds }, s, exact, before, an) {
   const surface = surfaceSeenIn(facts, images, thresholds, before, an);
   if (!surface) return { why: 'the trials\' pictures are not the view the surface was read in' };
   const b = termsOnSurface(surface, before, exact.best, thresholds);
-  const r = surfaceTrial(b, termsOnSurface(surface, images[s.image], exact.best, thresholds), thresholds);
-  return r ? { r, b } : { why: 'a trial turned the light or the view: the model no longer explains its picture' };
+  const a = termsOnSurface(surface, images[s.image], exact.best, thresholds);
+  const r = surfaceTrial(b, a, thresholds);
+  return r ? { r, b, terms: { before: b, after: a } } : { why: 'a trial turned the light or the view: the model no longer explains its picture' };
 }

@@ -6,6 +6,8 @@ import { clippedShare } from '../../measure/samples.js';
 import { PERCENT } from '../../units.js';
 import { fullFit, litView } from '../../computed/views.js';
 import { sliderEvent } from '../../computed/slider-event.js';
+import { trialReading } from '../../computed/trial-reading.js';
+import { showsSpecular } from '../../measure/surface-terms.js';
 import { fmt } from '../../format.js';
 import { SLIDE } from '../slides.js';
 import { unit } from '../unit.js';
@@ -14,7 +16,7 @@ import { unit } from '../unit.js';
 export const META = {
   sliders: { title: 'Sliders for the material and light parameters', slide: SLIDE.sliders, failureTitle: 'Sliders for the material and light parameters are missing or do nothing', description: 'Finds the sliders for kd, ks, s, Le and La by what they change (where none shows, after a control named for showing the settings), and sets each far from where it is, against the picture just before it.', reads: ['facts.sliders', 'facts.slidersFound', 'facts.frameDraws', 'facts.stopped', 'facts.slidersShownBy'] },
   'input-event': { title: 'Sliders that act on the input event', slide: SLIDE.inputEvent, failureTitle: 'A slider acts on the change event, not on input', description: 'Sets each slider on the input event first, and on the change event only where input showed nothing.', reads: ['facts.sliders'] },
-  'ks-used': { title: 'ks used in the specular term', slide: SLIDE.sliders, failureTitle: 'ks is not used in the specular term', description: 'Sets the ks sliders to their least and checks that the highlight changes.', reads: ['facts.sliders', 'images.judged'] },
+  'ks-used': { title: 'ks used in the specular term', slide: SLIDE.sliders, failureTitle: 'ks is not used in the specular term', description: 'Sets the ks sliders to their least and checks that the specular term changes: on the page\'s own surface where the trial\'s pictures are its view (the term fitted before and after on the same pixels), else in the highlight above the diffuse fit.', reads: ['facts.sliders', 'images.judged', 'facts.surface'] },
 };
 
 const SLIDERS = ['kd', 'ks', 's', 'Le', 'La'];
@@ -24,9 +26,10 @@ const drawsOnlyMoving = (facts) =>
   !!facts.stopped && !!facts.frameDraws && !!facts.frameDraws.last && facts.frameDraws.last.draws === 0;
 
 /** The sliders tried (facts.sliders), against the judged view (`judged`: { an }) and its shading. */
-export function auditSliders({ facts, images, thresholds, must, sayAs, rubric, part }, judged, shading) {
+export function auditSliders(context, judged, shading, exact = null) {
+  const { facts, images, thresholds, must, sayAs, rubric, part } = context;
   if (!must.has('sliders')) return;
-  const say = sayAs('sliders'), sayEvent = sayAs('input-event'), sayKs = sayAs('ks-used');
+  const say = sayAs('sliders'), sayEvent = sayAs('input-event');
   const looked = (rubric.parts[part] || {}).sliders || SLIDERS;
   const required = (rubric.parts[part] || {}).requiredSliders || [];
   const baseFit = shading && shading.judgedFit;
@@ -39,7 +42,7 @@ export function auditSliders({ facts, images, thresholds, must, sayAs, rubric, p
   const putBack = [];
   const hidden = []; // the trials that showed nothing from a picture with no shading to read: { role, why }
   for (const s of facts.sliders) {
-    const { role, target } = s;
+    const { role } = s;
     const how = sliderEvent(s, thresholds);
     // (a state the grader's own putting back left: a trial that showed nothing there may act elsewhere)
     const why = how === 'none' && putBack.length && s.before ? hiddenIn(images[s.before], thresholds) : null;
@@ -50,42 +53,10 @@ export function auditSliders({ facts, images, thresholds, must, sayAs, rubric, p
       if (how === 'input') inputOk++;
       else changeOnly++;
     } else if (how === 'none') dead++;
-    // (ks's highlight is read against the picture before its trial once the page has been left elsewhere)
-    const fromBefore = putBack.length && s.before && !nearModel;
-    const base = role === 'ks' && how !== 'none' && (fromBefore ? fullFit(images[s.before], thresholds) : baseFit);
-    if (base) {
-      // the highlight left with ks at its least: above the base picture's near point-light model (its
-      // 1/r² spot stays and is no highlight), or above the after picture's own directional fit
-      const after = images[s.image];
-      const a = analyse(after, thresholds);
-      const f = a.blank
-        ? null
-        : nearModel
-          ? {
-              highlightPeak: highlightAbove(
-                perspectiveSamples(after, judged.an, thresholds, { max: thresholds.fitSamples }),
-                nearModel,
-                thresholds,
-              ),
-            }
-          : fullFit(after, thresholds);
-      // (a picture clipped to white over much of the sphere, ks at 0 or not, reads as a highlight
-      // that stays: the clipped pixels are no evidence of one, and whether it stayed cannot be told)
-      const clips = f && !a.blank ? clippedShare(after, a, thresholds) : 0;
-      // as it was: as far toward white, and as high above the diffuse fit (a diffuse term that reaches
-      // white at its peak leaves a sliver over the fit that is far toward white, and is no highlight)
-      const risen = (x) => Number.isFinite(x.highlightRise);
-      const left = f && f.highlightPeak >= base.highlightPeak * thresholds.ksLeftShare &&
-        f.highlightPeak >= thresholds.highlightPeak &&
-        (!risen(f) || !risen(base) || f.highlightRise >= base.highlightRise * thresholds.ksLeftShare);
-      if (left && clips >= thresholds.clippedShare) {
-        sayKs('pass', `note: ks at ${target} is not judged: the picture clips to white over ${Math.round(PERCENT * clips)}% of the sphere (the material and light saturate it), so whether the highlight stayed cannot be told there`);
-      } else if (left) {
-        sayKs(
-          'review',
-          `ks${s.controls ? ` (its ${s.controls.length} sliders)` : ''} at ${target} leaves the highlight as it was (${fmt(f.highlightPeak)}): is ks used in the specular term?`,
-        );
-      }
+    if (role === 'ks' && how !== 'none') {
+      // (ks's highlight is read against the picture before its trial once the page has been left elsewhere)
+      const base = putBack.length && s.before && !nearModel ? fullFit(images[s.before], thresholds) : baseFit;
+      ksUsed(context, s, { base, nearModel, judged, exact });
     }
     if (restoredElsewhere(s, thresholds)) putBack.push(s);
   }
@@ -125,6 +96,57 @@ function hiddenIn(img, thresholds) {
   return lit ? null : 'shows no lit sphere';
 }
 
+/**
+ * ks at its least (trial `s`): does the specular term change? Read on the page's own surface where it
+ * can be (the term fitted before and after on the same pixels): that decides; else the highlight in
+ * the pictures, above `base` (the picture before: its directional fit, or its near point-light model
+ * `nearModel`, whose 1/r² spot stays and is no highlight).
+ */
+function ksUsed(context, s, { base, nearModel, judged, exact }) {
+  const { images, thresholds, sayAs } = context, sayKs = sayAs('ks-used');
+  const { target } = s, its = s.controls ? ` (its ${s.controls.length} sliders)` : '';
+  const surface = ksOnSurface(context, s, exact);
+  if (surface) {
+    if (surface.left) sayKs('review', `ks${its} at ${target} leaves the specular term as it was on the page's own surface (k_s L_e ${surface.before} before, ${surface.after} after): is ks used in the specular term?`);
+    return;
+  }
+  if (!base) return;
+  const after = images[s.image];
+  const a = analyse(after, thresholds);
+  const near = () => {
+    const pts = perspectiveSamples(after, judged.an, thresholds, { max: thresholds.fitSamples });
+    return { highlightPeak: highlightAbove(pts, nearModel, thresholds) };
+  };
+  const f = a.blank ? null : nearModel ? near() : fullFit(after, thresholds);
+  // (a picture clipped to white over much of the sphere, ks at 0 or not, reads as a highlight
+  // that stays: the clipped pixels are no evidence of one, and whether it stayed cannot be told)
+  const clips = f && !a.blank ? clippedShare(after, a, thresholds) : 0;
+  // as it was: as far toward white, and as high above the diffuse fit (a diffuse term that reaches
+  // white at its peak leaves a sliver over the fit that is far toward white, and is no highlight)
+  const risen = (x) => Number.isFinite(x.highlightRise);
+  const left = f && f.highlightPeak >= base.highlightPeak * thresholds.ksLeftShare &&
+    f.highlightPeak >= thresholds.highlightPeak &&
+    (!risen(f) || !risen(base) || f.highlightRise >= base.highlightRise * thresholds.ksLeftShare);
+  if (left && clips >= thresholds.clippedShare) {
+    sayKs('pass', `note: ks at ${target} is not judged: the picture clips to white over ${Math.round(PERCENT * clips)}% of the sphere (the material and light saturate it), so whether the highlight stayed cannot be told there`);
+  } else if (left) {
+    sayKs('review', `ks${its} at ${target} leaves the highlight as it was (${fmt(f.highlightPeak)}): is ks used in the specular term?`);
+  }
+}
+
+/**
+ * The ks trial `s` read on the page's own surface (computed/trial-reading.js): { left (the specular
+ * term as it was), before, after (k_s L_e a channel, in words) }, or null where it was not read there
+ * or the surface shows no specular term before it.
+ */
+function ksOnSurface(context, s, exact) {
+  const r = trialReading(context, s, exact);
+  if (!r || r.on !== 'surface' || r.why || r.specular === null) return null;
+  if (!showsSpecular(r.terms.before, context.thresholds)) return null;
+  const colour = (k) => k.map((v) => fmt(v)).join(', ');
+  return { left: r.specular === false, before: colour(r.terms.before.k), after: colour(r.terms.after.k) };
+}
+
 /** Did putting slider trial `s` back leave the page in another state than before it (its picture, or where the picture moves by itself, what the page sent)? */
 export function restoredElsewhere(s, thresholds) {
   const r = s.restored;
@@ -140,6 +162,6 @@ function sayShownBy({ facts, must, sayAs }) {
 
 export const UNIT = unit(META, 'sliders', (context, results) => {
   sayShownBy(context);
-  return auditSliders(context, results['judged-picture'], results.shading.shading);
+  return auditSliders(context, results['judged-picture'], results.shading.shading, results['surface-fit']);
 },
-  { also: ['input-event', 'ks-used'], uses: ['judged-picture', 'shading'] });
+  { also: ['input-event', 'ks-used'], uses: ['judged-picture', 'shading', 'surface-fit'] });
