@@ -44,10 +44,12 @@ function readTrial({ facts, images, thresholds }, s, exact) {
   const before = images[s.before], after = images[s.image];
   const an = before ? analyse(before, thresholds) : null;
   if (!an || an.blank || !after) return null;
-  const fb = fullFit(before, thresholds), fa = fullFit(after, thresholds);
-  // (a picture clipped to white over much of the sphere hides its highlight: its height is not read)
+  // the highlight's height on the pictures, where it is needed (a picture clipped to white over much
+  // of the sphere hides its highlight: its height is not read there)
   const clips = (img) => clippedShare(img, analyse(img, thresholds), thresholds) >= thresholds.clippedShare;
-  const height = () => (clips(before) || clips(after) ? null : highlightMoved(fb, fa, thresholds));
+  const height = () => (clips(before) || clips(after)
+    ? null
+    : highlightMoved(fullFit(before, thresholds), fullFit(after, thresholds), thresholds));
   const read = onSurface({ facts, images, thresholds }, s, exact, before, an);
   if (read.r) {
     const pictured = !showsSpecular(read.b, thresholds);
