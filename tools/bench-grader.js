@@ -1,9 +1,10 @@
 #!/usr/bin/env node
 // The grader's benchmark: grades a labelled class (the course's real hand-ins beside this checkout,
 // ../shared/handins, by default) in Chromium and prints what it cost (seconds a part: median, p90,
-// slowest; the whole run's wall time), how far it agrees with the labels and on how many lit parts
-// the page's own surface was read (each part's artifact, facts.surface). A benchmark, never a
-// test: run it on a quiet machine, and compare runs made on the same one.
+// slowest; the whole run's wall time), how far it agrees with the labels, on how many lit parts
+// the page's own surface was read (each part's artifact, facts.surface) and on how many slider
+// trials the terms were read there (the parts' numbers). A benchmark, never a test: run it on a
+// quiet machine, and compare runs made on the same one.
 import { spawnSync } from 'node:child_process';
 import { existsSync, mkdtempSync, readFileSync, writeFileSync } from 'node:fs';
 import os from 'node:os';
@@ -25,8 +26,9 @@ const repo = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..');
 const HELP = `usage: npm run bench:grader -- [--handins DIR] [--labels FILE] [--out DIR] [--workers N] [--runs N] [--json FILE]
 Grades a labelled class with npm run grade (Chromium) and prints seconds a part (median, p90,
 slowest), the wall time, the parts past the time bound, where the parts' time went (by step and by
-page call), on how many lit parts the page's own surface was read (why not, on the rest) and the
-agreement with the labels.
+page call), on how many lit parts the page's own surface was read (why not, on the rest), on how
+many slider trials (P4) the terms were read there (why not, on the rest) and the agreement with
+the labels.
   --handins DIR  the class (default ../shared/handins, or HANDINS_DIR)
   --labels FILE  its labels (default DIR/labels.tsv)
   --out DIR      where the grading goes (default a new temporary folder)

@@ -80,3 +80,17 @@ test('the page\'s own surface: read on how many graded lit parts (P3-P5), and wh
   assert.ok(statsLines(all, 10).includes('the page\'s own surface read on 6 of 6 lit parts (P3-P5)'));
   assert.equal(gradingStats(report).surface, null);
 });
+
+test('the slider trials: on how many the terms were read on the page\'s own surface, and why the rest on the pictures, most trials first', () => {
+  const MOVES = 'the picture moves by itself while a slider is tried';
+  const part = (name, sliderTrials) => ({ name, part: 'WP04P4', seconds: 3, verdict: 'pass', status: 'graded', numbers: sliderTrials ? { sliderTrials } : {} });
+  const report = { submissions: [
+    { parts: [part('a', { read: 5, onSurface: 5, why: {} })] },
+    { parts: [part('b', { read: 4, onSurface: 1, why: { [MOVES]: 2, 'no surface': 1 } })] },
+    { parts: [part('c', { read: 2, onSurface: 0, why: { [MOVES]: 2 } }), part('c2', null)] },
+  ] };
+  const st = gradingStats(report);
+  assert.deepEqual(st.trials, { read: 6, of: 11, why: [{ why: MOVES, trials: 4 }, { why: 'no surface', trials: 1 }] });
+  assert.ok(statsLines(st, 10).includes(`the slider trials (P4) read on the page's own surface: 6 of 11; on the pictures 5: ${MOVES} (4); no surface (1)`), statsLines(st, 10).join('\n'));
+  assert.equal(gradingStats({ submissions: [{ parts: [part('d', null)] }] }).trials, null);
+});

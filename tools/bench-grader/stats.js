@@ -1,7 +1,8 @@
 // What a grading of a labelled class costs and how far it agrees, read from its report.json (the
 // grader's own record): seconds a part (median, p90, slowest), the parts past the time bound, and
-// the labels' agreement; and on how many lit parts the page's own surface was read, from the
-// parts' artifacts (facts.surface). Pure: the benchmark command (tools/bench-grader.js) reads and prints.
+// the labels' agreement; on how many lit parts the page's own surface was read, from the parts'
+// artifacts (facts.surface), and on how many slider trials the terms were read there (the parts'
+// numbers). Pure: the benchmark command (tools/bench-grader.js) reads and prints.
 import { NOT_GRADED } from '../../grader/core/verdict.js';
 import { MS_PER_SECOND } from '../../grader/core/units.js';
 import { STEPS } from '../../common/steps.js';
@@ -40,6 +41,20 @@ export function surfaceStats(parts, surfaceOf) {
 }
 
 /**
+ * On how many of the slider trials (P4) the terms were read on the page's own surface, from the
+ * parts' numbers (the term-controls audit's `sliderTrials`): { read, of, why: [{ why, trials }] (most
+ * trials first) }, or null where no part tried a slider.
+ */
+export function trialStats(parts) {
+  const counted = parts.map((p) => p.numbers && p.numbers.sliderTrials).filter(Boolean);
+  if (!counted.length) return null;
+  const whys = new Map();
+  for (const t of counted) for (const [w, n] of Object.entries(t.why || {})) whys.set(w, (whys.get(w) || 0) + n);
+  const why = [...whys].map(([w, n]) => ({ why: w, trials: n })).sort((a, b) => b.trials - a.trials);
+  return { read: counted.reduce((a, t) => a + t.onSurface, 0), of: counted.reduce((a, t) => a + t.read, 0), why };
+}
+
+/**
  * { parts, median, p90, max, slowest: [{ name, part, seconds }], notGraded, agreement, steps, calls,
  * surface } from a report (report.json) and its parts' facts.surface (`surfaceOf(part)`, optional:
  * without it no `surface`, surfaceStats). A part with no `seconds` (missing, linked) is not counted. `steps`:
@@ -73,7 +88,8 @@ export function gradingStats(report, surfaceOf = null) {
   }
   const calls = [...byCall.values()].sort((a, b) => b.seconds - a.seconds);
   const surface = surfaceOf ? surfaceStats(parts, surfaceOf) : null;
-  return { parts: parts.length, median: quantile(seconds, 0.5), p90: quantile(seconds, 0.9), max: quantile(seconds, 1), slowest, notGraded, agreement, steps, calls, surface };
+  const trials = trialStats(parts);
+  return { parts: parts.length, median: quantile(seconds, 0.5), p90: quantile(seconds, 0.9), max: quantile(seconds, 1), slowest, notGraded, agreement, steps, calls, surface, trials };
 }
 
 /**
@@ -103,6 +119,12 @@ export function statsLines(st, wallSeconds) {
     const rest = sf.of - sf.read, whys = sf.why.slice(0, WHYS_SAID).map((w) => `${w.why} (${w.parts})`);
     if (sf.why.length > WHYS_SAID) whys.push(`${sf.why.length - WHYS_SAID} reasons more`);
     lines.push(`the page's own surface read on ${sf.read} of ${sf.of} lit parts (P3-P5)${rest ? `; not on ${rest}: ${whys.join('; ')}` : ''}`);
+  }
+  const tr = st.trials;
+  if (tr) {
+    const rest = tr.of - tr.read, whys = tr.why.slice(0, WHYS_SAID).map((w) => `${w.why} (${w.trials})`);
+    if (tr.why.length > WHYS_SAID) whys.push(`${tr.why.length - WHYS_SAID} reasons more`);
+    lines.push(`the slider trials (P4) read on the page's own surface: ${tr.read} of ${tr.of}${rest ? `; on the pictures ${rest}: ${whys.join('; ')}` : ''}`);
   }
   const a = st.agreement;
   if (a) lines.push(`labels: ${a.exact} of ${a.of} exact, correct parts passed ${a.correctPassed} of ${a.correct}, partial parts passed ${a.partialPassed}, broken parts passed ${a.brokenPassed}`);

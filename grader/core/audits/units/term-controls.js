@@ -141,6 +141,17 @@ const andList = (xs) => (xs.length > 1 ? `${xs.slice(0, -1).join(', ')} and ${xs
 /** The unit (audits/list.js runs it in its order): the trials read once for both audits, on the judged view's surface fit. */
 export const UNIT = unit(META, 'term-controls', (context, results) => {
   const read = context.must.has('sliders') ? readTrials(context, results['surface-fit']) : [];
+  if (read.length) context.numbers.sliderTrials = trialsIn(read);
   auditTermControls(context, read);
   auditOwnControls(context, read);
 }, { also: ['own-controls'], uses: ['surface-fit'] });
+
+/** Where the trials were read, for the numbers (the benchmark counts them): { read, onSurface, why: { reason: trials } }. */
+function trialsIn(read) {
+  const why = {};
+  for (const { r } of read) {
+    const w = !r ? 'its pictures show no sphere' : r.on === 'surface' ? null : r.why;
+    if (w) why[w] = (why[w] || 0) + 1;
+  }
+  return { read: read.length, onSurface: read.filter(({ r }) => r && r.on === 'surface').length, why };
+}
