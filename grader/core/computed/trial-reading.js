@@ -24,11 +24,10 @@ function surfaceSeenIn(facts, images, thresholds, img, an) {
  * Slider trial `s` read: { ambient, diffuse, specular, shininess } (true, false, null: not seen),
  * `on` ('surface' or 'picture'), `terms` (on the surface: termsOnSurface's readings before and
  * after) and `why` (in words, where something was read on the pictures alone), or null where its
- * pictures show no sphere. `exact` is the judged
- * picture's fit on the surface (computed/lighting.js: null or { why } where there is none), read
- * only where it explains that picture (within surfaceResidual). A highlight that the picture shows
- * and the surface's pixels miss before the trial (a small one clipped to white) is read on the
- * picture, its shininess not at all.
+ * pictures show no sphere. `exact` is the judged picture's fit on the surface (computed/lighting.js:
+ * null or { why } where there is none), read only where it explains that picture (within
+ * surfaceResidual). A highlight that the picture shows and the surface's pixels miss before the
+ * trial (a small one clipped to white) is read on the picture, its shininess not at all.
  */
 export const trialReading = ({ facts, images, thresholds }, s, exact) =>
   readOnce(s, facts, images, thresholds, exact || NO_FIT);
