@@ -125,3 +125,11 @@ test('ks used in the specular term, judged on the surface: a ks slider wired to 
   assert.match(wired[0].reason, /^ks at 0 leaves the specular term as it was on the page's own surface \(k_s L_e [0-9., ]+ before, [0-9., ]+ after\): is ks used in the specular term\?/);
   assert.deepEqual(ksUsed(['ks']), []);
 });
+
+test('the shininess set only with kd (one slider for both): the shininess has no control of its own (review); ks taking the highlight away leaves nothing unread', () => {
+  const { checks, read } = judge({ kd: ['kd'], ks: ['ks'], s: ['s', 'kd'], Le: ['Le'], La: ['La'] });
+  const s = read.find(({ s: t }) => t.role === 's').r;
+  assert.equal(s.shininess, true);
+  assert.equal(s.diffuse, true);
+  assert.match(said(checks, 'own-controls'), /review: one slider moves the shininess only together with the diffuse or the ambient term \(s: range "s"\) and no slider moves it apart: the shininess has no control of its own \(s\)/);
+});

@@ -96,7 +96,9 @@ function ownOf({ term, others, name }, read) {
   const alone = rs.filter((x) => x.r[term] === true && others.every((o) => x.r[o] === false) && !spread(x));
   const named = rs.filter((x) => open(x) && !alone.includes(x));
   const both = rs.filter((x) => x.r[term] === true && others.some((o) => x.r[o] === true) && !open(x));
-  const unread = read.length > rs.length || rs.some((x) => !open(x) &&
+  // (a trial that took the highlight away leaves no shininess to read: that is the specular term's, not unread)
+  const gone = ({ r }) => term === 'shininess' && r.shininess === null && r.specular === true;
+  const unread = read.length > rs.length || rs.some((x) => !open(x) && !gone(x) &&
     (x.r[term] === null || (x.r[term] === true && others.some((o) => x.r[o] === null))));
   return { alone, both, named, unread };
 }
