@@ -61,6 +61,9 @@ export function framePage(frame, log) {
     async controls() {
       return plain(g().controls());
     },
+    /** The frame's canvases, and the one read from now on where it is among the largest (grader/browser/canvases.js). */
+    canvases: async () => plain(g().canvases()),
+    chooseCanvas: async (index) => g().chooseCanvas(index),
     /** The picture's two channels (grader/core/measure/shown.js), as far as a page can see them: see shownInFrame. */
     shown: async () => settle().then(() => shownInFrame(win(), () => g().readBack())),
     /** A click as a user's (window.__grade.click): { ok, why }. */

@@ -15,6 +15,7 @@ import { recordersInit } from '../grader/browser/geometry.js';
 import { nativesInit } from '../grader/browser/natives.js';
 import { stayInit } from '../grader/browser/stay.js';
 import { pixelsScript } from '../grader/browser/pixels.js';
+import { canvasesScript } from '../grader/browser/canvases.js';
 import { tamperScript } from '../grader/browser/tamper.js';
 import { webgpuCaptureScript } from '../grader/browser/webgpu-capture.js';
 import { gradePart } from '../grader/core/grade-part.js';
@@ -38,6 +39,7 @@ export function frameScript(rubric) {
     drawBatchScript,
     instrumentScript,
     `(${pixelsScript})();`,
+    `(${canvasesScript})();`,
     recordersInit,
     clockScript(FROZEN),
     `(${tamperScript})();`,

@@ -21,13 +21,15 @@ export function pixelsScript() {
   };
   const size = (c) => ({ width: N.width.get.call(c), height: N.height.get.call(c) });
 
-  /** The canvas the grader reads: the largest visible one, or null. */
+  /** The canvas the grader reads: the largest visible one (the one chosen among equals: canvases.js), or null. */
   const target = () => {
     const shown = (c) => size(c).width > 0 && size(c).height > 0 && N.getClientRects.call(c).length;
+    const area = (c) => size(c).width * size(c).height;
     const all = [...N.querySelectorAll.call(document, 'canvas')].filter(shown);
-    return all.length
-      ? all.reduce((a, b) => (size(b).width * size(b).height > size(a).width * size(a).height ? b : a))
-      : null;
+    if (!all.length) return null;
+    const largest = all.reduce((a, b) => (area(b) > area(a) ? b : a));
+    const chosen = g.chosenCanvas ? g.chosenCanvas() : null;
+    return chosen && all.includes(chosen) && area(chosen) === area(largest) ? chosen : largest;
   };
 
   // the one 2D canvas the reads draw on, kept from read to read (out of the page's reach): a new one

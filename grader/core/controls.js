@@ -26,7 +26,12 @@ export const isValued = (c) => ['range', 'number', 'select'].includes(c.type);
 
 /** Does the control's name say `role` (a rubric pattern key)? */
 export function named(c, role, patterns) {
-  return labelsOf(c).some((t) => re(patterns[role]).test(t));
+  return namedIn(labelsOf(c), role, patterns);
+}
+
+/** Does one of `labels` (texts) name `role` (the rubric's pattern for it)? */
+export function namedIn(labels, role, patterns) {
+  return labels.some((t) => re(patterns[role]).test(t));
 }
 
 /**

@@ -9,6 +9,7 @@
 // grader, check/frame-page.js for the check page): state(), snap(), controls(), click(c),
 // setValue(c, v, events), press(key), tick(ms, frames) → state(), setNoCull(on), sources(), errors(),
 // tampered(), stayed().
+import { chooseStepCanvas } from './step-canvas.js';
 import { openSession, TooSlow, TooHeavy, FIRST_FRAME, addStep, drewAFrame } from './session.js';
 import { findOrbit, sampleOrbit, keepIfLit, startOrbitToSee } from './orbit.js';
 import { findLevel, climbLevelLadder } from './level.js';
@@ -105,6 +106,7 @@ async function firstFrame(session) {
   facts.first = { api: g.api, adapter: g.adapter, draws: g.draws, shaderErrors: g.shaderErrors, gpuErrors: g.gpuErrors,
     ...(g.webgpuMissing ? { webgpuMissing: true } : {}), // it asked for WebGPU where the browser has none (Firefox ESR)
     ...(startedBy ? { startedBy } : {}) };
+  await chooseStepCanvas(session);
   let firstShot = await session.shot();
   if (!firstShot) return null;
   // a page that drew without an error and shows one colour (its unlit side on a background of the

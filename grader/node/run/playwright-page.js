@@ -149,6 +149,10 @@ export function pageDriver(page, log) {
       return img;
     },
     controls: () => page.evaluate(() => window.__grade.controls()),
+    /** The page's canvases: { index, width, height, shown, labels } (grader/browser/canvases.js). */
+    canvases: () => page.evaluate(() => window.__grade.canvases()),
+    /** The canvas read from now on where it is among the largest (null: the largest, the first of equals). */
+    chooseCanvas: (index) => page.evaluate((i) => window.__grade.chooseCanvas(i), index),
     /** Clicks a control as a user would (window.__grade.click: the check page clicks the same way); { ok, why }. */
     click: (c) => page.evaluate((i) => window.__grade.click(i), c.index),
     setValue: (c, value, events) =>

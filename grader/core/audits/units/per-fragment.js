@@ -8,7 +8,7 @@ import { unit } from '../unit.js';
 
 /** The audit this unit says: id → title, the slide's sentence it checks, the artifacts it reads. */
 export const META = {
-  'per-fragment': { title: 'The Phong model per fragment, its vectors normalised there', slide: SLIDE.phongShading, failureTitle: 'Not the Phong model per fragment', description: 'Compares a coarse level\'s shading with a fine one\'s, and reads the fragment shader for the vectors normalised there; a page whose own checkbox or radio button for per-fragment shading starts unticked has it set first (a note).', reads: ['facts.ladder', 'facts.sources', 'images.judged', 'facts.judgedLevel', 'facts.level', 'facts.stopped', 'facts.viewMoved', 'facts.perFragmentSet'] },
+  'per-fragment': { title: 'The Phong model per fragment, its vectors normalised there', slide: SLIDE.phongShading, failureTitle: 'Not the Phong model per fragment', description: 'Compares a coarse level\'s shading with a fine one\'s, and reads the fragment shader for the vectors normalised there; a page whose own checkbox or radio button for per-fragment shading starts unticked has it set first (a note); a page that shows the sphere in several canvases of one size is judged on the one named for per-fragment shading, or the one not named for Gouraud shading beside one that is (a note).', reads: ['facts.ladder', 'facts.sources', 'images.judged', 'facts.judgedLevel', 'facts.level', 'facts.stopped', 'facts.viewMoved', 'facts.perFragmentSet', 'facts.canvases'] },
 };
 
 /** The fragment shader's own code (GLSL writing a colour, or WGSL's @fragment and what it calls): does it call pow()? */
@@ -26,6 +26,7 @@ export function fragmentPow(sources) {
 export function auditPerFragment({ facts, images, thresholds, must, sayAs, numbers, imagesShown }, judged, shading) {
   const say = sayAs('per-fragment');
   if (!must.has('per-fragment') || !shading || !shading.fit) return;
+  if (facts.canvases) say('pass', `note: the page shows the sphere in ${facts.canvases.largest} canvases of one size; the grader judged ${facts.canvases.judged}, ${facts.canvases.why}`);
   if (facts.perFragmentSet) say('pass', `note: the page starts without per-fragment shading; its own control for it (${facts.perFragmentSet}) was set first, as the step asks, and the part judged from there`);
   const raw = facts.sources ? unnormalisedInputs(facts.sources) : [];
   if (raw.length) say('mistake', `the fragment shader takes the interpolated ${raw.join(' and ')} into dot() or reflect() without normalising ${raw.length > 1 ? 'them' : 'it'}: interpolated directions are shorter than 1 between the vertices (the slides: "most importantly, we must normalize the direction vectors in the fragment shader")`);
