@@ -15,7 +15,9 @@
  */
 function webgpuCapture(toRGBA, copier, capturedContextClass) {
   if (typeof navigator === 'undefined' || !navigator.gpu || typeof GPUQueue === 'undefined') return;
-  const state = { frames: 0, captured: 0, width: 0, height: 0, format: null, pending: null, again: false, errors: [] };
+  const state = {
+    frames: 0, captured: 0, width: 0, height: 0, format: null, pending: null, waiting: new Set(), errors: [],
+  };
   // waits until the last submitted frame has been copied (no timers: the grader's clock may be
   // paused; a finished copy starts the next one at once)
   state.settled = async () => {
@@ -65,10 +67,14 @@ function toRGBA(ctx, bytes, bytesPerRow) {
   return out;
 }
 
-/** copy(ctx): ctx's texture as it is now (after the page's last submit) copied into the canvas's 2D context, one copy at a time. */
+/**
+ * copy(ctx): ctx's texture as it is now (after the page's last submit) copied into the canvas's 2D
+ * context, one copy at a time: a context submitted to while a copy is under way waits for it (each
+ * canvas of a page that draws into two is copied, not only the first).
+ */
 function copier(state, realSubmit, toRGBA) {
   function copy(ctx) {
-    if (state.pending) { state.again = true; return; }
+    if (state.pending) { state.waiting.add(ctx); return; }
     const { device } = ctx.config, texture = ctx.texture;
     const bytesPerRow = Math.ceil((4 * texture.width) / 256) * 256;
     const buffer = device.createBuffer({ label: 'webgpu-capture readback', size: bytesPerRow * texture.height,
@@ -93,7 +99,8 @@ function copier(state, realSubmit, toRGBA) {
     }, (err) => { state.errors.push(`readback: ${err.message}`); buffer.destroy(); })
       .finally(() => {
         state.pending = null;
-        if (state.again) { state.again = false; copy(ctx); }
+        const [next] = state.waiting;
+        if (next) { state.waiting.delete(next); copy(next); }
       });
   }
   return copy;
