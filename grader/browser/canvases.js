@@ -20,22 +20,18 @@ export function canvasesScript() {
   const all = () => [...N.querySelectorAll.call(document, 'canvas')];
   let chosen = null;
 
-  /** The short text of element `e` (not a canvas, nor one that holds controls or canvases: those name themselves), or null. */
-  const textOf = (e) => {
-    if (!e || N.tagName.get.call(e) === 'CANVAS' || N.querySelector.call(e, 'canvas, button, input, select, textarea')) return null;
+  const CONTROLS = 'button, input, select, textarea';
+  /** The text of element `e` where it is short and `e` holds no control (controls name themselves), or null. */
+  const shortText = (e) => {
+    if (N.querySelector.call(e, CONTROLS)) return null;
     const t = (N.text.get.call(e) || '').replace(/\s+/g, ' ').trim();
     return t && t.length <= TEXT_NEAR ? t : null;
   };
-
-  /** The short text of a canvas's parent that holds no other canvas and no control (a figure, a cell), or null. */
-  const parentText = (parent) => {
-    if (!parent) return null;
-    const inside = N.querySelectorAll.call(document, 'canvas');
-    if ([...inside].filter((x) => N.parent.get.call(x) === parent).length !== 1) return null;
-    if (N.querySelector.call(parent, 'button, input, select, textarea')) return null;
-    const t = (N.text.get.call(parent) || '').replace(/\s+/g, ' ').trim();
-    return t && t.length <= TEXT_NEAR ? t : null;
-  };
+  /** The short text of the element beside a canvas (not a canvas, nor one that holds one), or null. */
+  const beside = (e) => (!e || N.tagName.get.call(e) === 'CANVAS' || N.querySelector.call(e, 'canvas') ? null : shortText(e));
+  /** The short text of a canvas's parent that holds no other canvas (a figure, a cell), or null. */
+  const parentText = (parent) =>
+    (parent && all().filter((x) => N.parent.get.call(x) === parent).length === 1 ? shortText(parent) : null);
 
   /**
    * Every canvas on the page, in the document's order: { index, width, height, shown, labels }
@@ -45,7 +41,7 @@ export function canvasesScript() {
   const canvases = () => all().map((c, index) => {
     const width = N.width.get.call(c), height = N.height.get.call(c);
     const parent = N.parent.get.call(c);
-    const near = [textOf(N.previous.get.call(c)), textOf(N.next.get.call(c)), parentText(parent)];
+    const near = [beside(N.previous.get.call(c)), beside(N.next.get.call(c)), parentText(parent)];
     const attrs = ['id', 'class', 'title', 'aria-label'].map((a) => N.getAttribute.call(c, a));
     const shown = width > 0 && height > 0 && N.getClientRects.call(c).length > 0;
     return { index, width, height, shown, labels: [...attrs, ...near].filter(Boolean) };

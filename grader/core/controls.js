@@ -34,6 +34,13 @@ export function namedIn(labels, role, patterns) {
   return labels.some((t) => re(patterns[role]).test(t));
 }
 
+/** Do `labels` name `role` and not `other` (words beside a thing name it too, so one named for both is neither)? */
+export const namedOnlyIn = (labels, role, other, patterns) =>
+  namedIn(labels, role, patterns) && !namedIn(labels, other, patterns);
+
+/** Does the control's name say `role` and not `other`? */
+export const namedOnly = (c, role, other, patterns) => namedOnlyIn(labelsOf(c), role, other, patterns);
+
 /**
  * The role a control's names suggest, or null: the clickables' (coarsen, subdivide, orbit,
  * depth, cull, clockwise), the value controls' (levelSlider, kd, ks, s, Le, La). "Decrement

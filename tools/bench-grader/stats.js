@@ -20,6 +20,10 @@ export function quantile(xs, q) {
 /** How many of the reasons the surface was not read the line names. */
 const WHYS_SAID = 6;
 
+/** The first WHYS_SAID reasons (in words, most first) and how many more, on one line. */
+const whysSaid = (whys) =>
+  [...whys.slice(0, WHYS_SAID), ...(whys.length > WHYS_SAID ? [`${whys.length - WHYS_SAID} reasons more`] : [])].join('; ');
+
 /**
  * On how many lit parts (the steps that light the sphere: P3-P5, common/steps.js) that were graded the
  * grader read the page's own surface: { read, of, why: [{ why, parts }] (most parts first) }.
@@ -116,15 +120,13 @@ export function statsLines(st, wallSeconds) {
   }
   const sf = st.surface;
   if (sf) {
-    const rest = sf.of - sf.read, whys = sf.why.slice(0, WHYS_SAID).map((w) => `${w.why} (${w.parts})`);
-    if (sf.why.length > WHYS_SAID) whys.push(`${sf.why.length - WHYS_SAID} reasons more`);
-    lines.push(`the page's own surface read on ${sf.read} of ${sf.of} lit parts (P3-P5)${rest ? `; not on ${rest}: ${whys.join('; ')}` : ''}`);
+    const rest = sf.of - sf.read, whys = whysSaid(sf.why.map((w) => `${w.why} (${w.parts})`));
+    lines.push(`the page's own surface read on ${sf.read} of ${sf.of} lit parts (P3-P5)${rest ? `; not on ${rest}: ${whys}` : ''}`);
   }
   const tr = st.trials;
   if (tr) {
-    const rest = tr.of - tr.read, whys = tr.why.slice(0, WHYS_SAID).map((w) => `${w.why} (${w.trials})`);
-    if (tr.why.length > WHYS_SAID) whys.push(`${tr.why.length - WHYS_SAID} reasons more`);
-    lines.push(`the slider trials (P4) read on the page's own surface: ${tr.read} of ${tr.of}${rest ? `; on the pictures ${rest}: ${whys.join('; ')}` : ''}`);
+    const rest = tr.of - tr.read, whys = whysSaid(tr.why.map((w) => `${w.why} (${w.trials})`));
+    lines.push(`the slider trials (P4) read on the page's own surface: ${tr.read} of ${tr.of}${rest ? `; on the pictures ${rest}: ${whys}` : ''}`);
   }
   const a = st.agreement;
   if (a) lines.push(`labels: ${a.exact} of ${a.of} exact, correct parts passed ${a.correctPassed} of ${a.correct}, partial parts passed ${a.partialPassed}, broken parts passed ${a.brokenPassed}`);

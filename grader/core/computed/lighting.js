@@ -2,7 +2,7 @@
 // position and w_o the page drew them with (computed/surface.js), the slide's model and its known
 // misreadings fitted there (measure/surface-fit.js). Null where no surface was read (a step that
 // lights nothing, an older artifact); { why } where it was read but cannot be used for this picture.
-import { surfaceOf } from './surface.js';
+import { surfaceOf, insideShare } from './surface.js';
 import { surfaceFit } from '../measure/surface-fit.js';
 import { memo } from './memo.js';
 
@@ -21,7 +21,7 @@ export function exactLighting(facts, images, judged, thresholds, surface = facts
   const { img, an } = judged;
   if (s.width !== img.width || s.height !== img.height) return { why: `the page's surface (${s.width}×${s.height}) is not the picture's size (${img.width}×${img.height})` };
   // the surface is the picture's: its pixels lie inside the sphere's outline (the view did not move between them)
-  const inside = s.samples.filter((q) => an.mask[q.y * img.width + q.x]).length / Math.max(1, s.samples.length);
+  const inside = insideShare(s, img, an);
   if (inside < thresholds.surfaceMatch) return { why: `the page's surface, drawn again by the grader, is not its picture: ${pct(inside)} of it lies inside the picture's outline (the view moved between them, or the page draws with something the grader's copy leaves out, such as instancing or a second program's draw)` };
   const fit = fitOnce(s, img, thresholds);
   return fit.why ? fit : { ...fit, camera: s.camera, normal: s.normal };

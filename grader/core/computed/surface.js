@@ -96,3 +96,7 @@ export const surfaceOf = memo((surface, images, thresholds) => {
 
 /** The angle in degrees between unit vectors a and b. */
 export const degreesBetween = (a, b) => (Math.acos(Math.max(-1, Math.min(1, dot(a, b)))) * HALF_TURN) / Math.PI;
+
+/** The share of surface `s`'s samples that lie inside the outline `an` of picture `img` (the surface is that picture's view where nearly all do). */
+export const insideShare = (s, img, an) =>
+  s.samples.filter((q) => an.mask[q.y * img.width + q.x]).length / Math.max(1, s.samples.length);

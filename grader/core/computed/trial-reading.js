@@ -9,15 +9,14 @@ import { clippedShare } from '../measure/samples.js';
 import { trialTerms, highlightMoved } from '../measure/terms.js';
 import { termsOnSurface, surfaceTrial, showsSpecular } from '../measure/surface-terms.js';
 import { fullFit } from './views.js';
-import { surfaceOf } from './surface.js';
+import { surfaceOf, insideShare } from './surface.js';
 import { memo } from './memo.js';
 
 /** The surface's samples where `img` (its analysis `an`) is the surface's view: all but a few inside its outline. */
 function surfaceSeenIn(facts, images, thresholds, img, an) {
   const s = surfaceOf(facts.surface, images, thresholds);
   if (s.why || s.width !== img.width || s.height !== img.height) return null;
-  const inside = s.samples.filter((q) => an.mask[q.y * img.width + q.x]).length / Math.max(1, s.samples.length);
-  return inside >= thresholds.surfaceMatch ? s : null;
+  return insideShare(s, img, an) >= thresholds.surfaceMatch ? s : null;
 }
 
 /**

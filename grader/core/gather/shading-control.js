@@ -2,7 +2,7 @@
 // per-fragment shading, or radio buttons for Gouraud and Phong shading) and starts per vertex is set
 // as the step asks before anything is looked at, as a teacher sets up the step; facts.perFragmentSet
 // names the control.
-import { named, describe } from '../controls.js';
+import { namedOnly, describe } from '../controls.js';
 
 /** Ticks the page's own per-fragment shading control where the step asks for it and the page starts without it. */
 export async function setStepShading(session, controls) {
@@ -24,8 +24,7 @@ export async function setStepShading(session, controls) {
  * for both is neither.
  */
 function shadingChoice(controls, session) {
-  const is = (x, role) => named(x, role, session.patterns);
-  const only = (x, role, other) => is(x, role) && !is(x, other);
+  const only = (x, role, other) => namedOnly(x, role, other, session.patterns);
   const free = (x) => !x.checked && !x.disabled && !session.taken.has(x.index);
   const box = controls.find((x) => x.type === 'checkbox' && free(x) && only(x, 'perFragment', 'perVertex'));
   if (box) return box;

@@ -3,7 +3,7 @@
 // a teacher looks at it: the one named for per-fragment shading, else the one canvas not named
 // for per-vertex (Gouraud) shading beside one that is. Where the names do not tell, the first is judged,
 // as before. facts.canvases says how many there were and which was judged, and why.
-import { namedIn } from '../controls.js';
+import { namedIn, namedOnlyIn } from '../controls.js';
 
 /** A canvas in words: its place on the page and its first names. */
 const inWords = (c) => `canvas ${c.index + 1}${c.labels.length ? ` (${c.labels.slice(0, 2).map((l) => `"${l}"`).join(', ')})` : ''}`;
@@ -17,7 +17,7 @@ export async function chooseStepCanvas(session) {
   const largest = shown.filter((c) => most > 0 && area(c) === most);
   if (largest.length < 2) return;
   const is = (c, role) => namedIn(c.labels, role, session.patterns);
-  const only = (c, role, other) => is(c, role) && !is(c, other);
+  const only = (c, role, other) => namedOnlyIn(c.labels, role, other, session.patterns);
   const fragment = largest.filter((c) => only(c, 'perFragment', 'perVertex'));
   const vertex = largest.filter((c) => only(c, 'perVertex', 'perFragment'));
   const rest = largest.filter((c) => !is(c, 'perVertex'));

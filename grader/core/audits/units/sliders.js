@@ -154,12 +154,12 @@ export function restoredElsewhere(s, thresholds) {
   return r.sent ? r.sent.length > 0 : r.changed > thresholds.sliderChange;
 }
 
-/** The unit (audits/list.js runs it in its order). */
 /** Where the page's sliders showed only once a control was clicked (gather/reveal.js): a note naming it. */
 function sayShownBy({ facts, must, sayAs }) {
   if (must.has('sliders') && facts.slidersShownBy) sayAs('sliders')('pass', `note: the sliders show only once ${facts.slidersShownBy} is clicked; the grader clicked it, as a teacher looking for them would`);
 }
 
+/** The unit (audits/list.js runs it in its order). */
 export const UNIT = unit(META, 'sliders', (context, results) => {
   sayShownBy(context);
   return auditSliders(context, results['judged-picture'], results.shading.shading, results['surface-fit']);
