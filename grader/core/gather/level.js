@@ -6,6 +6,7 @@ import { effectOf, nameRole, named, trialOrder, isClickable, isValued, describe 
 import { pictureChange, silhouetteChange } from '../measure.js';
 import { effectWords } from './session.js';
 import { orbitFoundLate } from './orbit.js';
+import { readSurface } from './geometry.js';
 
 // keys students bind to the level, tried when no control changes it: up/down arrows, + and −, page up/down
 const LEVEL_KEYS = [['ArrowUp', 'ArrowDown'], ['+', '-'], ['ArrowRight', 'ArrowLeft'], ['PageUp', 'PageDown']];
@@ -189,8 +190,22 @@ export async function findLevel(session, controls) {
 }
 
 /**
+ * P5 on a still page: the surface of the first level of the ladder coarse enough to show per vertex
+ * against per fragment (the level the per-fragment audit compares: coarseRoundness), read while the
+ * page shows it (`s`, the ladder's level `k`), as facts.coarseSurface ({ level, surface }).
+ */
+async function coarseSurface(session, s, k) {
+  const { facts, thresholds } = session;
+  if (!session.must.has('per-fragment') || session.moving || facts.coarseSurface) return;
+  if (!s || s.an.blank || !(s.an.roundness < thresholds.coarseRoundness)) return;
+  const surface = await readSurface(session, 'coarse-');
+  if (surface) facts.coarseSurface = { level: k, surface };
+}
+
+/**
  * The ladder: coarsen to the bottom (P5's coarse level), then subdivide until the silhouette
- * settles or is as round as pixels allow. Each level's picture is kept (level-k) with its work a frame.
+ * settles or is as round as pixels allow. Each level's picture is kept (level-k) with its work a
+ * frame; on P5 the first level coarse enough to compare, its surface too (coarseSurface).
  */
 export async function climbLevelLadder(session) {
   const { thresholds, level: levelBy } = session;
@@ -203,6 +218,7 @@ export async function climbLevelLadder(session) {
       if (!await how.act()) break;
       const s = await session.shot();
       if (!s) break;
+      if (up) await coarseSurface(session, s, ladder.length + got.length);
       const isDone = settled(last, s);
       last = s;
       got.push(s);
@@ -238,6 +254,7 @@ export async function climbLevelLadder(session) {
     coarsened = down.length > 0;
   }
   if (levelBy.subdivide) {
+    await coarseSurface(session, ladder[0], 0);
     ladder.push(
       ...(await step(
         levelBy.subdivide,
@@ -257,6 +274,7 @@ export async function climbLevelLadder(session) {
       await session.page.setValue(c, v, ['input', 'change']);
       await session.tick(session.thresholds.actionTickMs);
       const s = await session.shot();
+      await coarseSurface(session, s, ladder.length);
       const settled = ladder.length && settledSilhouette(ladder[ladder.length - 1], s);
       ladder.push(s);
       if (settled) break;

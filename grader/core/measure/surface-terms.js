@@ -85,3 +85,33 @@ export function surfaceTrial(b, a, thresholds) {
     shininess: showsSpecular(b, thresholds) && showsSpecular(a, thresholds) ? b.s !== a.s : null,
   };
 }
+
+/**
+ * The residual (RMS over the channels neither clipped nor black) that `model`, the judged fit's
+ * best whole (its light, form, w_o, s, normal colour and material `coef` per channel, as
+ * surface-fit.js's fitChannels lays them out), leaves on `img` over `surface`: nothing refitted,
+ * each pixel's colour predicted from its own normal and position (clipped at white, as a picture
+ * is). Null where too few pixels.
+ */
+export function modelResidual(surface, img, model, thresholds) {
+  const use = coloured(surface.samples, img);
+  if (use.length < LEAST_PIXELS || !model.coef) return null;
+  const cols = columns(use, thresholds);
+  const D = diffuseTerm(cols, model.wi);
+  const spec = model.form && SPECULAR[model.form], wo = VIEW[model.view || 'the slide'];
+  if (spec && !wo(use[0], surface.camera)) return null;
+  const S = spec ? use.map((q) => Math.max(spec(q.n, model.wi, wo(q, surface.camera)), 0) ** model.s) : null;
+  let sse = 0, used = 0;
+  for (let i = 0; i < cols.m; i++) {
+    for (let ch = 0; ch < 3; ch++) {
+      if (!cols.ok[3 * i + ch]) continue;
+      const x = model.coef[ch], t = 0.5 * cols.n[3 * i + ch] + 0.5, w = model.tint === 'times' ? t : 1;
+      let j = 1, y = x[0] * w + x[j++] * w * D[i];
+      if (S) y += x[j++] * w * S[i];
+      if (model.tint === 'added') y += x[j] * t;
+      sse += (cols.c[3 * i + ch] - Math.min(1, Math.max(0, y))) ** 2;
+      used++;
+    }
+  }
+  return used ? Math.sqrt(sse / used) : null;
+}
