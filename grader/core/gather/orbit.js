@@ -6,7 +6,7 @@ import { analyse } from '../measure.js';
 import { describe, trialOrder, isClickable, sentChanges } from '../controls.js';
 import { freeClickablesNamed } from './params.js';
 import { litView } from '../computed/views.js';
-import { readGeometry, readSent } from './geometry.js';
+import { readGeometry, readSent, readSurface } from './geometry.js';
 import { cameraOf, cameraTurn, cameraPath } from '../computed/camera.js';
 import { fmt } from '../format.js';
 import { MS_PER_SECOND, FULL_TURN } from '../units.js';
@@ -29,6 +29,17 @@ export function keepIfLit(session, img, { orbiting = true, keep = true } = {}) {
 /** The camera as the page sent it now (the animated matrices: camera.js), kept for the next views looked at. */
 export async function readCamera(session) {
   session.camera = session.facts.sentAnimated ? cameraOf(await readSent(session), session.facts.sentAnimated) : null;
+}
+
+/**
+ * The surface of the lit view `v` just kept along the orbit (no frame has run since), the first, as its
+ * `surface`: where the light is judged (P3–P5), the light fitted on its surface and on the judged
+ * view's says whether it stays in the world as the camera turns (audits/units/orbit-light.js).
+ */
+async function firstViewSurface(session, v) {
+  if (!v || !v.orbiting || !session.must.has('diffuse') || session.facts.views.some((x) => x.surface)) return;
+  const surface = await readSurface(session, `${v.image}-`);
+  if (surface) v.surface = surface;
 }
 
 /** Has the camera turned, over the orbiting views kept, less than it takes to tell where the light is? (unknown: no) */
@@ -79,20 +90,31 @@ export async function sampleOrbit(session, afterLadder = false) {
   const cameras = [session.camera];
   const roundUnlit = () => !session.facts.views.some((v) => v.orbiting) &&
     cameraPath(cameras, thresholds.cameraRotationTolerance) >= FULL_TURN;
+  // the view kept for `img` (none: it was not lit, or not looked at), whose surface is read before
+  // the next frame where it is the first lit view along the orbit
+  let kept = null;
+  const keepLit = () => {
+    const n = session.facts.views.length, lit = keepIfLit(session, img);
+    kept = session.facts.views.length > n ? session.facts.views[n] : null;
+    return lit;
+  };
   // a lit view and two samples at least; where the page sends its view matrix, until the camera has
   // turned cameraTurnDegrees over the lit views (a slow orbit: a light that moves with the camera
   // and one that stays in the world look alike over a small turn)
   for (
     ;
     k < thresholds.orbitSamples &&
-    (!keepIfLit(session, img) || k < thresholds.orbitLeastSamples || turnedTooLittle(session)) &&
+    (!keepLit() || k < thresholds.orbitLeastSamples || turnedTooLittle(session)) &&
     !roundUnlit();
     k++
   ) {
+    await firstViewSurface(session, kept);
+    kept = null;
     await tickOrbit(session, k);
     img = await session.page.snap();
     cameras.push(session.camera);
   }
+  await firstViewSurface(session, kept);
   session.cur = { img, an: analyse(img, thresholds) };
   const round = roundUnlit() ? '; the camera went all the way round' : '';
   session.act(`sampled the orbit at ${k} positions ${fmt(thresholds.orbitSampleSeconds, 1)} s apart (${session.facts.views.filter((v) => v.orbiting).length} lit${round})`);

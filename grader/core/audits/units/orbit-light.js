@@ -7,10 +7,11 @@ import { SLIDE } from '../slides.js';
 import { rolesInWords } from '../../computed/roles.js';
 import { unit } from '../unit.js';
 import { HALF_TURN } from '../../units.js';
+import { lightSpaceOnSurface } from '../../computed/light-space.js';
 
 /** The audits this unit says: id → title, the slide's sentence it checks, the artifacts it reads. */
 export const META = {
-  'orbit-light': { title: 'The lit side turns as the camera orbits', slide: SLIDE.orbit, failureTitle: 'The lit side does not turn as the camera orbits', description: 'Compares the light fitted in the lit views with how far the camera turned (its view matrix, as the page sent it).', reads: ['facts.views'] },
+  'orbit-light': { title: 'The lit side turns as the camera orbits', slide: SLIDE.orbit, failureTitle: 'The lit side does not turn as the camera orbits', description: 'Fits the light on the page\'s own surface in the first lit view along the orbit and in the judged view, in the space of its normals, and says whether it stays there (a light in the world) or turns with the camera the page\'s P·V·M shows (a light in the eye\'s space); where the surfaces cannot say, compares the light fitted in the lit views\' pictures with how far the camera turned (its view matrix, as the page sent it).', reads: ['facts.views', 'facts.surface'] },
   'orbit-toggle': { title: 'A button toggles the orbit', slide: SLIDE.orbit, failureTitle: 'No button toggles the orbit', description: 'Finds the control that starts and stops the orbit by what it does to the picture.', reads: ['facts.orbit', 'facts.controls', 'facts.roles', 'facts.level'] },
 };
 
@@ -23,11 +24,34 @@ const signedAngle = (a, b) =>
 const angle = (a, b) =>
   (HALF_TURN / Math.PI) * Math.acos(Math.min(1, Math.abs(a[0] * b[0] + a[1] * b[1] + a[2] * b[2])));
 
-/** The lit side turning with the orbit (the lit views' sparse fits, `lit`), and the orbit's control. */
-export function auditOrbit({ facts, thresholds, must, sayAs, numbers }, lit) {
+/**
+ * The light's space read on a lit view's own surface and the judged view's (computed/light-space.js: `read`): said
+ * and true, or false where the surfaces cannot say (the pictures judge it then).
+ */
+function lightOnSurface({ thresholds, must, sayAs, numbers }, read) {
+  const say = sayAs('orbit-light');
+  if (!read || read.why) return false;
+  numbers.lightOnSurface = read;
+  const words = `on the page's own surface in a lit view along the orbit and in the judged view, the fitted light turns ${fmt(read.turn, 1)}° in the space of its normals, where a light in the eye's space would have turned ${fmt(read.eyeTurn, 1)}° (the camera turns ${fmt(read.cameraTurn, 1)}°: its P·V·M, as the page drew)`;
+  const asked = must.has('orbit-toggle');
+  // (a light that turned clearly where one in the eye's space would have turned little is not in the eye's space)
+  if (read.eyeTurn < thresholds.lightSeparationDegrees && read.turn < thresholds.lightClearTurnDegrees) {
+    say(asked ? 'review' : 'pass', `${asked ? '' : 'note: '}the camera turned too little between the lit views seen to tell whether the light stays in the world (${words}; ${thresholds.lightSeparationDegrees}° at least are needed)`);
+  } else if (read.eyeTurn >= thresholds.lightSeparationDegrees && read.fromEye < read.turn) {
+    say(asked ? 'review' : 'pass', `${asked ? 'the orbit does not show in the shading: ' : 'note: '}while the camera orbits, the lit side stays where it is on screen (${words}; ${fmt(read.fromEye, 1)}° from there): the light moves with the camera (given in eye space, or light and normals in different spaces?)`);
+  } else say('pass', `the lit side turns as the camera orbits (${words}): the light stays in the world`);
+  return true;
+}
+
+/** The lit side turning with the orbit (the lit views' own surfaces, else their sparse fits, `lit`), and the orbit's control. */
+export function auditOrbit(context, lit, exact = null) {
+  const { facts, thresholds, must, sayAs, numbers } = context;
   const say = sayAs('orbit-light');
   const orbiting = lit.filter((v) => v.orbiting), orbitFits = orbiting.map((v) => v.fit);
-  if (must.has('diffuse') && orbitFits.length >= 2) {
+  // (two lit views seen along the orbit at least, as on the pictures: one alone may be the judged view)
+  const onSurface = must.has('diffuse') && orbitFits.length >= 2 ? lightSpaceOnSurface(context, exact) : null;
+  if (onSurface && onSurface.why) numbers.lightOnSurface = onSurface;
+  if (must.has('diffuse') && orbitFits.length >= 2 && !lightOnSurface(context, onSurface)) {
     let turn = 0;
     for (let i = 1; i < orbitFits.length; i++) turn = Math.max(turn, angle(orbitFits[0].light, orbitFits[i].light));
     numbers.lightTurn = turn;
@@ -48,14 +72,15 @@ export function auditOrbit({ facts, thresholds, must, sayAs, numbers }, lit) {
     }
     const camera = rotationsTurn(rs);
     if (rs) Object.assign(numbers, { cameraTurn: camera, lightTurnIfWorld: apart });
-    const words = `the fitted light turns ${fmt(turn, 1)}° over ${orbitFits.length} views${rs ? `, where a light in the world would have turned ${fmt(apart, 1)}° on screen (the camera turns ${fmt(camera, 1)}°: its view matrix, as the page sent it)` : ''}`;
+    const why = onSurface ? `; on the pictures: the page's own surface cannot say: ${onSurface.why}` : '';
+    const words = `the fitted light turns ${fmt(turn, 1)}° over ${orbitFits.length} views${rs ? `, where a light in the world would have turned ${fmt(apart, 1)}° on screen (the camera turns ${fmt(camera, 1)}°: its view matrix, as the page sent it)` : ''}${why}`;
     // on a sphere only the shading shows the orbit: where the step asks for the orbit (P3) a light that
     // moves with the camera hides it; elsewhere the slides leave the light's space to the student
     if (rs && apart < thresholds.lightSeparationDegrees && turn < thresholds.lightClearTurnDegrees) {
       say(must.has('orbit-toggle') ? 'review' : 'pass', `${must.has('orbit-toggle') ? '' : 'note: '}the camera turned too little between the lit views seen to tell whether the light stays in the world (${words}; ${thresholds.lightSeparationDegrees}° at least are needed)`);
     } else if (turn < Math.max(thresholds.lightTurnDegrees, rs ? thresholds.lightFollowsWorld * apart : 0)) {
       say(must.has('orbit-toggle') ? 'review' : 'pass', `${must.has('orbit-toggle') ? 'the orbit does not show in the shading: ' : 'note: '}while the camera orbits, the lit side stays where it is on screen (${words}): the light moves with the camera (given in eye space, or light and normals in different spaces?)`);
-    } else say('pass', `the lit side turns as the camera orbits (${rs ? words : `${fmt(turn, 0)}° over ${orbitFits.length} views`}): the light stays in the world`);
+    } else say('pass', `the lit side turns as the camera orbits (${rs ? words : `${fmt(turn, 0)}° over ${orbitFits.length} views${why}`}): the light stays in the world`);
   }
   if (must.has('orbit-toggle')) {
     const sayToggle = sayAs('orbit-toggle');
@@ -69,4 +94,5 @@ export function auditOrbit({ facts, thresholds, must, sayAs, numbers }, lit) {
 }
 
 /** The unit (audits/list.js runs it in its order). */
-export const UNIT = unit(META, 'orbit-light', (context, results) => auditOrbit(context, results['lit-views']), { also: ['orbit-toggle'], uses: ['lit-views'] });
+export const UNIT = unit(META, 'orbit-light', (context, results) => auditOrbit(context, results['lit-views'], results['surface-fit']),
+  { also: ['orbit-toggle'], uses: ['lit-views', 'surface-fit'] });
