@@ -60,31 +60,37 @@ export function columns(use, thresholds, { black = false } = {}) {
  */
 export function fitChannels(cols, D, S, { tint = false, times = false } = {}) {
   const k = 1 + (D ? 1 : 0) + (S ? 1 : 0) + (tint ? 1 : 0);
-  const N = new Float64Array(k * k), v = new Float64Array(k), r = new Float64Array(k);
+  const N = new Float64Array(k * k), v = new Float64Array(k);
+  // where S and the normal colour sit in the basis (after 1 and D)
+  const sAt = S ? 1 + (D ? 1 : 0) : 0, tAt = tint ? k - 1 : 0;
   const coef = [];
   let sse = 0, used = 0;
   for (let ch = 0; ch < 3; ch++) {
-    N.fill(0);
-    v.fill(0);
+    // the normal equations' sums, a basis of four at most, each added up sample by sample (the
+    // terms the basis lacks stay 0 and are not read)
+    let v0 = 0, v1 = 0, v2 = 0, v3 = 0;
+    let n00 = 0, n01 = 0, n02 = 0, n03 = 0, n11 = 0, n12 = 0, n13 = 0, n22 = 0, n23 = 0, n33 = 0;
     let yy = 0, count = 0;
     for (let i = 0; i < cols.m; i++) {
       if (!cols.ok[3 * i + ch]) continue;
       const t = 0.5 * cols.n[3 * i + ch] + 0.5, w = times ? t : 1;
-      r[0] = w;
-      let j = 1;
-      if (D) r[j++] = w * D[i];
-      if (S) r[j++] = w * S[i];
-      if (tint) r[j] = t;
+      const r0 = w, d = D ? w * D[i] : 0, s = S ? w * S[i] : 0;
+      const r1 = D ? d : sAt === 1 ? s : tAt === 1 ? t : 0;
+      const r2 = sAt === 2 ? s : tAt === 2 ? t : 0, r3 = tAt === 3 ? t : 0;
       const y = cols.c[3 * i + ch];
-      for (let a = 0; a < k; a++) {
-        v[a] += r[a] * y;
-        for (let b = a; b < k; b++) N[a * k + b] += r[a] * r[b];
-      }
+      v0 += r0 * y; v1 += r1 * y; v2 += r2 * y; v3 += r3 * y;
+      n00 += r0 * r0; n01 += r0 * r1; n02 += r0 * r2; n03 += r0 * r3;
+      n11 += r1 * r1; n12 += r1 * r2; n13 += r1 * r3;
+      n22 += r2 * r2; n23 += r2 * r3; n33 += r3 * r3;
       yy += y * y;
       count++;
     }
     if (count < LEAST_A_CHANNEL) return null;
-    for (let a = 0; a < k; a++) for (let b = 0; b < a; b++) N[a * k + b] = N[b * k + a];
+    const sums = [[n00, n01, n02, n03], [n01, n11, n12, n13], [n02, n12, n22, n23], [n03, n13, n23, n33]];
+    for (let a = 0; a < k; a++) {
+      v[a] = [v0, v1, v2, v3][a];
+      for (let b = 0; b < k; b++) N[a * k + b] = sums[a][b];
+    }
     const x = solveNormal(N, v, k);
     if (!x) return null;
     // Σ(y − r·x)² = Σy² − xᵀv at the least-squares solution

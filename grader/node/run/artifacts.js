@@ -31,17 +31,22 @@ export function writeArtifact(dir, { facts, images }) {
 
 /**
  * The artifact in `dir`: { facts, images, files }, its facts in today's shape (an older one brought
- * up to it by core/artifact-schema.js); null when there is none.
+ * up to it by core/artifact-schema.js), each of its pictures read from its file when first asked
+ * for; null when there is none.
  */
 export function readArtifact(dir) {
   const f = path.join(dir, 'facts.json');
   if (!existsSync(f)) return null;
   const { files = {}, ...facts } = currentFacts(JSON.parse(readFileSync(f, 'utf8')));
+  // each picture decoded when first read (an audit reads a few of a part's many), once a file
   const images = {};
   const read = new Map();
-  for (const [name, file] of Object.entries(files)) {
+  const decoded = (file) => {
     if (!read.has(file)) read.set(file, decodePng(readFileSync(path.join(dir, file))));
-    images[name] = read.get(file);
+    return read.get(file);
+  };
+  for (const [name, file] of Object.entries(files)) {
+    Object.defineProperty(images, name, { get: () => decoded(file), enumerable: true });
   }
   return { facts, images, files };
 }
