@@ -6,15 +6,16 @@
 // the judged fit's light, form, w_o and normal colour fixed (measure/surface-terms.js) says how far
 // the model evaluated per pixel explains the coarse picture: per fragment, as well as it explains
 // the judged picture; per vertex, not.
-import { surfaceOf, insideShare } from './surface.js';
+import { surfaceOf } from './surface.js';
+import { surfaceSeen } from './lighting.js';
 import { modelResidual } from '../measure/surface-terms.js';
 import { analyse } from '../measure.js';
-import { pct } from '../format.js';
 
 /**
  * The coarse level's reading ({ rms, judgedRms, level }) where the coarse picture `coarse` (ladder
  * level `at`) has its surface and the judged fit (`exact`: computed/lighting.js's, made on the
- * picture `judged`) explains the judged picture (its best: the slide's model, or a misreading named elsewhere); { why } where the surface cannot say; null where it was not read.
+ * picture `judged`) explains the judged picture (its best: the slide's model, or a misreading
+ * named elsewhere); { why } where the surface cannot say; null where it was not read.
  */
 export function coarseReading({ facts, images, thresholds }, { exact, judged: judgedImg }, at, coarse) {
   const cs = facts.coarseSurface;
@@ -23,11 +24,8 @@ export function coarseReading({ facts, images, thresholds }, { exact, judged: ju
   if (!exact || exact.why) return { why: exact ? exact.why : 'the judged picture\'s surface was not read' };
   const { best } = exact;
   if (!best || best.rms > thresholds.surfaceResidual) return { why: `the slide's model leaves a residual of ${best ? best.rms.toFixed(3) : '?'} on the judged picture's surface` };
-  const s = surfaceOf(cs.surface, images, thresholds);
-  if (s.why) return { why: s.why };
-  if (s.width !== coarse.width || s.height !== coarse.height) return { why: 'the coarse surface is not the coarse picture\'s size' };
-  const inside = insideShare(s, coarse, analyse(coarse, thresholds));
-  if (inside < thresholds.surfaceMatch) return { why: `the coarse surface is not its picture: ${pct(inside)} of it lies inside the picture's outline` };
+  const s = surfaceSeen(images, { img: coarse, an: analyse(coarse, thresholds) }, thresholds, cs.surface);
+  if (s.why) return { why: `at the coarse level, ${s.why}` };
   const judged = modelResidual(surfaceOf(facts.surface, images, thresholds), judgedImg, best, thresholds);
   const rms = modelResidual(s, coarse, best, thresholds);
   if (rms === null || judged === null) return { why: 'too few of the coarse surface\'s pixels to read the model on' };

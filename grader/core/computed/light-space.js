@@ -1,13 +1,12 @@
 // P3–P5: does the light stay in the world while the camera orbits, read on the page's own surface.
 // Two views have their surface: the first lit view along the orbit (gather/orbit.js, read before
 // the next frame) and the judged view, once the orbit stood still; on each the slide's model is
-// fitted (measure/surface-fit.js)
-// with its light w_i in the model's space, the space of the page's normals. The camera of each view
-// comes from the page's own P·V·M (computed/surface.js). A light that stays in the world keeps its
-// w_i there; a light given in the eye's space turns with the camera, to where the first view's
-// light, held in the eye's space, is seen from the second camera. Which of the two the second
-// view's fitted light is nearer to says where the light is; how far apart they are says whether
-// the camera turned enough to tell.
+// fitted (measure/surface-fit.js) with its light w_i in the model's space, the space of the page's
+// normals. The camera of each view comes from the page's own P·V·M (computed/surface.js). A light
+// that stays in the world keeps its w_i there; a light given in the eye's space turns with the
+// camera, to where the first view's light, held in the eye's space, is seen from the second camera.
+// Which of the two the second view's fitted light is nearer to says where the light is; how far
+// apart they are says whether the camera turned enough to tell.
 import { exactLighting } from './lighting.js';
 import { degreesBetween } from './surface.js';
 import { analyse } from '../measure.js';

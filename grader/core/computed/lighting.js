@@ -11,18 +11,29 @@ const fitOnce = memo(surfaceFit);
 import { pct } from '../format.js';
 
 /**
+ * The page's surface (`surface`, as the artifact keeps it) as the picture `view` ({ img, an }) shows
+ * it: computed/surface.js's samples, or { why } where it is not that picture's view (another size,
+ * or too few of its pixels inside the picture's outline).
+ */
+export function surfaceSeen(images, view, thresholds, surface) {
+  const s = surfaceOf(surface, images, thresholds);
+  if (s.why) return { why: s.why };
+  const { img, an } = view;
+  if (s.width !== img.width || s.height !== img.height) return { why: `the page's surface (${s.width}×${s.height}) is not the picture's size (${img.width}×${img.height})` };
+  // the surface is the picture's: its pixels lie inside the sphere's outline (the view did not move between them)
+  const inside = insideShare(s, img, an);
+  if (inside < thresholds.surfaceMatch) return { why: `the page's surface, drawn again by the grader, is not its picture: ${pct(inside)} of it lies inside the picture's outline (the view moved between them, or the page draws with something the grader's copy leaves out, such as instancing or a second program's draw)` };
+  return s;
+}
+
+/**
  * The fits on the judged picture (`judged`: { img, an }) and its surface (facts.surface, or the
  * `surface` read with another picture: the highlight's place view's), or null / { why }.
  */
 export function exactLighting(facts, images, judged, thresholds, surface = facts.surface) {
   if (!surface) return null;
-  const s = surfaceOf(surface, images, thresholds);
-  if (s.why) return { why: s.why };
-  const { img, an } = judged;
-  if (s.width !== img.width || s.height !== img.height) return { why: `the page's surface (${s.width}×${s.height}) is not the picture's size (${img.width}×${img.height})` };
-  // the surface is the picture's: its pixels lie inside the sphere's outline (the view did not move between them)
-  const inside = insideShare(s, img, an);
-  if (inside < thresholds.surfaceMatch) return { why: `the page's surface, drawn again by the grader, is not its picture: ${pct(inside)} of it lies inside the picture's outline (the view moved between them, or the page draws with something the grader's copy leaves out, such as instancing or a second program's draw)` };
-  const fit = fitOnce(s, img, thresholds);
+  const s = surfaceSeen(images, judged, thresholds, surface);
+  if (s.why) return s;
+  const fit = fitOnce(s, judged.img, thresholds);
   return fit.why ? fit : { ...fit, camera: s.camera, normal: s.normal };
 }

@@ -9,14 +9,13 @@ import { clippedShare } from '../measure/samples.js';
 import { trialTerms, highlightMoved } from '../measure/terms.js';
 import { termsOnSurface, surfaceTrial, showsSpecular } from '../measure/surface-terms.js';
 import { fullFit } from './views.js';
-import { surfaceOf, insideShare } from './surface.js';
+import { surfaceSeen } from './lighting.js';
 import { memo } from './memo.js';
 
 /** The surface's samples where `img` (its analysis `an`) is the surface's view: all but a few inside its outline. */
 function surfaceSeenIn(facts, images, thresholds, img, an) {
-  const s = surfaceOf(facts.surface, images, thresholds);
-  if (s.why || s.width !== img.width || s.height !== img.height) return null;
-  return insideShare(s, img, an) >= thresholds.surfaceMatch ? s : null;
+  const s = surfaceSeen(images, { img, an }, thresholds, facts.surface);
+  return s.why ? null : s;
 }
 
 /**

@@ -113,6 +113,9 @@ export const SPECULAR = {
   },
 };
 
+/** max(cos, 0) of the specular term `spec` (SPECULAR's) at each of the samples `use`, for the light `wi` and w_o as `wo` (VIEW's) takes it from `camera`. */
+export const specularCosines = (use, camera, wi, spec, wo) => use.map((q) => Math.max(spec(q.n, wi, wo(q, camera)), 0));
+
 /** p in the eye's space (its coordinates along the camera's right, up and back, from its centre), or null. */
 function inEye(p, camera) {
   if (!camera.eye) return null;
@@ -205,7 +208,7 @@ export function surfaceFit(surface, img, thresholds) {
     for (const [form, spec] of Object.entries(SPECULAR)) {
       for (const [view, wo] of Object.entries(VIEW)) {
         if (!wo(use[0], surface.camera)) continue;
-        const cosines = use.map((q) => Math.max(spec(q.n, b.wi, wo(q, surface.camera)), 0));
+        const cosines = specularCosines(use, surface.camera, b.wi, spec, wo);
         for (const sh of SHININESS) {
           for (let i = 0; i < cols.m; i++) S[i] = cosines[i] ** sh;
           const f = fitChannels(cols, D, S, how);

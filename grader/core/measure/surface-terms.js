@@ -7,7 +7,7 @@
 // and s the shininess that fits best. A slider trial compares two such readings of the same pixels:
 // which of a, d, k and s it moved. Clipped channels stay out; black ones stay in (a term set to 0
 // leaves its pixels black, which is what the model says there).
-import { coloured, columns, fitChannels, diffuseTerm, SPECULAR, VIEW, SHININESS } from './surface-fit.js';
+import { coloured, columns, fitChannels, diffuseTerm, specularCosines, SPECULAR, VIEW, SHININESS } from './surface-fit.js';
 
 /** The least pixels a reading is made on. */
 const LEAST_PIXELS = 30;
@@ -28,7 +28,7 @@ export function termsOnSurface(surface, img, model, thresholds) {
   const spec = SPECULAR[model.form || 'phong'], wo = VIEW[model.view || 'the slide'];
   if (!wo(use[0], surface.camera)) return null;
   const D = diffuseTerm(cols, model.wi);
-  const cosines = use.map((q) => Math.max(spec(q.n, model.wi, wo(q, surface.camera)), 0));
+  const cosines = specularCosines(use, surface.camera, model.wi, spec, wo);
   const S = new Float64Array(cols.m);
   let best = null;
   for (const s of SHININESS) {
@@ -100,7 +100,7 @@ export function modelResidual(surface, img, model, thresholds) {
   const D = diffuseTerm(cols, model.wi);
   const spec = model.form && SPECULAR[model.form], wo = VIEW[model.view || 'the slide'];
   if (spec && !wo(use[0], surface.camera)) return null;
-  const S = spec ? use.map((q) => Math.max(spec(q.n, model.wi, wo(q, surface.camera)), 0) ** model.s) : null;
+  const S = spec ? specularCosines(use, surface.camera, model.wi, spec, wo).map((c) => c ** model.s) : null;
   let sse = 0, used = 0;
   for (let i = 0; i < cols.m; i++) {
     for (let ch = 0; ch < 3; ch++) {
